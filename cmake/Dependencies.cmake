@@ -1,0 +1,23 @@
+# All dependencies are Debian packages (scripts/install-deps.sh installs them).
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(fmt REQUIRED)
+find_package(tomlplusplus REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json REQUIRED)
+
+# libsystemc-dev ships only a pkg-config file (CONVENTIONS.md): wrap it in an imported target.
+pkg_check_modules(SYSTEMC REQUIRED IMPORTED_TARGET systemc)
+if(NOT TARGET SystemC::systemc)
+  add_library(SystemC::systemc ALIAS PkgConfig::SYSTEMC)
+endif()
+
+# pcg-cpp is header-only without a CMake package.
+find_path(PCG_INCLUDE_DIR pcg_random.hpp REQUIRED)
+
+if(RANGESIM_WITH_RTL)
+  find_package(verilator REQUIRED HINTS $ENV{VERILATOR_ROOT} /usr/share/verilator)
+endif()
+if(RANGESIM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()

@@ -1,0 +1,97 @@
+#pragma once
+// Configuration of the ls-conventional sensor (thesis [31]), one struct per block. The same
+// structs feed the golden model (arguments), the SystemC kernels (constructors) and the RTL
+// (Verilog parameters), so the three views cannot drift apart.
+#include "core/params.h"
+
+namespace rangesim {
+
+// Photodiode pixel with source follower (thesis eq. 3.1-3.4).
+struct PixelConfig {
+  double integration_time_s = 50e-6;     // photo-integration time t
+  double pd_capacitance_F = 40e-15;      // well capacity C_pd
+  double source_follower_gain = 1.0;     // A_sf
+  double saturation_voltage_V = 1.741;   // swing at which the pixel saturates
+  double dark_current_A = 1e-15;         // dark current (adds to the photocurrent, with its shot noise)
+  double temperature_K = 300.0;          // for the kTC reset noise
+  double read_noise_V = 0.0;             // per-frame input-referred SF/comparator noise, rms
+  int columns = 375;                     // pixels per row
+  int rows = 365;                        // rows searched in parallel
+  double pitch_m = 11.25e-6;             // pixel pitch
+};
+
+// Gaussian sheet-beam profile across a row (eq. 3.6).
+struct SpotConfig {
+  double fwhm_px = 3.0;                  // full width at half maximum
+  double sigma_per_fwhm = 0.42466090014400953;  // sigma / FWHM
+};
+
+enum class ThresholdMode { Tracking, Fixed };
+
+// In-pixel comparator, or an N-bit quantiser per sampling (eq. 3.5, 3.7, 3.11).
+struct ComparatorConfig {
+  ThresholdMode threshold_mode = ThresholdMode::Tracking;  // V_cmp referred to background or absolute
+  double threshold_above_background_V = 0.01;  // tracking: V_cmp = V_bg + this (Delta V_ADC)
+  double fixed_threshold_V = 0.011;            // fixed: V_cmp
+  int adc_bits = 1;                            // 1 = comparator; N: codes 0..2^N-1 of LSB Delta V_ADC
+  double false_activation_max = 0.01;          // tolerated P(background alone activates a row pixel)
+};
+
+// Samplings during one integration, at t_k = k T / N (k = 1..N).
+struct MultiSamplingConfig {
+  int samplings = 4;
+};
+
+// Row-parallel chained search with bit-streamed column addresses (also the RTL parameters).
+struct AddressSearchConfig {
+  int columns = 375;             // pixels in the searched row
+  int address_bits = 9;          // width of a streamed column address
+  int addresses_per_sampling = 2;  // left and right edge of the activated run
+};
+
+// Clock schedule of one frame access (see golden/frame_timing.h for the formula).
+struct FrameTimingConfig {
+  double clock_Hz = 39.45e6;
+  int reset_cycles = 4;
+  int latch_cycles = 1;
+  int search_cycles = 2;
+  int address_bits = 9;
+  int addresses_per_sampling = 2;
+  int output_cycles = 12;
+  int beam_positions = 375;
+};
+
+// Triangulation geometry (thesis eq. 1.1-1.8).
+struct OpticsConfig {
+  double focal_length_m = 10e-3;
+  double baseline_m = 73.6e-3;
+  double distance_m = 1.1;
+};
+
+// Log-spaced evaluation grid over signal x background.
+struct EvaluationGridConfig {
+  double signal_min_V = 1e-3;
+  double signal_max_V = 1.5;
+  int signal_points = 61;
+  double background_min_V = 1e-3;
+  double background_max_V = 1.0;
+  int background_points = 61;
+  int subpixel_points = 16;
+};
+
+struct LsConventionalConfig {
+  PixelConfig pixel;
+  SpotConfig spot;
+  ComparatorConfig comparator;
+  MultiSamplingConfig multisampling;
+  AddressSearchConfig search;
+  FrameTimingConfig timing;
+  OpticsConfig optics;
+  EvaluationGridConfig grid;
+};
+
+// Builds the config from a validated preset; throws UserError on cross-key inconsistencies
+// (e.g. address_bits too narrow for columns), naming the file and keys.
+LsConventionalConfig ls_conventional_from_params(const ParamSet& params);
+
+}  // namespace rangesim

@@ -1,0 +1,37 @@
+#pragma once
+// Finding, loading and validating sensor presets (presets/*.toml).
+#include <string>
+#include <vector>
+
+#include "core/params.h"
+
+namespace rangesim {
+
+struct SensorInfo {
+  std::string id;           // preset id, e.g. "ls-conventional"
+  std::string title;        // one line
+  std::string thesis_ref;   // reference number in the thesis, e.g. "[31]"
+  bool golden_modelled;     // true when `rangesim evaluate` has a model for it
+};
+
+// The four sensor architectures of the thesis, in thesis order.
+const std::vector<SensorInfo>& sensors();
+const SensorInfo* find_sensor(const std::string& id);
+
+// Schema for a sensor id; throws UserError for an unknown id (naming `where`).
+const ParamSchema& schema_for(const std::string& sensor_id, const std::string& where);
+
+// Directories searched for `<id>.toml`: $RANGESIM_PRESET_DIR, the installed share dir, and the
+// source tree's presets/ (so a fresh build works without installing).
+std::vector<std::string> preset_search_path();
+
+// A preset id or a path to a TOML file -> path of an existing file; UserError if none.
+std::string resolve_preset(const std::string& id_or_path);
+
+// Loads and validates a preset file against its sensor's schema.
+ParamSet load_preset_file(const std::string& path);
+
+// resolve_preset + load_preset_file.
+ParamSet load_preset(const std::string& id_or_path);
+
+}  // namespace rangesim
