@@ -91,7 +91,8 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
   const std::string where = where_of(file, entry);
   const toml::table* t = entry.as_table();
   if (!t || !t->contains("value") || !t->contains("source"))
-    throw UserError(fmt::format("{}: {} must be an inline table {{ value = ..., source = \"...\" }}", where, key));
+    throw UserError(fmt::format("{}: {} must be an inline table {{ value = ..., source = \"...\" }} with value {}",
+                                where, key, describe_range(spec)));
   for (const auto& [k, _] : *t)
     if (k != "value" && k != "source")
       throw UserError(fmt::format("{}: {} has unknown field '{}'; allowed: value, source", where, key, k.str()));
@@ -133,6 +134,7 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
 }  // namespace
 
 ParamSet load_preset_file(const std::string& path) {
+  if (!fs::is_regular_file(path)) throw UserError(fmt::format("{}: cannot read preset file (not a regular file)", path));
   std::ifstream in(path);
   if (!in) throw UserError(fmt::format("{}: cannot read preset file", path));
   toml::table root;
@@ -156,9 +158,13 @@ ParamSet load_preset_file(const std::string& path) {
       const std::string key = section + "." + std::string(name_key.str());
       if (key == "sensor.id") continue;
       const ParamSpec* spec = schema.find(key);
-      if (!spec)
-        throw UserError(fmt::format("{}: unknown key '{}' for sensor {} (see `rangesim show {}` for the keys)",
-                                    where_of(path, entry), key, id->get(), id->get()));
+      if (!spec) {
+        std::string allowed;
+        for (const auto& p : schema.params)
+          if (p.key.rfind(section + ".", 0) == 0) allowed += (allowed.empty() ? "" : ", ") + p.key;
+        throw UserError(fmt::format("{}: unknown key '{}' for sensor {}; allowed in [{}]: {}", where_of(path, entry),
+                                    key, id->get(), section, allowed.empty() ? "(no such section)" : allowed));
+      }
       set.mutable_values()[key] = read_value(path, key, entry, *spec);
     }
   }

@@ -1,0 +1,59 @@
+#include "app/cli_common.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fmt/format.h>
+
+#include "core/preset.h"
+#include "core/user_error.h"
+
+namespace rangesim::app {
+
+namespace {
+
+double parse_number(const std::string& s, const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || *end != '\0')
+    throw UserError(fmt::format("{} {}: '{}' is not a number; expected LO:HI:N, e.g. 0.001:1.5:61", flag, text, s));
+  return v;
+}
+
+}  // namespace
+
+GridAxis parse_grid_axis(const std::string& text, const std::string& flag) {
+  const auto c1 = text.find(':');
+  const auto c2 = c1 == std::string::npos ? std::string::npos : text.find(':', c1 + 1);
+  if (c2 == std::string::npos || text.find(':', c2 + 1) != std::string::npos)
+    throw UserError(fmt::format("{} {}: expected LO:HI:N (volts, log-spaced), e.g. 0.001:1.5:61", flag, text));
+  GridAxis g;
+  g.lo = parse_number(text.substr(0, c1), flag, text);
+  g.hi = parse_number(text.substr(c1 + 1, c2 - c1 - 1), flag, text);
+  const double n = parse_number(text.substr(c2 + 1), flag, text);
+  if (!std::isfinite(g.lo) || !std::isfinite(g.hi))
+    throw UserError(fmt::format("{} {}: LO and HI must be finite numbers; allowed: 0 < LO <= HI", flag, text));
+  if (!(g.lo > 0))
+    throw UserError(fmt::format("{} {}: LO = {:g} must be > 0 (log-spaced grid); allowed: 0 < LO <= HI", flag, text, g.lo));
+  if (g.lo > g.hi)
+    throw UserError(fmt::format("{} {}: LO = {:g} > HI = {:g}; allowed: 0 < LO <= HI", flag, text, g.lo, g.hi));
+  if (!(n >= 1 && n <= 10000 && n == std::floor(n)))
+    throw UserError(fmt::format("{} {}: N = {:g} must be an integer in [1, 10000]", flag, text, n));
+  g.n = static_cast<int>(n);
+  return g;
+}
+
+ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command) {
+  ParamSet params = load_preset(id_or_path);
+  const SensorInfo* info = find_sensor(params.sensor_id());
+  if (!info || !info->golden_modelled) {
+    std::string modelled;
+    for (const auto& s : sensors())
+      if (s.golden_modelled) modelled += (modelled.empty() ? "" : ", ") + s.id;
+    throw NotModelled{fmt::format("rangesim {}: sensor '{}' is not modelled yet (its preset loads and validates; "
+                                  "see `rangesim show {}`); modelled: {}",
+                                  command, params.sensor_id(), params.sensor_id(), modelled)};
+  }
+  return params;
+}
+
+}  // namespace rangesim::app

@@ -1,0 +1,91 @@
+// rangesim list / rangesim show: the presets and their resolved parameters.
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "core/preset.h"
+#include "core/user_error.h"
+
+namespace rangesim::app {
+
+int run_list(const ListOptions& opt) {
+  nlohmann::json list = nlohmann::json::array();
+  if (!opt.json) fmt::print("{:<17} {:<7} {:<10} {}\n", "preset", "thesis", "evaluate", "architecture");
+  for (const auto& s : sensors()) {
+    std::string file;
+    try {
+      file = resolve_preset(s.id);
+    } catch (const UserError&) {
+      file = "(preset file not found)";
+    }
+    if (opt.json)
+      list.push_back({{"id", s.id}, {"title", s.title}, {"thesis_ref", s.thesis_ref},
+                      {"golden_modelled", s.golden_modelled}, {"file", file}});
+    else
+      fmt::print("{:<17} {:<7} {:<10} {}\n", s.id, s.thesis_ref, s.golden_modelled ? "yes" : "not yet", s.title);
+  }
+  if (opt.json) fmt::print("{}\n", list.dump(2));
+  return 0;
+}
+
+namespace {
+
+std::string value_text(const ParamValue& v) {
+  switch (v.kind) {
+    case ParamKind::Text: return v.text;
+    case ParamKind::Boolean: return v.number != 0 ? "true" : "false";
+    case ParamKind::Integer: return fmt::format("{}", static_cast<long long>(v.number));
+    case ParamKind::Real: return fmt::format("{:g}", v.number);
+  }
+  return "";
+}
+
+nlohmann::json value_json(const ParamValue& v) {
+  switch (v.kind) {
+    case ParamKind::Text: return v.text;
+    case ParamKind::Boolean: return v.number != 0;
+    case ParamKind::Integer: return static_cast<long long>(v.number);
+    case ParamKind::Real: return v.number;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+int run_show(const ShowOptions& opt) {
+  const ParamSet params = load_preset(opt.preset);
+  const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
+  const SensorInfo* info = find_sensor(params.sensor_id());
+  if (opt.json) {
+    nlohmann::json j;
+    j["sensor"] = params.sensor_id();
+    j["file"] = params.origin();
+    j["golden_modelled"] = info && info->golden_modelled;
+    nlohmann::json ps = nlohmann::json::object();
+    for (const auto& spec : schema.params) {
+      const ParamValue& v = params.at(spec.key);
+      ps[spec.key] = {{"value", value_json(v)}, {"unit", spec.unit}, {"source", v.source},
+                      {"description", spec.description}, {"allowed", describe_range(spec)}};
+    }
+    j["parameters"] = ps;
+    fmt::print("{}\n", j.dump(2));
+    return 0;
+  }
+  fmt::print("{} ({}) — {}\nfile: {}\n", params.sensor_id(), info ? info->thesis_ref : "?",
+             info ? info->title : "", params.origin());
+  std::string section;
+  for (const auto& spec : schema.params) {
+    const std::string sec = spec.key.substr(0, spec.key.find('.'));
+    if (sec != section) {
+      section = sec;
+      fmt::print("\n[{}]\n", section);
+    }
+    const ParamValue& v = params.at(spec.key);
+    fmt::print("  {:<32} {:>14} {:<3}  {}\n", spec.key.substr(spec.key.find('.') + 1), value_text(v), spec.unit,
+               spec.description);
+    fmt::print("  {:<32} {:>14} {:<3}  source: {}\n", "", "", "", v.source);
+  }
+  return 0;
+}
+
+}  // namespace rangesim::app

@@ -1,0 +1,39 @@
+#pragma once
+// The rangesim subcommands. Each returns the process exit code (see cli_common.h) and throws
+// UserError for bad input, NotModelled for a sensor without a model for the command.
+#include <optional>
+#include <string>
+
+namespace rangesim::app {
+
+struct ListOptions {
+  bool json = false;
+};
+int run_list(const ListOptions& opt);
+
+struct ShowOptions {
+  std::string preset;  // id or path
+  bool json = false;
+};
+int run_show(const ShowOptions& opt);
+
+struct EvaluateOptions {
+  std::string sensor;                 // preset id or path
+  std::optional<std::string> signal;  // "LO:HI:N" volts
+  std::optional<std::string> background;
+  std::optional<int> samplings;
+  std::optional<int> adc_bits;
+  std::string out;                    // output directory ("" -> rangesim-out/<sensor>)
+  bool json = false;
+  bool no_plots = false;
+};
+int run_evaluate(const EvaluateOptions& opt);
+
+struct FrameRateOptions {
+  std::string sensor;
+  std::optional<int> samplings;
+  bool json = false;
+};
+int run_frame_rate(const FrameRateOptions& opt);
+
+}  // namespace rangesim::app
