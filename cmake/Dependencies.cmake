@@ -8,8 +8,10 @@ find_package(nlohmann_json REQUIRED)
 
 # libsystemc-dev ships only a pkg-config file (CONVENTIONS.md): wrap it in an imported target.
 pkg_check_modules(SYSTEMC REQUIRED IMPORTED_TARGET systemc)
+# An INTERFACE IMPORTED target (not an ALIAS) so exported targets refer to SystemC::systemc.
 if(NOT TARGET SystemC::systemc)
-  add_library(SystemC::systemc ALIAS PkgConfig::SYSTEMC)
+  add_library(SystemC::systemc INTERFACE IMPORTED)
+  target_link_libraries(SystemC::systemc INTERFACE PkgConfig::SYSTEMC)
 endif()
 
 # pcg-cpp is header-only without a CMake package.
