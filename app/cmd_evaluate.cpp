@@ -116,20 +116,20 @@ void print_summary(const golden::Evaluation& ev, const LsConventionalConfig& cfg
   fmt::print("{} evaluation: {} sampling{}, {}-bit, grid {} x {} (signal {:g}-{:g} V, background {:g}-{:g} V)\n\n",
              sensor, s.samplings, s.samplings == 1 ? "" : "s", s.adc_bits, ev.signal_V.size(), ev.background_V.size(),
              ev.signal_V.front(), ev.signal_V.back(), ev.background_V.front(), ev.background_V.back());
-  fmt::print("  {:<30} {} / {}\n", "detectable points", s.points_detectable, s.points_total);
+  fmt::print("  {:<34} {} / {}\n", "detectable points", s.points_detectable, s.points_total);
   if (s.points_detectable == 0) {
     fmt::print("  nothing is detectable on this grid: see detectable_area.csv for the reason at each point\n");
   } else {
-    fmt::print("  {:<30} {:.2f} dB  ({:g} .. {:g} V at background {:g} V{})\n", "signal range", s.signal.range_dB,
+    fmt::print("  {:<34} {:.2f} dB  ({:.4g} .. {:.4g} V at background {:.4g} V{})\n", "signal range", s.signal.range_dB,
                s.signal.lo_V, s.signal.hi_V, ev.background_V.front(), s.signal.hi_limited_by_grid ? "; upper edge = grid end" : "");
-    fmt::print("  {:<30} {:.2f} dB  ({:g} .. {:g} V at signal {:g} V{})\n", "background range", s.background.range_dB,
+    fmt::print("  {:<34} {:.2f} dB  ({:.4g} .. {:.4g} V at signal {:.4g} V{})\n", "background range", s.background.range_dB,
                s.background.lo_V, s.background.hi_V, ev.signal_V.back(), s.background.hi_limited_by_grid ? "; upper edge = grid end" : "");
-    fmt::print("  {:<30} {:.2f} .. {:.2f} dB\n", "SBR' eq. 3.11 (V_sig+V_bg)/V_bg", s.sbr_min_dB, s.sbr_max_dB);
-    fmt::print("  {:<30} {:.2f} .. {:.2f} dB\n", "SBR' eq. 3.23 V_sig/V_bg", s.sbr_ratio_min_dB, s.sbr_ratio_max_dB);
-    fmt::print("  {:<30} {:.4f} .. {:.4f} px  ({:.3f} .. {:.3f} mm at {:g} m)\n", "range accuracy (rms)", s.accuracy_min_px,
+    fmt::print("  {:<34} {:.2f} .. {:.2f} dB\n", "SBR' eq. 3.11 (V_sig+V_bg)/V_bg", s.sbr_min_dB, s.sbr_max_dB);
+    fmt::print("  {:<34} {:.2f} .. {:.2f} dB\n", "SBR' eq. 3.23 V_sig/V_bg", s.sbr_ratio_min_dB, s.sbr_ratio_max_dB);
+    fmt::print("  {:<34} {:.4f} .. {:.4f} px  ({:.3f} .. {:.3f} mm at {:g} m)\n", "range accuracy (rms)", s.accuracy_min_px,
                s.accuracy_max_px, s.accuracy_min_m * 1e3, s.accuracy_max_m * 1e3, cfg.optics.distance_m);
   }
-  fmt::print("  {:<30} {:.2f} kHz  ({:.1f} range maps/s)\n", "frame access rate", t.frame_access_rate_Hz / 1e3,
+  fmt::print("  {:<34} {:.2f} kHz  ({:.1f} range maps/s)\n", "frame access rate", t.frame_access_rate_Hz / 1e3,
              t.range_maps_per_s);
 }
 
