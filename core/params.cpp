@@ -35,6 +35,16 @@ void ParamSet::set_integer(const std::string& key, long long value, const std::s
   v.source = fmt::format("command line {}", flag);
 }
 
+void ParamSet::set_real(const std::string& key, double value, const std::string& flag, const ParamSchema& schema) {
+  const ParamSpec* spec = schema.find(key);
+  if (!spec) throw UserError(fmt::format("{}: no parameter '{}' for sensor {}", flag, key, sensor_id_));
+  check_range(*spec, value, flag);
+  ParamValue& v = values_[key];
+  v.kind = ParamKind::Real;
+  v.number = value;
+  v.source = fmt::format("command line {}", flag);
+}
+
 std::string describe_range(const ParamSpec& spec) {
   switch (spec.kind) {
     case ParamKind::Text: {

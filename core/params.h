@@ -53,6 +53,7 @@ class ParamSet {
 
   // Overrides one value (command-line flag); `flag` names the option for error messages.
   void set_integer(const std::string& key, long long value, const std::string& flag, const ParamSchema& schema);
+  void set_real(const std::string& key, double value, const std::string& flag, const ParamSchema& schema);
 
   const std::map<std::string, ParamValue>& values() const { return values_; }
   std::map<std::string, ParamValue>& mutable_values() { return values_; }

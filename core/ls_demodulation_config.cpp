@@ -1,0 +1,1 @@
+// Placeholder: configuration structs of this sensor arrive with its golden model.

@@ -1,0 +1,11 @@
+// Placeholder until the golden model of this sensor lands.
+#include <stdexcept>
+
+#include "golden/evaluate_sensor.h"
+
+namespace rangesim::golden {
+
+EvalResult evaluate_tof_lockin(const ParamSet&, ProgressFn) { throw std::logic_error("not modelled yet"); }
+std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet&) { return {}; }
+
+}  // namespace rangesim::golden
