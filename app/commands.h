@@ -23,6 +23,7 @@ struct EvaluateOptions {
   std::optional<std::string> background;
   std::optional<int> samplings;
   std::optional<int> adc_bits;
+  std::optional<int> frames;          // frames averaged
   std::string out;                    // output directory ("" -> rangesim-out/<sensor>)
   bool json = false;
   bool no_plots = false;
@@ -35,5 +36,12 @@ struct FrameRateOptions {
   bool json = false;
 };
 int run_frame_rate(const FrameRateOptions& opt);
+
+struct TableOptions {
+  bool json = false;
+  bool published = false;  // also list the chips' published figures on the terminal
+  std::string out;         // "" -> nothing written
+};
+int run_table(const TableOptions& opt);
 
 }  // namespace rangesim::app

@@ -33,13 +33,16 @@ int main(int argc, char** argv) {
   auto* ev = app.add_subcommand(
       "evaluate",
       "Background-light and range-accuracy evaluation over a signal x background grid (thesis ch. 3):\n"
-      "detectable area with reasons, accuracy map (px and mm), SBR', dynamic ranges. Writes CSV maps,\n"
-      "summary.json and heat maps (PNG, SVG) into --out.");
+      "detectable area with reasons, accuracy map, SBR' both ways, dynamic ranges, 1-D sweeps. Writes CSV\n"
+      "maps, summary.json, heat maps and line plots (PNG, SVG) into --out.");
   ev->add_option("sensor", ev_opt.sensor, "Preset id or path to a .toml file")->required();
-  ev->add_option("--signal", ev_opt.signal, "Signal grid LO:HI:N in volts, log-spaced (default: preset)");
-  ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N in volts, log-spaced (default: preset)");
+  ev->add_option("--signal", ev_opt.signal,
+                 "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
+                 "tof-lockin), Hz count rate (tof-spad) (default: preset)");
+  ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
   ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)");
-  ev->add_option("--adc-bits", ev_opt.adc_bits, "Bits per sampling, 1 = comparator (default: preset)");
+  ev->add_option("--adc-bits", ev_opt.adc_bits, "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)");
+  ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)");
   ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)");
   ev->add_flag("--json", ev_opt.json, "Print summary.json to stdout instead of the table");
   ev->add_flag("--no-plots", ev_opt.no_plots, "Skip the PNG/SVG heat maps");
@@ -49,6 +52,15 @@ int main(int argc, char** argv) {
   fr->add_option("sensor", fr_opt.sensor, "Preset id or path to a .toml file")->required();
   fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)");
   fr->add_flag("--json", fr_opt.json, "Print JSON");
+
+  TableOptions tb_opt;
+  auto* tb = app.add_subcommand(
+      "table",
+      "Thesis Table 5.1 for the four seed sensors beside rangesim's values (thesis value, ours, difference,\n"
+      "and why they differ), plus the chips' published figures with their status");
+  tb->add_flag("--json", tb_opt.json, "Print JSON (table and published figures)");
+  tb->add_flag("--published", tb_opt.published, "Also list the published figures on the terminal");
+  tb->add_option("--out", tb_opt.out, "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
 
   try {
     app.parse(argc, argv);
@@ -68,6 +80,7 @@ int main(int argc, char** argv) {
     if (*show) return run_show(show_opt);
     if (*ev) return run_evaluate(ev_opt);
     if (*fr) return run_frame_rate(fr_opt);
+    if (*tb) return run_table(tb_opt);
   } catch (const rangesim::UserError& e) {
     fmt::print(stderr, "rangesim: error: {}\n", e.what());
     return kExitBadInput;

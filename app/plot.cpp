@@ -1,9 +1,9 @@
 #include "app/plot.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fmt/format.h>
-#include <cstdio>
 #include <fstream>
 #include <iterator>
 
@@ -11,12 +11,27 @@ namespace rangesim::app {
 
 namespace {
 
+// Distinct colours for the detectable-area legend: detectable first.
+const char* kReasonColours[] = {"#2e8b57", "#d0d0d0", "#c0392b", "#e69f00", "#5b7bd5", "#8e44ad", "#7f8c8d"};
+
+int metric_index(const golden::EvalResult& ev, const std::string& name) {
+  for (size_t i = 0; i < ev.metric_names.size(); ++i)
+    if (ev.metric_names[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+// Value drawn in the accuracy map: pixel pitch where the sensor reports it, else mm.
+double accuracy_value(const golden::EvalPoint& p, int px_index) {
+  if (p.detect != "detectable") return golden::kNaN;
+  return px_index >= 0 ? p.metrics[static_cast<size_t>(px_index)] : p.accuracy_m * 1e3;
+}
+
 // Grid data for pm3d: one block per background value, blank line between blocks. Cells are
 // drawn from their lower-left corner, so an extra row/column closes the last cells.
-void write_pm3d_data(const std::string& path, const golden::Evaluation& ev) {
+void write_grid_data(const std::string& path, const golden::EvalResult& ev) {
   std::ofstream out(path);
-  const auto& s = ev.signal_V;
-  const auto& b = ev.background_V;
+  const auto& s = ev.signal.values;
+  const auto& b = ev.background.values;
   auto edge = [](const std::vector<double>& a, size_t i) {
     // Geometric cell edges around log-spaced points.
     if (a.size() == 1) return i == 0 ? a[0] / 1.12 : a[0] * 1.12;
@@ -24,69 +39,120 @@ void write_pm3d_data(const std::string& path, const golden::Evaluation& ev) {
     if (i == a.size()) return a.back() * std::sqrt(a.back() / a[a.size() - 2]);
     return std::sqrt(a[i - 1] * a[i]);
   };
+  const int px = metric_index(ev, "accuracy_px");
   for (size_t ib = 0; ib <= b.size(); ++ib) {
     for (size_t is = 0; is <= s.size(); ++is) {
-      const size_t pb = std::min(ib, b.size() - 1), ps = std::min(is, s.size() - 1);
-      const auto& p = ev.at(pb, ps);
-      const bool ok = p.detect == golden::Detect::Detectable;
-      out << fmt::format("{:.6g} {:.6g} {} {}\n", edge(s, is), edge(b, ib), static_cast<int>(p.detect),
-                         ok ? fmt::format("{:.6g}", p.accuracy_px) : "NaN");
+      const auto& p = ev.at(std::min(ib, b.size() - 1), std::min(is, s.size() - 1));
+      int reason = 0;
+      for (size_t r = 0; r < ev.reasons.size(); ++r)
+        if (ev.reasons[r].first == p.detect) reason = static_cast<int>(r);
+      const double acc = accuracy_value(p, px);
+      out << fmt::format("{:.6g} {:.6g} {} {}\n", edge(s, is), edge(b, ib), reason,
+                         std::isfinite(acc) ? fmt::format("{:.6g}", acc) : "NaN");
     }
     out << "\n";
   }
 }
 
-std::string script(const std::string& data, const std::string& png_or_svg, const std::string& out_path,
-                   const std::string& title, bool area) {
-  std::string term = png_or_svg == "png" ? "pngcairo size 900,700 font 'Sans,11'" : "svg size 900,700 font 'Sans,11'";
-  std::string s = fmt::format(
-      "reset\nset terminal {}\nset output '{}'\nset logscale xy\nset format x '10^{{%L}}'\nset format y '10^{{%L}}'\n"
-      "set xlabel 'signal V_{{sig}} [V]'\nset ylabel 'background V_{{bg}} [V]'\nset view map\n"
-      "set pm3d map corners2color c1\nset tics out\nunset key\nset autoscale xfix\nset autoscale yfix\nset rmargin at screen 0.80\n",
-      term, out_path);
-  if (area) {
-    s += fmt::format(
-        "set title '{} — range-information detectable area'\n"
-        "set palette defined (-0.5 '#2e8b57', 0.5 '#2e8b57', 0.5 '#d0d0d0', 1.5 '#d0d0d0', 1.5 '#c0392b', "
-        "2.5 '#c0392b', 2.5 '#e69f00', 3.5 '#e69f00')\nset cbrange [-0.5:3.5]\n"
-        "set cbtics ('detectable' 0, \"below\\nthreshold\" 1, 'saturated' 2, \"background\\nactivates\" 3)\n"
-        "splot '{}' using 1:2:3 with pm3d\n",
-        title, data);
-  } else {
-    s += fmt::format(
-        "set title '{} — range accuracy [pixel pitch]'\nset logscale cb\nset cblabel 'rms position error [px]'\n"
-        "set palette rgbformulae 22,13,-31\nsplot '{}' using 1:2:4 with pm3d\n",
-        title, data);
+std::string terminal(const std::string& ext, const std::string& path) {
+  return fmt::format("reset\nset terminal {} size 900,700 font 'Sans,11'\nset output '{}'\n",
+                     ext == "png" ? "pngcairo" : "svg", path);
+}
+
+std::string heatmap_header(const golden::EvalResult& ev) {
+  return fmt::format(
+      "set logscale xy\nset format x '10^{{%L}}'\nset format y '10^{{%L}}'\n"
+      "set xlabel 'signal [{}]'\nset ylabel 'background [{}]'\nset view map\n"
+      "set pm3d map corners2color c1\nset tics out\nunset key\nset autoscale xfix\nset autoscale yfix\n"
+      "set rmargin at screen 0.78\n",
+      ev.signal.unit, ev.background.unit);
+}
+
+std::string area_script(const golden::EvalResult& ev, const std::string& data) {
+  const size_t n = ev.reasons.size();
+  std::string palette, tics;
+  for (size_t i = 0; i < n; ++i) {
+    const char* c = kReasonColours[i % (sizeof(kReasonColours) / sizeof(*kReasonColours))];
+    palette += fmt::format("{}{} '{}', {} '{}'", i ? ", " : "", i - 0.5, c, i + 0.5, c);
+    std::string label = ev.reasons[i].first;
+    for (auto& ch : label)
+      if (ch == '_') ch = ' ';
+    tics += fmt::format("{}\"{}\" {}", i ? ", " : "", label, i);
   }
-  return s;
+  return heatmap_header(ev) +
+         fmt::format("set title '{} — range-information detectable area'\nset palette defined ({})\n"
+                     "set cbrange [-0.5:{}]\nset cbtics ({})\nsplot '{}' using 1:2:3 with pm3d\n",
+                     ev.sensor, palette, n - 0.5, tics, data);
+}
+
+std::string accuracy_script(const golden::EvalResult& ev, const std::string& data) {
+  const bool px = metric_index(ev, "accuracy_px") >= 0;
+  return heatmap_header(ev) +
+         fmt::format("set title '{} — range accuracy{}'\nset logscale cb\nset cblabel 'rms error [{}]'\n"
+                     "set palette rgbformulae 22,13,-31\nsplot '{}' using 1:2:4 with pm3d\n",
+                     ev.sensor, px ? " [pixel pitch]" : fmt::format(" at {:g} m", ev.distance_m), px ? "px" : "mm", data);
+}
+
+std::string sweep_script(const golden::EvalSweep& sw, const std::string& data) {
+  auto axis = [](const std::string& label, const std::string& unit) {
+    return unit.empty() ? label : fmt::format("{} [{}]", label, unit);
+  };
+  std::string s = fmt::format(
+      "set title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside bottom center horizontal\n"
+      "set datafile missing 'NaN'\n{}{}plot ",
+      sw.title, axis(sw.x_label, sw.x_unit), axis(sw.y_label, sw.y_unit), sw.log_x ? "set logscale x\n" : "",
+      sw.log_y ? "set logscale y\n" : "");
+  for (size_t i = 0; i < sw.series.size(); ++i)
+    s += fmt::format("{}'{}' index {} using 1:2 with linespoints lw 2 pt 7 ps 0.6 title \"{}\"", i ? ", " : "", data, i,
+                     sw.series[i].label);
+  return s + "\n";
+}
+
+void write_sweep_data(const std::string& path, const golden::EvalSweep& sw) {
+  std::ofstream out(path);
+  for (const auto& series : sw.series) {
+    for (size_t i = 0; i < series.x.size() && i < series.y.size(); ++i)
+      out << fmt::format("{:.8g} {}\n", series.x[i], std::isfinite(series.y[i]) ? fmt::format("{:.8g}", series.y[i]) : "NaN");
+    out << "\n\n";  // gnuplot data block separator for `index`
+  }
 }
 
 }  // namespace
 
-std::string render_heatmaps(OutputDir& out, const golden::Evaluation& ev, const std::string& title) {
+std::string render_plots(OutputDir& out, const golden::EvalResult& ev) {
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-    return "gnuplot not found: heat maps skipped (scripts/install-deps.sh installs gnuplot-nox)";
-  const std::string data = out.scratch("plot.dat");
-  write_pm3d_data(data, ev);
-  std::string all;
-  bool any_accuracy = ev.summary.points_detectable > 0;
-  for (const std::string fmt_ext : {"png", "svg"}) {
-    all += script(data, fmt_ext, out.staged("detectable_area." + fmt_ext), title, true);
-    if (any_accuracy) all += script(data, fmt_ext, out.staged("accuracy_px." + fmt_ext), title, false);
+    return "gnuplot not found: plots skipped (scripts/install-deps.sh installs gnuplot-nox)";
+  std::vector<std::string> images;
+  std::string script;
+  const std::string grid = out.scratch("grid.dat");
+  write_grid_data(grid, ev);
+  for (const std::string ext : {"png", "svg"}) {
+    images.push_back("detectable_area." + ext);
+    script += terminal(ext, out.staged(images.back())) + area_script(ev, grid);
+    if (ev.points_detectable > 0) {
+      images.push_back("accuracy." + ext);
+      script += terminal(ext, out.staged(images.back())) + accuracy_script(ev, grid);
+    }
   }
-  const std::string gp = out.scratch("plot.gp");
-  std::ofstream(gp) << all;
+  for (const auto& sw : ev.sweeps) {
+    const std::string data = out.scratch(sw.id + ".dat");
+    write_sweep_data(data, sw);
+    for (const std::string ext : {"png", "svg"}) {
+      images.push_back(sw.id + "." + ext);
+      script += terminal(ext, out.staged(images.back())) + sweep_script(sw, data);
+    }
+  }
+  const std::string gp = out.scratch("plots.gp");
+  std::ofstream(gp) << script;
   const std::string log = out.scratch("gnuplot.log");
-  const int rc = std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, log).c_str());
-  if (rc != 0) {
-    // Drop whatever gnuplot left half-written; the data files are complete without plots.
-    for (const std::string name : {"detectable_area", "accuracy_px"})
-      for (const std::string ext : {".png", ".svg"}) std::remove(out.scratch(name + ext).c_str());
+  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, log).c_str()) != 0) {
+    // Drop whatever gnuplot left half-written.
+    for (const auto& name : images) std::remove(out.scratch(name).c_str());
     std::ifstream in(log);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     for (auto& c : text)
       if (c == '\n') c = ' ';
-    return "gnuplot failed, heat maps skipped: " + text.substr(0, 300);
+    return "gnuplot failed, plots skipped: " + text.substr(0, 300);
   }
   return "";
 }

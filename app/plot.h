@@ -1,14 +1,16 @@
 #pragma once
-// Heat maps of an evaluation (thesis Fig. 3.3 and 3.4) rendered by gnuplot as PNG and SVG.
+// Plots of an evaluation rendered by gnuplot as PNG and SVG: heat maps of the detectable area
+// and of the accuracy (thesis Fig. 3.3-3.4, 4.4-4.5), and line plots of the 1-D sweeps.
 #include <string>
 
 #include "app/output_dir.h"
-#include "golden/ls_conventional_eval.h"
+#include "golden/sensor_evaluation.h"
 
 namespace rangesim::app {
 
-// Stages detectable_area.{png,svg} and accuracy_px.{png,svg} in `out`. Returns "" on success,
-// otherwise a warning (gnuplot missing or failed); the evaluation's data files are unaffected.
-std::string render_heatmaps(OutputDir& out, const golden::Evaluation& ev, const std::string& title);
+// Stages detectable_area.{png,svg}, accuracy.{png,svg} and <sweep id>.{png,svg} in `out`.
+// Returns "" on success, otherwise a warning (gnuplot missing or failed) after removing any
+// partial image; the data files are complete without plots.
+std::string render_plots(OutputDir& out, const golden::EvalResult& ev);
 
 }  // namespace rangesim::app

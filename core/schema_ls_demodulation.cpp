@@ -39,7 +39,8 @@ const ParamSchema& ls_demodulation_schema() {
           {"correlator.saturation_voltage_V", K::Real, "V", 0, 10, true, "swing of each integrator output before it saturates"},
           // Comparator / 1-bit ADC (eq. 2.12, 3.19).
           {"comparator.threshold_V", K::Real, "V", 0, 10, true, "reference V_cmp: active when V_out+ - V_out- >= V_cmp (eq. 2.12)"},
-          {"comparator.adc_bits", K::Integer, "", 1, 16, false, "bits per conversion (1 = comparator; LSB Delta V_ADC = threshold_V)"},
+          {"comparator.adc_bits", K::Integer, "", 1, 1, false, "bits per conversion (only the 1-bit comparator of Table 3.2 is modelled)"},
+          {"comparator.false_activation_max", K::Real, "", 0, 1, true, "tolerated probability that background alone activates a pixel of the row"},
           // Noise.
           {"noise.temperature_K", K::Real, "K", 0, 500, true, "temperature for kTC and thermal noise"},
           {"noise.dark_current_A", K::Real, "A", 0, 1e-9, false, "photodiode dark current (adds to I_dc, with its shot noise)"},
@@ -67,6 +68,8 @@ const ParamSchema& ls_demodulation_schema() {
           {"evaluation.background_points", K::Integer, "", 1, 10000, false, "log-spaced background points"},
           {"evaluation.subpixel_points", K::Integer, "", 1, 4096, false, "spot positions across one pixel averaged for accuracy"},
           {"evaluation.frames_averaged", K::Integer, "", 1, 100000, false, "frames N_p averaged per range value (accuracy ~ 1/sqrt(N_p))"},
+          {"evaluation.detections", K::Integer, "", 1, 100000, false, "correlation decisions per frame whose centres are averaged (thesis Fig. 3.9)"},
+          {"evaluation.sweep_background_A", K::Real, "A", 0, 1, true, "background photocurrent of the one-dimensional accuracy sweeps"},
       }};
   return schema;
 }

@@ -1,8 +1,8 @@
 // Schema of presets/tof-lockin.toml (thesis [12], section 2.3 / 4.1, Table 4.1).
 // Data flow: pulsed LED (T0, 10% duty) -> photogate PG -> TX1/TX2 to FD1/FD2 in PHASE1/PHASE2,
 // TXD drains in PHASE3 (eq. 2.17-2.19), repeated N times per frame -> source followers ->
-// column ADC (eq. 4.9) -> L = c T0 (V2 - V_off) / (2 (V1 + V2 - 2 V_off)) (eq. 2.25) -> frame
-// averaging.
+// column ADC (eq. 4.9) -> optional ambient-frame subtraction -> L = c T0 (V2 - V_off) /
+// (2 (V1 + V2 - 2 V_off)) (eq. 2.25) -> frame averaging. Config struct: core/tof_lockin_config.h.
 #include "core/schemas.h"
 
 namespace rangesim {
@@ -36,6 +36,8 @@ const ParamSchema& tof_lockin_schema() {
           {"readout.adc_full_scale_V", K::Real, "V", 0, 10, true, "ADC input range; LSB Delta V_ADC = full scale / 2^bits (eq. 4.9)"},
           {"readout.detection_threshold_V", K::Real, "V", 0, 10, true, "smallest V1 + V2 - 2 V_offset accepted as a range value (V_sig_min of eq. 4.11)"},
           {"readout.cds_enabled", K::Boolean, "", 0, 0, false, "true: FD reset level sampled and subtracted, cancelling kTC noise"},
+          {"readout.ambient_subtraction", K::Boolean, "", 0, 0, false, "true: a frame with the LED off is read and subtracted from each tap (cancels background, dark and V_offset; doubles reset/read noise and readouts)"},
+          {"readout.offset_calibration_V", K::Real, "V", 0, 10, false, "V_offset subtracted from each tap in eq. 2.25 after the (optional) ambient subtraction; a mismatch with the true offset biases L"},
           {"readout.clock_Hz", K::Real, "Hz", 0, 10e9, true, "readout clock"},
           {"readout.adc_conversion_cycles", K::Integer, "", 1, 1e9, false, "clock cycles of one column-parallel conversion (both FDs of a row)"},
           {"readout.output_cycles_per_row", K::Integer, "", 1, 1e9, false, "clock cycles to shift out one row of converted values"},

@@ -35,7 +35,9 @@ const ParamSchema& tof_spad_schema() {
           {"tdc.full_range_s", K::Real, "s", 0, 1, true, "conversion window after START; later hits are lost (<= LSB x 2^bits)"},
           {"tdc.dnl_rms_lsb", K::Real, "LSB", 0, 1, false, "differential nonlinearity, rms over codes"},
           {"tdc.inl_rms_lsb", K::Real, "LSB", 0, 100, false, "integral nonlinearity, rms over codes"},
+          {"tdc.nonlinearity_seed", K::Integer, "", 0, 9007199254740991.0, false, "seed of the deterministic per-bin DNL pattern"},
           {"tdc.columns_per_tdc", K::Integer, "", 1, 4096, false, "columns sharing one TDC (first hit among them wins)"},
+          {"tdc.neighbour_rate_fraction", K::Real, "", 0, 1, false, "count rate of each sharing neighbour relative to ours (1 = flat scene, 0 = only our column lit)"},
           {"tdc.busy_time_s", K::Real, "s", 0, 1, true, "conversion + transfer time during which the TDC takes no new hit"},
           // Histogram and reconstruction (eq. 2.34 / 4.19).
           {"histogram.integration_time_s", K::Real, "s", 0, 100, true, "acquisition time of one pixel's histogram"},
@@ -54,6 +56,12 @@ const ParamSchema& tof_spad_schema() {
           {"evaluation.distance_min_m", K::Real, "m", 0, 1e4, false, "nearest target distance of the evaluation"},
           {"evaluation.distance_max_m", K::Real, "m", 0, 1e4, true, "farthest target distance"},
           {"evaluation.distance_points", K::Integer, "", 1, 100000, false, "linearly spaced distance points"},
+          {"evaluation.detection_sigma", K::Real, "", 0, 100, false, "k: signal counts in the peak window must exceed k sqrt(background counts in it)"},
+          {"evaluation.min_signal_counts", K::Real, "", 0, 1e9, false, "minimum expected signal counts in the peak window"},
+          {"evaluation.min_armed_fraction", K::Real, "", 0, 1, false, "pile-up saturated below this fraction of cycles still armed at the echo"},
+          {"evaluation.reference_signal_Hz", K::Real, "Hz", 0, 1e10, true, "signal count rate of the published single-point figures"},
+          {"evaluation.reference_background_Hz", K::Real, "Hz", 0, 1e10, false, "background count rate of the published single-point figures"},
+          {"evaluation.sweep_signal_Hz", K::Real, "Hz", 0, 1e10, true, "fixed signal count rate of the accuracy-vs-background sweep"},
       }};
   return schema;
 }

@@ -97,7 +97,8 @@ TEST_F(Cli, EvaluateWritesMapsSummaryAndPlots) {
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["points_total"], 63);
   for (const char* f : {"summary.json", "points.csv", "detectable_area.csv", "accuracy_px.csv", "accuracy_mm.csv",
-                        "detectable_area.png", "detectable_area.svg", "accuracy_px.png", "accuracy_px.svg"})
+                        "detectable_area.png", "detectable_area.svg", "accuracy.png", "accuracy.svg",
+                        "resolution_vs_samplings.png", "resolution_vs_samplings.svg"})
     EXPECT_TRUE(fs::is_regular_file(out + "/" + f)) << f;
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_NE(e.path().filename().string().rfind(".staging", 0), 0u) << "staging left behind";
@@ -117,6 +118,24 @@ TEST_F(Cli, NotModelledSensorSaysSo) {
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.err.find("not modelled yet"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(tmp_ + "/x"));
+}
+
+TEST_F(Cli, TableHasFourSensorsAndTheThesisValues) {
+  const std::string out = tmp_ + "/table";
+  const auto r = rangesim("table --json --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["table_5_1"].size(), 4u);
+  const auto& ls = j["table_5_1"][0];
+  EXPECT_EQ(ls["sensor"], "ls-conventional");
+  ASSERT_EQ(ls["rows"].size(), 10u);
+  EXPECT_EQ(ls["rows"][4]["row"], "signal_light");
+  EXPECT_DOUBLE_EQ(ls["rows"][4]["thesis_value"].get<double>(), 43.5);
+  EXPECT_NEAR(ls["rows"][4]["rangesim_value"].get<double>(), 43.52, 0.01);
+  EXPECT_FALSE(ls["rows"][5]["note"].get<std::string>().empty());  // background: why 47.6 vs 63.5 dB
+  EXPECT_GE(j["published_total"].get<int>(), 8);
+  for (const char* f : {"table5_1.md", "table5_1.html", "table5_1.csv", "table5_1.json", "published_figures.csv"})
+    EXPECT_TRUE(fs::is_regular_file(out + "/" + f)) << f;
 }
 
 // ---- bad input: each class names file/flag, key and allowed range; exit 2; nothing written.

@@ -1,0 +1,270 @@
+// rangesim table: thesis Table 5.1 for the four seed sensors beside rangesim's values, and the
+// chips' published figures with their status.
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unistd.h>
+
+#include "app/commands.h"
+#include "app/output_dir.h"
+#include "app/table_data.h"
+#include "core/preset.h"
+#include "golden/evaluate_sensor.h"
+
+namespace rangesim::app {
+
+namespace {
+
+struct Cell {
+  std::string thesis, ours, difference, note;
+  double thesis_value = golden::kNaN, ours_value = golden::kNaN;
+};
+
+struct Column {
+  std::string sensor, reference;
+  bool modelled = false;
+  std::vector<Cell> cells;
+  std::vector<golden::PublishedFigure> published;
+};
+
+std::string key_with_suffix(const ParamSet& p, const std::string& suffix) {
+  for (const auto& [key, _] : p.values())
+    if (key.size() >= suffix.size() && key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0) return key;
+  return "";
+}
+
+// Value in the row's unit shown with an engineering prefix.
+std::string show(double v, const std::string& unit) {
+  if (!std::isfinite(v)) return "-";
+  if (unit == "dB") return fmt::format("{:.2f} dB", v);
+  if (unit == "m") return fmt::format("{:.3g} mm", v * 1e3);
+  if (unit == "s") return v < 1e-3 ? fmt::format("{:.4g} us", v * 1e6) : fmt::format("{:.4g} ms", v * 1e3);
+  if (unit == "F") return fmt::format("{:.4g} fF", v * 1e15);
+  return fmt::format("{:g}", v);
+}
+
+std::string difference(double ours, double thesis, const std::string& unit) {
+  if (!std::isfinite(ours) || !std::isfinite(thesis)) return "";
+  const double d = ours - thesis;
+  if (unit == "dB") return fmt::format("{:+.2f} dB", d);
+  if (unit == "m") return fmt::format("{:+.3g} mm", d * 1e3);
+  if (std::fabs(d) <= 1e-9 * std::fabs(thesis)) return "0";
+  return fmt::format("{:+.3g}x", ours / thesis);
+}
+
+int g_sensor_index = 0, g_sensor_count = 0;
+void table_progress(int done, int total) {
+  if (done == total || done % 200 == 0)
+    std::fprintf(stderr, "%stable: sensor %d/%d, %d/%d operating points%s", isatty(fileno(stderr)) ? "\r" : "",
+                 g_sensor_index, g_sensor_count, done, total, isatty(fileno(stderr)) && done != total ? "" : "\n");
+}
+
+Column build_column(const ThesisColumn& tc) {
+  Column c{tc.sensor, tc.reference, false, {}, {}};
+  const ParamSet params = load_preset(tc.sensor);
+  const SensorInfo* info = find_sensor(tc.sensor);
+  c.modelled = info && info->golden_modelled;
+  golden::EvalResult ev;
+  if (c.modelled) {
+    ev = golden::evaluate_sensor(params, &table_progress);
+    c.published = golden::published_figures(params);
+  }
+  const bool total_sbr = tc.sensor == "ls-conventional";  // eq. 3.11 there, eq. 3.23/4.11 elsewhere
+  const auto& rows = table_rows();
+  for (size_t i = 0; i < rows.size(); ++i) {
+    Cell cell;
+    cell.thesis = tc.cells[i].text;
+    cell.thesis_value = tc.cells[i].value;
+    const auto& r = rows[i];
+    double v = golden::kNaN;
+    switch (r.row) {
+      case TableRow::Type:
+        cell.ours = tc.sensor.rfind("ls-", 0) == 0 ? "LS" : "TOF";
+        break;
+      case TableRow::IntegrationTime: {
+        const std::string k = key_with_suffix(params, "integration_time_s");
+        if (!k.empty()) v = params.real(k);
+        break;
+      }
+      case TableRow::WellCapacity:
+        for (const char* k : {"pixel.pd_capacitance_F", "correlator.capacitance_plus_F", "pixel.fd1_capacitance_F"})
+          if (params.has(k)) v = params.real(k);
+        break;
+      case TableRow::AdcTdc: {
+        const std::string bits = key_with_suffix(params, ".adc_bits");
+        if (params.has("tdc.lsb_s")) {
+          cell.ours = fmt::format("{:.4g} ps LSB", params.real("tdc.lsb_s") * 1e12);
+          cell.ours_value = params.real("tdc.lsb_s");
+        } else if (!bits.empty()) {
+          cell.ours = fmt::format("{}-bit", params.integer(bits));
+          cell.ours_value = static_cast<double>(params.integer(bits));
+        }
+        break;
+      }
+      case TableRow::SignalLight: v = c.modelled ? ev.signal_range.range_dB : v; break;
+      case TableRow::BackgroundLight: v = c.modelled ? ev.background_range.range_dB : v; break;
+      case TableRow::SbrMax: v = c.modelled ? (total_sbr ? ev.sbr_max_dB : ev.sbr_ratio_max_dB) : v; break;
+      case TableRow::SbrMin: v = c.modelled ? (total_sbr ? ev.sbr_min_dB : ev.sbr_ratio_min_dB) : v; break;
+      case TableRow::AccuracyMax: v = c.modelled ? ev.accuracy_max_m : v; break;
+      case TableRow::AccuracyMin: v = c.modelled ? ev.accuracy_min_m : v; break;
+    }
+    const bool model_row = r.row >= TableRow::SignalLight;
+    if (cell.ours.empty()) {
+      cell.ours_value = v;
+      cell.ours = model_row && !c.modelled ? "not modelled yet" : show(v, r.unit);
+    }
+    if (r.row != TableRow::AdcTdc || cell.thesis_value == cell.ours_value)
+      cell.difference = difference(cell.ours_value, cell.thesis_value, r.unit);
+    for (const auto& [id, note] : tc.notes)
+      if (id == r.id) cell.note = note;
+    if ((r.row == TableRow::SbrMax || r.row == TableRow::SbrMin) && c.modelled && cell.note.empty())
+      cell.note = total_sbr ? "eq. 3.11, (V_sig + V_bg) / V_bg" : "eq. 3.23 / 4.11, signal / background";
+    c.cells.push_back(cell);
+  }
+  return c;
+}
+
+std::string markdown(const std::vector<Column>& cols, bool published) {
+  std::ostringstream o;
+  o << "# Thesis Table 5.1 beside rangesim\n";
+  for (const auto& c : cols) {
+    o << fmt::format("\n## {} {}{}\n\n| row | thesis | rangesim | difference | note |\n|---|---|---|---|---|\n", c.sensor,
+                     c.reference, c.modelled ? "" : " (golden model not yet available)");
+    for (size_t i = 0; i < c.cells.size(); ++i) {
+      const auto& cell = c.cells[i];
+      o << fmt::format("| {} | {} | {} | {} | {} |\n", table_rows()[i].label, cell.thesis, cell.ours, cell.difference,
+                       cell.note);
+    }
+  }
+  if (published) {
+    o << "\n# Published figures\n\n| sensor | figure | published | rangesim | status | note |\n|---|---|---|---|---|---|\n";
+    for (const auto& c : cols)
+      for (const auto& f : c.published)
+        o << fmt::format("| {} | {} | {:.4g} {} | {:.4g} {} | {} | {} |\n", f.sensor, f.description, f.published, f.unit,
+                         f.ours, f.unit, f.reproduced() ? "reproduced" : "differs", f.note);
+  }
+  return o.str();
+}
+
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char ch : s) o += ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : ch == '&' ? "&amp;" : std::string(1, ch);
+  return o;
+}
+
+std::string html(const std::vector<Column>& cols) {
+  std::ostringstream o;
+  o << "<!doctype html><meta charset=utf-8><title>rangesim: Table 5.1</title><style>"
+       "body{font-family:sans-serif;margin:2em}table{border-collapse:collapse;margin-bottom:2em}"
+       "td,th{border:1px solid #bbb;padding:4px 8px;vertical-align:top}th{background:#eee}"
+       "td.n{text-align:right;white-space:nowrap}td.note{max-width:40em;font-size:90%}</style>"
+       "<h1>Thesis Table 5.1 beside rangesim</h1>";
+  for (const auto& c : cols) {
+    o << fmt::format("<h2>{} {}</h2><table><tr><th>row<th>thesis<th>rangesim<th>difference<th>note", c.sensor, c.reference);
+    for (size_t i = 0; i < c.cells.size(); ++i) {
+      const auto& cell = c.cells[i];
+      o << fmt::format("<tr><td>{}<td class=n>{}<td class=n>{}<td class=n>{}<td class=note>{}", table_rows()[i].label,
+                       html_escape(cell.thesis), html_escape(cell.ours), html_escape(cell.difference), html_escape(cell.note));
+    }
+    o << "</table>";
+  }
+  o << "<h1>Published figures</h1><table><tr><th>sensor<th>figure<th>published<th>rangesim<th>status<th>note";
+  for (const auto& c : cols)
+    for (const auto& f : c.published)
+      o << fmt::format("<tr><td>{}<td>{}<td class=n>{:.4g} {}<td class=n>{:.4g} {}<td>{}<td class=note>{}", f.sensor,
+                       html_escape(f.description), f.published, f.unit, f.ours, f.unit,
+                       f.reproduced() ? "reproduced" : "differs", html_escape(f.note));
+  o << "</table>\n";
+  return o.str();
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char ch : s) o += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return o + "\"";
+}
+
+std::string num_or_empty(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : ""; }
+
+nlohmann::json json_num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+int run_table(const TableOptions& opt) {
+  std::unique_ptr<OutputDir> out;
+  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out");
+
+  std::vector<Column> cols;
+  g_sensor_count = static_cast<int>(thesis_table_5_1().size());
+  for (const auto& tc : thesis_table_5_1()) {
+    ++g_sensor_index;
+    cols.push_back(build_column(tc));
+  }
+
+  nlohmann::json j;
+  j["table_5_1"] = nlohmann::json::array();
+  for (const auto& c : cols) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (size_t i = 0; i < c.cells.size(); ++i) {
+      const auto& cell = c.cells[i];
+      const auto& r = table_rows()[i];
+      rows.push_back({{"row", r.id}, {"label", r.label}, {"unit", r.unit}, {"thesis", cell.thesis},
+                      {"thesis_value", json_num(cell.thesis_value)}, {"rangesim", cell.ours},
+                      {"rangesim_value", json_num(cell.ours_value)}, {"difference", cell.difference}, {"note", cell.note}});
+    }
+    j["table_5_1"].push_back({{"sensor", c.sensor}, {"reference", c.reference}, {"golden_modelled", c.modelled}, {"rows", rows}});
+  }
+  j["published"] = nlohmann::json::array();
+  int reproduced = 0, total = 0;
+  for (const auto& c : cols)
+    for (const auto& f : c.published) {
+      ++total;
+      reproduced += f.reproduced();
+      j["published"].push_back({{"sensor", f.sensor}, {"id", f.id}, {"description", f.description},
+                                {"published", f.published}, {"unit", f.unit}, {"rangesim", json_num(f.ours)},
+                                {"tolerance", f.tolerance}, {"reproduced", f.reproduced()}, {"note", f.note}});
+    }
+  j["published_reproduced"] = reproduced;
+  j["published_total"] = total;
+
+  if (out) {
+    std::ostringstream csv;
+    csv << "sensor,reference,row,unit,thesis,thesis_value,rangesim,rangesim_value,difference,note\n";
+    for (const auto& c : cols)
+      for (size_t i = 0; i < c.cells.size(); ++i) {
+        const auto& cell = c.cells[i];
+        const auto& r = table_rows()[i];
+        csv << fmt::format("{},{},{},{},{},{},{},{},{},{}\n", c.sensor, c.reference, r.id, r.unit, csv_field(cell.thesis),
+                           num_or_empty(cell.thesis_value), csv_field(cell.ours), num_or_empty(cell.ours_value),
+                           csv_field(cell.difference), csv_field(cell.note));
+      }
+    std::ostringstream pcsv;
+    pcsv << "sensor,id,description,published,unit,rangesim,tolerance,status,note\n";
+    for (const auto& c : cols)
+      for (const auto& f : c.published)
+        pcsv << fmt::format("{},{},{},{:.6g},{},{},{:g},{},{}\n", f.sensor, f.id, csv_field(f.description), f.published,
+                            f.unit, num_or_empty(f.ours), f.tolerance, f.reproduced() ? "reproduced" : "differs",
+                            csv_field(f.note));
+    out->write("table5_1.csv", csv.str());
+    out->write("published_figures.csv", pcsv.str());
+    out->write("table5_1.md", markdown(cols, true));
+    out->write("table5_1.html", html(cols));
+    out->write("table5_1.json", j.dump(2) + "\n");
+    out->commit();
+  }
+
+  if (opt.json) {
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    fmt::print("{}", markdown(cols, opt.published));
+    fmt::print("\npublished figures: {} of {} reproduced{}\n", reproduced, total,
+               opt.published ? "" : " (--published lists them)");
+    if (out) fmt::print("written to {}/: table5_1.md, table5_1.html, table5_1.csv, table5_1.json, published_figures.csv\n", opt.out);
+  }
+  return 0;
+}
+
+}  // namespace rangesim::app

@@ -1,0 +1,34 @@
+#pragma once
+// Thesis Table 5.1 (columns [31], [27], [12], [11]: the four seed sensors) as published, with
+// the notes that explain where rangesim's value differs and why.
+#include <string>
+#include <vector>
+
+namespace rangesim::app {
+
+// Rows of Table 5.1, in the thesis's order.
+enum class TableRow { Type, IntegrationTime, WellCapacity, AdcTdc, SignalLight, BackgroundLight, SbrMax, SbrMin, AccuracyMax, AccuracyMin };
+
+struct TableRowInfo {
+  TableRow row;
+  std::string id;     // snake_case key in JSON/CSV
+  std::string label;  // as in the thesis
+  std::string unit;   // unit of the numeric values ("" for text rows)
+};
+const std::vector<TableRowInfo>& table_rows();
+
+struct ThesisCell {
+  std::string text;  // as printed in the thesis
+  double value;      // numeric value in the row's unit (NaN for text or "-")
+};
+
+struct ThesisColumn {
+  std::string sensor;      // preset id
+  std::string reference;   // "[31]"
+  std::vector<ThesisCell> cells;  // one per table_rows()
+  // Why rangesim's value differs (per row id), "" where it agrees or nothing is known.
+  std::vector<std::pair<std::string, std::string>> notes;
+};
+const std::vector<ThesisColumn>& thesis_table_5_1();
+
+}  // namespace rangesim::app
