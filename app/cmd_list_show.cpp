@@ -10,7 +10,8 @@ namespace rangesim::app {
 
 int run_list(const ListOptions& opt) {
   nlohmann::json list = nlohmann::json::array();
-  if (!opt.json) fmt::print("{:<17} {:<7} {:<10} {}\n", "preset", "thesis", "evaluate", "architecture");
+  if (!opt.json)
+    fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", "preset", "thesis", "evaluate", "frame-rate", "architecture");
   for (const auto& s : sensors()) {
     std::string file;
     try {
@@ -20,9 +21,10 @@ int run_list(const ListOptions& opt) {
     }
     if (opt.json)
       list.push_back({{"id", s.id}, {"title", s.title}, {"thesis_ref", s.thesis_ref},
-                      {"golden_modelled", s.golden_modelled}, {"file", file}});
+                      {"golden_modelled", s.golden_modelled}, {"timing_modelled", s.timing_modelled}, {"file", file}});
     else
-      fmt::print("{:<17} {:<7} {:<10} {}\n", s.id, s.thesis_ref, s.golden_modelled ? "yes" : "not yet", s.title);
+      fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s.id, s.thesis_ref, s.golden_modelled ? "yes" : "not yet",
+                 s.timing_modelled ? "yes" : "not yet", s.title);
   }
   if (opt.json) fmt::print("{}\n", list.dump(2));
   return 0;

@@ -86,6 +86,8 @@ Column build_column(const ThesisColumn& tc) {
       case TableRow::IntegrationTime: {
         const std::string k = key_with_suffix(params, "integration_time_s");
         if (!k.empty()) v = params.real(k);
+        for (const auto& [key, value] : ev.summary_extra)  // tof-lockin: accumulations x repetition period
+          if (k.empty() && key == "accumulation_time_s") v = value;
         break;
       }
       case TableRow::WellCapacity:

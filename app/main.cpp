@@ -1,86 +1,37 @@
-// rangesim: command-line entry point. Subcommands live in cmd_*.cpp; this file only wires
-// CLI11 and maps errors to exit codes (0 ok, 1 internal, 2 bad input, 3 not modelled yet).
-#include <CLI/CLI.hpp>
+// rangesim: command-line entry point. The command line is parsed by parse_command_line()
+// (cli_parse.cpp), subcommands live in cmd_*.cpp; this file only runs the parsed command and maps
+// errors to exit codes (0 ok, 1 internal, 2 bad input, 3 not modelled yet).
 #include <fmt/format.h>
+#include <iostream>
 
 #include "app/cli_common.h"
+#include "app/cli_parse.h"
 #include "app/commands.h"
 #include "core/user_error.h"
 
 using namespace rangesim::app;
 
-int main(int argc, char** argv) {
-  CLI::App app{
-      "rangesim: cycle-accurate simulator of 3-D range-finding smart image sensors.\n"
-      "Sensors (presets): ls-conventional, ls-demodulation, tof-lockin, tof-spad; a path to a\n"
-      "preset .toml file works wherever a sensor is expected.\n"
-      "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
-      "3 sensor not modelled yet for the command.",
-      "rangesim"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", "rangesim 0.1.0");
+namespace {
 
-  ListOptions list_opt;
-  auto* list = app.add_subcommand("list", "List the sensor presets and which commands model them");
-  list->add_flag("--json", list_opt.json, "Print JSON");
-
-  ShowOptions show_opt;
-  auto* show = app.add_subcommand("show", "Show a preset's resolved parameters with units and sources");
-  show->add_option("preset", show_opt.preset, "Preset id or path to a .toml file")->required();
-  show->add_flag("--json", show_opt.json, "Print JSON");
-
-  EvaluateOptions ev_opt;
-  auto* ev = app.add_subcommand(
-      "evaluate",
-      "Background-light and range-accuracy evaluation over a signal x background grid (thesis ch. 3):\n"
-      "detectable area with reasons, accuracy map, SBR' both ways, dynamic ranges, 1-D sweeps. Writes CSV\n"
-      "maps, summary.json, heat maps and line plots (PNG, SVG) into --out.");
-  ev->add_option("sensor", ev_opt.sensor, "Preset id or path to a .toml file")->required();
-  ev->add_option("--signal", ev_opt.signal,
-                 "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
-                 "tof-lockin), Hz count rate (tof-spad) (default: preset)");
-  ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
-  ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)");
-  ev->add_option("--adc-bits", ev_opt.adc_bits, "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)");
-  ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)");
-  ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)");
-  ev->add_flag("--json", ev_opt.json, "Print summary.json to stdout instead of the table");
-  ev->add_flag("--no-plots", ev_opt.no_plots, "Skip the PNG/SVG heat maps");
-
-  FrameRateOptions fr_opt;
-  auto* fr = app.add_subcommand("frame-rate", "Frame time from the clock schedule, by phase, and the rates");
-  fr->add_option("sensor", fr_opt.sensor, "Preset id or path to a .toml file")->required();
-  fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)");
-  fr->add_flag("--json", fr_opt.json, "Print JSON");
-
-  TableOptions tb_opt;
-  auto* tb = app.add_subcommand(
-      "table",
-      "Thesis Table 5.1 for the four seed sensors beside rangesim's values (thesis value, ours, difference,\n"
-      "and why they differ), plus the chips' published figures with their status");
-  tb->add_flag("--json", tb_opt.json, "Print JSON (table and published figures)");
-  tb->add_flag("--published", tb_opt.published, "Also list the published figures on the terminal");
-  tb->add_option("--out", tb_opt.out, "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
-
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "rangesim: {}\nRun 'rangesim --help' or 'rangesim <command> --help'.\n", e.what());
-    return kExitBadInput;
+int run(const ParsedCommand& c) {
+  switch (c.kind) {
+    case CommandKind::List: return run_list(c.list);
+    case CommandKind::Show: return run_show(c.show);
+    case CommandKind::Evaluate: return run_evaluate(c.evaluate);
+    case CommandKind::FrameRate: return run_frame_rate(c.frame_rate);
+    case CommandKind::Table: return run_table(c.table);
+    case CommandKind::None: break;
   }
+  return kExitInternal;
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  const CommandLine cl = parse_command_line(argc, argv, std::cout, std::cerr);
+  if (cl.finished) return cl.exit_code;
   try {
-    if (*list) return run_list(list_opt);
-    if (*show) return run_show(show_opt);
-    if (*ev) return run_evaluate(ev_opt);
-    if (*fr) return run_frame_rate(fr_opt);
-    if (*tb) return run_table(tb_opt);
+    return run(cl.command);
   } catch (const rangesim::UserError& e) {
     fmt::print(stderr, "rangesim: error: {}\n", e.what());
     return kExitBadInput;
@@ -91,5 +42,4 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "rangesim: internal error: {}\n", e.what());
     return kExitInternal;
   }
-  return kExitInternal;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <sstream>
 #include <toml++/toml.h>
 
 #include "core/schemas.h"
@@ -23,10 +24,10 @@ namespace rangesim {
 
 const std::vector<SensorInfo>& sensors() {
   static const std::vector<SensorInfo> list = {
-      {"ls-conventional", "light-section, row-parallel search, multi-sampling", "[31]", true},
-      {"ls-demodulation", "light-section, demodulation, background suppression", "[27]", false},
-      {"tof-lockin", "pulsed lock-in time-of-flight, two-tap photogate", "[12]", false},
-      {"tof-spad", "direct time-of-flight, SPADs with column TDCs", "[11]", false},
+      {"ls-conventional", "light-section, row-parallel search, multi-sampling", "[31]", true, true},
+      {"ls-demodulation", "light-section, demodulation, background suppression", "[27]", true, false},
+      {"tof-lockin", "pulsed lock-in time-of-flight, two-tap photogate", "[12]", true, false},
+      {"tof-spad", "direct time-of-flight, SPADs with column TDCs", "[11]", true, false},
   };
   return list;
 }
@@ -135,16 +136,26 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
 
 ParamSet load_preset_file(const std::string& path) {
   if (!fs::is_regular_file(path)) throw UserError(fmt::format("{}: cannot read preset file (not a regular file)", path));
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(fmt::format("{}: cannot read preset file", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw UserError(fmt::format("{}: cannot read preset file", path));
+  return load_preset_text(text.str(), path);
+}
+
+ParamSet load_preset_text(const std::string& text, const std::string& path) {
   toml::table root;
   try {
-    root = toml::parse(in, path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
                                 e.source().begin.column, e.description()));
   }
   const auto* id = root["sensor"]["id"].as_string();
+  if (!id && root["sensor"]["id"])
+    throw UserError(fmt::format("{}: sensor.id must be a string; allowed: ls-conventional, ls-demodulation, tof-lockin, tof-spad",
+                                where_of(path, *root["sensor"]["id"].node())));
   if (!id) throw UserError(fmt::format("{}: missing key sensor.id; allowed: ls-conventional, ls-demodulation, tof-lockin, tof-spad", path));
   const ParamSchema& schema = schema_for(id->get(), path);
   ParamSet set(path, id->get());

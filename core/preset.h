@@ -11,7 +11,8 @@ struct SensorInfo {
   std::string id;           // preset id, e.g. "ls-conventional"
   std::string title;        // one line
   std::string thesis_ref;   // reference number in the thesis, e.g. "[31]"
-  bool golden_modelled;     // true when `rangesim evaluate` has a model for it
+  bool golden_modelled;     // true when `rangesim evaluate` and `table` have a model for it
+  bool timing_modelled;     // true when `rangesim frame-rate` has its clock schedule
 };
 
 // The four sensor architectures of the thesis, in thesis order.
@@ -28,8 +29,14 @@ std::vector<std::string> preset_search_path();
 // A preset id or a path to a TOML file -> path of an existing file; UserError if none.
 std::string resolve_preset(const std::string& id_or_path);
 
-// Loads and validates a preset file against its sensor's schema.
+// Loads and validates a preset file against its sensor's schema (reads it, then
+// load_preset_text with the path as origin).
 ParamSet load_preset_file(const std::string& path);
+
+// Parses and validates preset TOML text against its sensor's schema. `origin` names the text in
+// every message (a file path, "<stdin>", ...) and becomes ParamSet::origin(). Any bad input, of
+// whatever bytes, throws UserError and nothing else.
+ParamSet load_preset_text(const std::string& text, const std::string& origin);
 
 // resolve_preset + load_preset_file.
 ParamSet load_preset(const std::string& id_or_path);

@@ -35,6 +35,7 @@ const ParamSchema& tof_lockin_schema() {
           {"readout.adc_bits", K::Integer, "", 1, 24, false, "column ADC resolution"},
           {"readout.adc_full_scale_V", K::Real, "V", 0, 10, true, "ADC input range; LSB Delta V_ADC = full scale / 2^bits (eq. 4.9)"},
           {"readout.detection_threshold_V", K::Real, "V", 0, 10, true, "smallest V1 + V2 - 2 V_offset accepted as a range value (V_sig_min of eq. 4.11)"},
+          {"readout.min_snr", K::Real, "", 0, 1e6, false, "smallest SNR of V1 + V2 - 2 V_offset (mean over rms) for which a range is derived; below it the ratio's moments diverge"},
           {"readout.cds_enabled", K::Boolean, "", 0, 0, false, "true: FD reset level sampled and subtracted, cancelling kTC noise"},
           {"readout.ambient_subtraction", K::Boolean, "", 0, 0, false, "true: a frame with the LED off is read and subtracted from each tap (cancels background, dark and V_offset; doubles reset/read noise and readouts)"},
           {"readout.offset_calibration_V", K::Real, "V", 0, 10, false, "V_offset subtracted from each tap in eq. 2.25 after the (optional) ambient subtraction; a mismatch with the true offset biases L"},

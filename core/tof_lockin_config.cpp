@@ -42,6 +42,7 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
   c.readout.adc_bits = static_cast<int>(p.integer("readout.adc_bits"));
   c.readout.adc_full_scale_V = p.real("readout.adc_full_scale_V");
   c.readout.detection_threshold_V = p.real("readout.detection_threshold_V");
+  c.readout.min_snr = p.real("readout.min_snr");
   c.readout.cds_enabled = p.boolean("readout.cds_enabled");
   c.readout.ambient_subtraction = p.boolean("readout.ambient_subtraction");
   c.readout.offset_calibration_V = p.real("readout.offset_calibration_V");

@@ -42,6 +42,7 @@ struct LockinReadoutConfig {
   int adc_bits = 12;                    // codes 0 .. 2^bits - 1
   double adc_full_scale_V = 1.5;        // LSB Delta V_ADC = full scale / 2^bits (eq. 4.9)
   double detection_threshold_V = 5e-3;  // smallest light-induced V1 + V2 accepted as a range value
+  double min_snr = 3.0;                 // smallest mean / rms of the ratio's denominator accepted
   bool cds_enabled = false;             // true: FD kTC reset noise cancelled
   bool ambient_subtraction = true;      // true: a frame with the LED off is read and subtracted per tap
   double offset_calibration_V = 0.0;    // V_offset subtracted from each tap in eq. 2.25 after (optional) ambient subtraction

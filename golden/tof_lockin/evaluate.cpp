@@ -1,11 +1,121 @@
-// Placeholder until the golden model of this sensor lands.
-#include <stdexcept>
+// tof-lockin's evaluation over signal x background photocurrent (thesis 4.1.2, Fig. 4.4-4.6) as a
+// sensor-independent EvalResult: per-point verdicts and accuracy (lockin_point.h), exact edges of
+// the detectable ranges by bisection, SBR' both ways, sweeps and the frame schedule.
+#include <cmath>
 
+#include "core/tof_lockin_config.h"
 #include "golden/evaluate_sensor.h"
+#include "golden/tof_lockin/lockin_point.h"
+#include "golden/tof_lockin/lockin_sweeps.h"
+#include "golden/tof_lockin/pulse_timing.h"
+#include "golden/tof_lockin/tap_charge.h"
 
 namespace rangesim::golden {
 
-EvalResult evaluate_tof_lockin(const ParamSet&, ProgressFn) { throw std::logic_error("not modelled yet"); }
-std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet&) { return {}; }
+namespace {
+
+bool detectable(const TofLockinConfig& cfg, double sig_A, double bg_A) {
+  return evaluate_point(cfg, sig_A, bg_A, cfg.eval.distance_m, cfg.eval.frames_averaged).detect ==
+         LockinDetect::Detectable;
+}
+
+// Edge between a non-detectable value `out` and a detectable `in` on a log axis, to 1e-12 relative.
+template <class Pred>
+double bisect_edge(double out, double in, Pred det) {
+  for (int i = 0; i < 200 && std::fabs(in / out - 1.0) > 1e-12; ++i) {
+    const double mid = std::sqrt(in * out);
+    (det(mid) ? in : out) = mid;
+  }
+  return in;
+}
+
+// Detectable interval along an axis whose grid verdicts are `ok` (the detectable set along one
+// axis is an interval: threshold below, saturation above).
+template <class Pred>
+EvalRange axis_range(const std::vector<double>& v, const std::vector<bool>& ok, double at, Pred det) {
+  EvalRange r;
+  r.at = at;
+  int first = -1, last = -1;
+  for (int i = 0; i < static_cast<int>(v.size()); ++i)
+    if (ok[i]) last = i, first = first < 0 ? i : first;
+  if (first < 0) return r;
+  r.lo_limited_by_grid = first == 0;
+  r.hi_limited_by_grid = last == static_cast<int>(v.size()) - 1;
+  r.lo = r.lo_limited_by_grid ? v[first] : bisect_edge(v[first - 1], v[first], det);
+  r.hi = r.hi_limited_by_grid ? v[last] : bisect_edge(v[last + 1], v[last], det);
+  r.range_dB = 20.0 * std::log10(r.hi / r.lo);
+  return r;
+}
+
+// One readout of the whole array: conversion of both FDs of each row, then shifting the row out.
+double readout_time_s(const TofLockinConfig& cfg) {
+  return cfg.pixel.rows *
+         static_cast<double>(cfg.readout.adc_conversion_cycles + cfg.readout.output_cycles_per_row) /
+         cfg.readout.clock_Hz;
+}
+
+}  // namespace
+
+EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
+  const TofLockinConfig cfg = tof_lockin_from_params(params);
+  const auto& e = cfg.eval;
+  EvalResult r;
+  r.sensor = params.sensor_id();
+  r.signal = {"signal", "A", log_spaced(e.signal_min_A, e.signal_max_A, e.signal_points)};
+  r.background = {"background", "A", log_spaced(e.background_min_A, e.background_max_A, e.background_points)};
+  r.reasons = {{"detectable", "range can be derived"},
+               {"below_threshold", "light-induced V1 + V2 below readout.detection_threshold_V (V_sig_min of eq. 4.11)"},
+               {"noise_limited", "SNR of V1 + V2 below readout.min_snr: the ratio of eq. 2.25 has no usable moments"},
+               {"saturated", "a tap's FD swing exceeds V_sat or its ADC input the full scale"},
+               {"out_of_range", "delay 2L/c outside [0, T0]: distance beyond c T0 / 2"}};
+  r.metric_names = {"std_m", "bias_m", "v1_V", "v2_V", "signal_V", "n1_e", "n2_e", "snr", "std_first_order_m"};
+  const auto& sig = r.signal.values;
+  const auto& bg = r.background.values;
+  r.points.reserve(sig.size() * bg.size());
+  for (size_t ib = 0; ib < bg.size(); ++ib) {
+    for (size_t is = 0; is < sig.size(); ++is) {
+      const LockinPoint p = evaluate_point(cfg, sig[is], bg[ib], e.distance_m, e.frames_averaged);
+      EvalPoint q;
+      q.signal = sig[is];
+      q.background = bg[ib];
+      q.detect = to_string(p.detect);
+      // SBR' on photocurrents: signal V1 + V2 over the background of one tap integrate over the
+      // same open time N T0, so the current ratio is the voltage ratio of eq. 3.11 / 4.11.
+      q.sbr_total_dB = 20.0 * std::log10((sig[is] + bg[ib]) / bg[ib]);
+      q.sbr_ratio_dB = 20.0 * std::log10(sig[is] / bg[ib]);
+      const bool ok = p.detect == LockinDetect::Detectable;
+      q.accuracy_m = ok ? p.accuracy_m : kNaN;
+      q.metrics = ok ? std::vector<double>{p.std_m, p.bias_m, p.v1_V, p.v2_V, p.signal_V, p.n1_e, p.n2_e, p.snr,
+                                           p.std_first_m}
+                     : std::vector<double>(r.metric_names.size(), kNaN);
+      r.points.push_back(std::move(q));
+    }
+    if (progress) progress(static_cast<int>(ib + 1), static_cast<int>(bg.size()));
+  }
+  summarise_points(r);
+
+  // Signal range at the lowest background, background range at the highest signal.
+  std::vector<bool> ok_sig(sig.size()), ok_bg(bg.size());
+  for (size_t is = 0; is < sig.size(); ++is) ok_sig[is] = r.at(0, is).detect == "detectable";
+  for (size_t ib = 0; ib < bg.size(); ++ib) ok_bg[ib] = r.at(ib, sig.size() - 1).detect == "detectable";
+  r.signal_range = axis_range(sig, ok_sig, bg.front(), [&](double s) { return detectable(cfg, s, bg.front()); });
+  r.background_range = axis_range(bg, ok_bg, sig.back(), [&](double b) { return detectable(cfg, sig.back(), b); });
+  r.distance_m = e.distance_m;
+
+  const double frame_s = cfg.gates.accumulations_per_frame * repetition_period_s(cfg.source) +
+                         readout_time_s(cfg);
+  const double frames_per_image = cfg.readout.ambient_subtraction ? 2.0 : 1.0;
+  r.summary_extra = {{"frames_averaged", static_cast<double>(e.frames_averaged)},
+                     {"max_range_m", max_range_m(cfg.source)},
+                     {"accumulation_time_s", cfg.gates.accumulations_per_frame * repetition_period_s(cfg.source)},
+                     {"frame_time_s", frame_s},
+                     {"frames_per_range_image", frames_per_image},
+                     {"range_images_per_s", 1.0 / (frames_per_image * frame_s)},
+                     {"adc_lsb_V", adc_lsb_V(cfg)},
+                     {"ktc_noise_V", ktc_noise_V(cfg, 0)},
+                     {"signal_V_at_signal_max", evaluate_point(cfg, sig.back(), 0.0, e.distance_m, 1).signal_V}};
+  r.sweeps = lockin_sweeps(cfg, sig, bg);
+  return r;
+}
 
 }  // namespace rangesim::golden

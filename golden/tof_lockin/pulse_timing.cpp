@@ -13,7 +13,8 @@ double round_trip_delay_s(double distance_m) { return 2.0 * distance_m / phys::k
 double max_range_m(const LightPulseConfig& src) { return phys::kSpeedOfLight_m_per_s * src.pulse_width_s / 2.0; }
 
 bool delay_in_range(const LightPulseConfig& src, double delay_s) {
-  return delay_s >= 0.0 && delay_s <= src.pulse_width_s;
+  // 1e-12 relative slack: T_D = 2 (c T0 / 2) / c must count as T0 despite rounding.
+  return delay_s >= 0.0 && delay_s <= src.pulse_width_s * (1.0 + 1e-12);
 }
 
 double pulse_area_before_s(const LightPulseConfig& src, double t_s) {

@@ -18,18 +18,20 @@ Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double backgr
   a.round_trip_s = 2.0 * distance_m / phys::kSpeedOfLight_m_per_s;
   a.irf_sigma_s = irf_sigma_s(cfg);
   a.uniform_rate_Hz = background_Hz + cfg.spad.dark_count_rate_Hz;
+  a.live_fraction = 1.0 / (1.0 + (signal_Hz + a.uniform_rate_Hz) * cfg.spad.dead_time_s);
   return a;
 }
 
 std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
   const int np = bins.phase_bins;
   std::vector<double> r(static_cast<size_t>(np));
-  for (int i = 0; i < np; ++i) r[static_cast<size_t>(i)] = a.uniform_rate_Hz * bins.width_s(i);
+  for (int i = 0; i < np; ++i) r[static_cast<size_t>(i)] = a.live_fraction * a.uniform_rate_Hz * bins.width_s(i);
   if (a.signal_per_cycle <= 0) return r;
+  const double signal = a.live_fraction * a.signal_per_cycle;
   if (a.irf_sigma_s <= 0) {  // a delta echo lands whole in one bin
     const auto it = std::upper_bound(bins.edges_s.begin(), bins.edges_s.end(), a.round_trip_s);
     const long i = std::distance(bins.edges_s.begin(), it) - 1;
-    if (i >= 0 && i < np) r[static_cast<size_t>(i)] += a.signal_per_cycle;
+    if (i >= 0 && i < np) r[static_cast<size_t>(i)] += signal;
     return r;
   }
   // Upper tail Q(x) = erfc(x / sqrt 2) / 2 keeps precision far out on both sides.
@@ -39,7 +41,7 @@ std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
     const double e0 = bins.edges_s[static_cast<size_t>(i)], e1 = bins.edges_s[static_cast<size_t>(i) + 1];
     if (e1 < lo || e0 > hi) continue;
     const double p = 0.5 * (std::erfc((e0 - a.round_trip_s) * k) - std::erfc((e1 - a.round_trip_s) * k));
-    r[static_cast<size_t>(i)] += a.signal_per_cycle * p;
+    r[static_cast<size_t>(i)] += signal * p;
   }
   return r;
 }

@@ -14,6 +14,7 @@ struct Arrivals {
   double round_trip_s = 0;      // echo centre 2 L / c
   double irf_sigma_s = 0;       // laser pulse sigma and SPAD jitter in quadrature
   double uniform_rate_Hz = 0;   // background + dark count rate, uniform over the cycle
+  double live_fraction = 1;     // free-running SPAD live fraction 1 / (1 + m tau_dead), m = S + B + D
 };
 
 // IRF sigma: sigma_per_fwhm x FWHM of the pulse, combined with the jitter in quadrature.
@@ -22,7 +23,11 @@ double irf_sigma_s(const TofSpadConfig& cfg);
 // Operating point -> arrivals. Rates are PDE-weighted count rates (preset header).
 Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double background_Hz, double distance_m);
 
-// r_i for the Np phase bins of one period. The echo is integrated with erfc only within
+// r_i for the Np phase bins of one period, times the live fraction: the SPAD keeps firing (and
+// going dead) while the TDC is stopped or busy, so at a random time it is live with the
+// non-paralysable probability 1 / (1 + m tau_dead) (REFERENCE.md: n = m / (1 + m tau)). This
+// stationary factor is the thesis's eq. 2.29-2.30 limit (detections <= 1 / t_dead) done properly;
+// its time correlation with the TDC's blocking is neglected (docs/tof-spad.md). The echo is integrated with erfc only within
 // +-12 sigma of its centre (beyond, < 1e-32 of it); echoes are assumed inside the period.
 std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a);
 

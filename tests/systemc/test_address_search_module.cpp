@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/ls_conventional_config.h"
+#include "elaboration_guard.h"
 #include "systemc/address_search.h"
 
 namespace rs = rangesim::systemc;
@@ -15,16 +16,6 @@ using rangesim::AddressSearchConfig;
 
 namespace {
 
-bool claim_elaboration() {
-  static bool used = false;
-  const bool first = !used;
-  used = true;
-  return first;
-}
-
-#define REQUIRE_FRESH_ELABORATION()                                                   \
-  if (!claim_elaboration()) GTEST_SKIP() << "one SystemC elaboration per process: run " \
-                                            "this test alone (ctest does)"
 
 struct Bench : sc_core::sc_module {
   sc_core::sc_clock clk{"clk", 10, sc_core::SC_NS};

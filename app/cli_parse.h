@@ -1,0 +1,35 @@
+#pragma once
+// The command line of `rangesim`, parsed without running anything: main() runs the parsed
+// command, and the CLI fuzz target (fuzz/cli_fuzz.cpp) calls parse_command_line() on arbitrary
+// argv. Only CLI11 and the option structs of commands.h are needed here.
+#include <iosfwd>
+
+#include "app/commands.h"
+
+namespace rangesim::app {
+
+enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table };
+
+// One parsed command line: which subcommand, and its options.
+struct ParsedCommand {
+  CommandKind kind = CommandKind::None;
+  ListOptions list;
+  ShowOptions show;
+  EvaluateOptions evaluate;
+  FrameRateOptions frame_rate;
+  TableOptions table;
+};
+
+struct CommandLine {
+  // true: the parse already produced the process's answer (help, version or a usage error was
+  // printed to `out` / `err`); exit with `exit_code` without running a command.
+  bool finished = false;
+  int exit_code = 0;
+  ParsedCommand command;  // valid when !finished
+};
+
+// Parses argv (argv[0] is the program name). Prints --help / --version to `out`, usage errors to
+// `err` (exit code 2, kExitBadInput). Never throws for any argv; never touches files.
+CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+}  // namespace rangesim::app

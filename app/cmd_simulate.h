@@ -1,0 +1,30 @@
+#pragma once
+// rangesim simulate: the clock-level model of a sensor run on a scene (docs/simulate.md).
+// Kept apart from app/commands.h so the command can be wired in with two lines (see the report
+// in docs/simulate.md, "Wiring").
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace rangesim::app {
+
+struct SimulateOptions {
+  std::string sensor;               // preset id or path (only ls-conventional has a clock-level model)
+  std::string scene;                // --scene FILE.toml (required)
+  std::optional<long long> frames;  // --frames N: frame accesses (default: one range map = beam_positions)
+  std::uint64_t seed = 1;           // --seed S: key of the noise streams
+  std::string trace;                // --trace FILE.vcd ("" = no waveform); SystemC only
+  std::string out;                  // --out DIR ("" -> rangesim-out/simulate/<scene name>)
+  bool json = false;                // --json: summary.json to stdout instead of the table
+  bool kernel_only = false;         // --kernel-only: bare C++ kernels, no SystemC elaboration
+  bool tick = false;                // --tick: evaluate every clock cycle (no event skipping; kernel only)
+  bool noise_free = false;          // --noise-free: all noise sources off
+  bool dense = false;               // --dense: simulate every pixel (no sparse window)
+  bool no_plots = false;            // --no-plots: skip range_map.png
+};
+
+// Returns the exit code; throws UserError (exit 2) for bad input, NotModelled (exit 3) for a
+// sensor without a clock-level model.
+int run_simulate(const SimulateOptions& opt);
+
+}  // namespace rangesim::app

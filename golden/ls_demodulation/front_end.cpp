@@ -1,0 +1,194 @@
+#include "golden/ls_demodulation/front_end.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/physics.h"
+
+namespace rangesim::golden {
+namespace {
+
+// 8-point Gauss-Legendre on [-1, 1]: exact for polynomials of degree 15; ln(c0 + c1 e^{-s/tau})
+// over L << tau is that smooth (its nearest singularity lies ~pi tau off the real axis, or just
+// beyond a clip point, where the floor takes over).
+constexpr double kGlX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+constexpr double kGlW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
+double frac(double x) { return x - std::floor(x); }
+
+// Adds int_{u0}^{u1} of ln(f/ref) and 1/f for f(s) = c0 + c1 e^{-s/tau} (f > 0 there).
+//  - 1/f in closed form: int ds / f = (tau / c0) (s / tau + ln f) (when c0 is not tiny against c1).
+//  - ln f: if f has a real zero s_z (c1 / c0 < 0), f = c0 (1 - e^{-x}), x = (s - s_z) / tau, and
+//    ln f = ln|c0| + ln|x| + ln h(x), h(x) = (1 - e^{-x}) / x > 0: the log singularity next to a
+//    clip point is integrated exactly (x ln|x| - x) and Gauss-Legendre sees only the smooth ln h.
+void gauss_legendre(double c0, double c1, double tau, double u0, double u1, double ref, LogIntegral& r) {
+  if (!(u1 > u0)) return;
+  auto f = [&](double s) { return c0 + c1 * std::exp(-s / tau); };
+  const double mid = 0.5 * (u0 + u1), half = 0.5 * (u1 - u0);
+  const bool zero = c0 != 0 && -c1 / c0 > 0;
+  const double sz = zero ? tau * std::log(-c1 / c0) : 0;
+  auto h = [](double x) { return x == 0 ? 1.0 : -std::expm1(-x) / x; };
+  double ln = 0, inv = 0;
+  for (int i = 0; i < 4; ++i)
+    for (double sgn : {-1.0, 1.0}) {
+      const double s = mid + sgn * half * kGlX[i];
+      ln += kGlW[i] * (zero ? std::log(std::fabs(c0) / ref) + std::log(h((s - sz) / tau)) : std::log(f(s) / ref));
+      inv += kGlW[i] / f(s);
+    }
+  r.ln_s += half * ln;
+  if (zero) {
+    auto F = [](double x) { return x == 0 ? 0.0 : x * std::log(std::fabs(x)) - x; };
+    r.ln_s += tau * (F((u1 - sz) / tau) - F((u0 - sz) / tau));
+  }
+  if (std::fabs(c0) > 1e-3 * std::fabs(c1))
+    r.inv_s_per_A += tau / c0 * ((u1 - u0) / tau + std::log(f(u1) / f(u0)));
+  else
+    r.inv_s_per_A += half * inv;
+}
+
+}  // namespace
+
+LogIntegral log_integral(double c0, double c1, double tau, double L, double floor_A, double ref) {
+  LogIntegral r;
+  const double f0 = c0 + c1, fL = c0 + c1 * std::exp(-L / tau);
+  const bool clip0 = f0 <= floor_A, clipL = fL <= floor_A;
+  auto clipped = [&](double len) {
+    r.ln_s += len * std::log(floor_A / ref);
+    r.clipped_s += len;
+  };
+  if (clip0 && clipL) {  // f is monotone: clipped throughout
+    clipped(L);
+  } else if (!clip0 && !clipL) {
+    gauss_legendre(c0, c1, tau, 0, L, ref, r);
+  } else {
+    // f crosses the floor once, at c0 + c1 e^{-s/tau} = floor.
+    const double s_star = std::clamp(-tau * std::log((floor_A - c0) / c1), 0.0, L);
+    if (clip0) {
+      clipped(s_star);
+      gauss_legendre(c0, c1, tau, s_star, L, ref, r);
+    } else {
+      gauss_legendre(c0, c1, tau, 0, s_star, ref, r);
+      clipped(L - s_star);
+    }
+  }
+  return r;
+}
+
+std::vector<Segment> period_segments(const LsDemodulationConfig& cfg, double dc_A,
+                                     const std::vector<SquareComponent>& comps) {
+  const double T0 = 1.0 / cfg.modulation.frequency_Hz;
+  const double ref0 = frac(cfg.modulation.reference_phase_rad / (2 * M_PI));
+  const double Dr = cfg.correlator.reference_duty_cycle;
+  // Edges as fractions of the period.
+  std::vector<double> e{0.0, ref0, frac(ref0 + Dr)};
+  for (const auto& c : comps)
+    for (int m = 0; m < c.harmonic; ++m) {
+      e.push_back(frac((m + c.delay_periods) / c.harmonic));
+      e.push_back(frac((m + c.delay_periods + c.duty) / c.harmonic));
+    }
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end(), [](double a, double b) { return b - a < 1e-12; }), e.end());
+  e.push_back(1.0);
+  std::vector<Segment> seg;
+  for (size_t i = 0; i + 1 < e.size(); ++i) {
+    const double len = e[i + 1] - e[i];
+    if (len < 1e-12) continue;
+    const double t = 0.5 * (e[i] + e[i + 1]);  // midpoint decides which levels are on
+    double I = dc_A;
+    for (const auto& c : comps)
+      if (frac(t * c.harmonic - c.delay_periods) < c.duty) I += c.amplitude_A;
+    seg.push_back({len * T0, I, frac(t - ref0) < Dr ? +1 : -1});
+  }
+  return seg;
+}
+
+std::vector<Segment> pixel_segments(const LsDemodulationConfig& cfg, double beam_A, double background_A) {
+  return period_segments(cfg, background_A + cfg.noise.dark_current_A,
+                         {SquareComponent{beam_A, 1, cfg.modulation.source_duty_cycle, 0.0}});
+}
+
+double lpf_periodic_start_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period) {
+  const double tau = cfg.suppression.lpf_time_constant_s;
+  double b = 0, T0 = 0;  // I_avg after one period from 0
+  for (const auto& s : period) {
+    b = s.photocurrent_A + (b - s.photocurrent_A) * std::exp(-s.duration_s / tau);
+    T0 += s.duration_s;
+  }
+  return b / -std::expm1(-T0 / tau);
+}
+
+namespace {
+
+CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods, double start_A,
+                     double past_mean_A, bool periodic) {
+  const auto& sup = cfg.suppression;
+  const auto& lg = cfg.log_converter;
+  const auto& co = cfg.correlator;
+  const double alpha = sup.mirror_gain, eps = sup.mirror_mismatch, tau = sup.lpf_time_constant_s;
+  const double gain_V = co.transconductance_S * lg.gain * lg.slope_V;  // g_m beta s
+  const size_t S = period.size(), n = S * static_cast<size_t>(std::max(periods, 0));
+  std::vector<double> k(n);  // noise kernel per segment, V / (A s) per A of i_mod
+  CorrelatorOutput out;
+  double Iavg = start_A, T = 0;
+  // In the periodic steady state every period repeats the first exactly: its log integrals are
+  // computed once and reused (aggregation of identical cycles, exact).
+  std::vector<LogIntegral> memo(S);
+  for (size_t j = 0; j < n; ++j) {
+    const Segment& s = period[j % S];
+    const double I = s.photocurrent_A, L = s.duration_s;
+    const double c0 = lg.offset_current_A + alpha * eps * I;  // I_off + I_mod as t -> infinity
+    const double c1 = -alpha * (Iavg - I);                    // the LPF's lag behind I_pd
+    if (!periodic || j < S) memo[j % S] = log_integral(c0, c1, tau, L, lg.leakage_current_A, lg.offset_current_A);
+    const LogIntegral& li = memo[j % S];
+    const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
+    (s.branch > 0 ? out.plus_V : out.minus_V) += gain_V / C * li.ln_s;
+    k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
+    out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(out.plus_V), std::fabs(out.minus_V)});
+    out.clipped_fraction += li.clipped_s;
+    Iavg = I + (Iavg - I) * std::exp(-L / tau);
+    T += L;
+  }
+  out.diff_V = out.plus_V - out.minus_V;
+  out.clipped_fraction = T > 0 ? out.clipped_fraction / T : 0;
+  out.lpf_end_A = Iavg;
+
+  // Shot noise, backwards: G(u) = int_u^T k(t) e^{-(t-u)/tau} dt / tau; on a segment [a, b]
+  // K(u) = alpha (1+eps) k - alpha G(u) = A + B e^{-(b-u)/tau}, A = alpha eps k, B = alpha (k - G(b)).
+  const double q = phys::kElementaryCharge_C;
+  double G = 0, var = 0;
+  for (size_t jj = n; jj-- > 0;) {
+    const Segment& s = period[jj % S];
+    const double L = s.duration_s, e1 = -std::expm1(-L / tau), e2 = -std::expm1(-2 * L / tau);
+    const double A = alpha * eps * k[jj], B = alpha * (k[jj] - G);
+    var += q * s.photocurrent_A * (A * A * L + 2 * A * B * tau * e1 + B * B * 0.5 * tau * e2);
+    G = k[jj] * e1 + G * (1 - e1);
+  }
+  // Before the window only the LPF path sees the noise: K(u) = -alpha G(0) e^{u/tau}, u < 0.
+  var += q * past_mean_A * alpha * alpha * G * G * 0.5 * tau;
+  out.shot_var_V2 = var;
+  return out;
+}
+
+double mean_current_A(const std::vector<Segment>& period) {
+  double q = 0, T = 0;
+  for (const auto& s : period) q += s.photocurrent_A * s.duration_s, T += s.duration_s;
+  return T > 0 ? q / T : 0;
+}
+
+}  // namespace
+
+CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods) {
+  return run(cfg, period, periods, lpf_periodic_start_A(cfg, period), mean_current_A(period), true);
+}
+
+CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
+                                double lpf_start_A) {
+  return run(cfg, period, periods, lpf_start_A, lpf_start_A, false);
+}
+
+double ktc_variance_V2(const LsDemodulationConfig& cfg) {
+  const double kT = phys::kBoltzmann_J_per_K * cfg.noise.temperature_K;
+  return kT / cfg.correlator.capacitance_plus_F + kT / cfg.correlator.capacitance_minus_F;
+}
+
+}  // namespace rangesim::golden

@@ -1,0 +1,116 @@
+#include "golden/tof_spad/point_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/physics.h"
+
+namespace rangesim::golden::spad {
+
+SpadModel::SpadModel(const TofSpadConfig& cfg)
+    : cfg_(cfg),
+      bins_(make_tdc_bins(cfg.tdc, 1.0 / cfg.laser.repetition_rate_Hz)),
+      cycles_(std::round(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz) *
+              cfg.evaluation.frames_averaged),
+      share_(tdc_share(cfg.tdc.columns_per_tdc, cfg.tdc.neighbour_rate_fraction)) {}
+
+std::vector<std::pair<std::string, std::string>> SpadModel::reasons() {
+  return {{"detectable", "range can be derived: enough signal counts, k sigma above the background in the window"},
+          {"too_few_signal_counts", "fewer expected signal counts in the peak window than evaluation.min_signal_counts"},
+          {"background_dominates", "window signal counts below k sqrt(background counts) (evaluation.detection_sigma)"},
+          {"pile_up_saturated", "the TDC is stopped before the echo in nearly every cycle (evaluation.min_armed_fraction)"},
+          {"out_of_tdc_range", "the echo falls outside the TDC's codes"}};
+}
+
+EstimatorConfig SpadModel::estimator() const {
+  return {cfg_.histogram.peak_window_bins, cfg_.histogram.coates_correction, cfg_.histogram.subtract_background};
+}
+
+PileUpInput SpadModel::pile_up_input(std::vector<double> r) const {
+  PileUpInput in;
+  in.photons_per_bin = std::move(r);
+  in.codes = bins_.codes;
+  in.share = share_;
+  const double block_event_s = std::max(cfg_.spad.dead_time_s, cfg_.tdc.busy_time_s);
+  in.block_event_bins = static_cast<int>(std::lround(block_event_s / bins_.lsb_s));
+  in.block_overflow_bins = static_cast<int>(std::lround(cfg_.spad.dead_time_s / bins_.lsb_s));
+  return in;
+}
+
+PileUpHistogram SpadModel::histogram(double signal_Hz, double background_Hz, double distance_m) const {
+  const Arrivals a = make_arrivals(cfg_, signal_Hz, background_Hz, distance_m);
+  return expected_histogram(pile_up_input(photons_per_bin(bins_, a)));
+}
+
+PointResult SpadModel::evaluate(double signal_Hz, double background_Hz, double distance_m) const {
+  return evaluate(signal_Hz, background_Hz, distance_m, estimator());
+}
+
+PointResult SpadModel::evaluate(double signal_Hz, double background_Hz, double distance_m,
+                                const EstimatorConfig& est) const {
+  PointResult p;
+  p.cycles = cycles_;
+  const Arrivals a = make_arrivals(cfg_, signal_Hz, background_Hz, distance_m);
+  const PileUpHistogram h = expected_histogram(pile_up_input(photons_per_bin(bins_, a)));
+  p.chain_converged = h.converged;
+  p.detections_per_cycle = h.our_events_per_cycle;
+  const int codes = bins_.codes;
+  const auto echo_it = std::upper_bound(bins_.edges_s.begin(), bins_.edges_s.end(), a.round_trip_s);
+  const int echo = static_cast<int>(std::distance(bins_.edges_s.begin(), echo_it)) - 1;
+  if (echo < 0 || echo >= codes) {
+    p.detect = "out_of_tdc_range";
+    return p;
+  }
+
+  // Peak: the largest expected (corrected) bin near the echo. Far from the echo only background
+  // competes, which the k-sigma criterion below keeps out of the way.
+  auto expected_y = [&](int i) {
+    const auto ui = static_cast<size_t>(i);
+    if (!est.coates) return h.event_prob[ui];
+    return h.armed_prob[ui] * cycles_ >= 1 ? -std::log1p(-h.hazard[ui]) : 0.0;
+  };
+  int peak = echo;
+  for (int i = std::max(0, echo - est.peak_window_bins); i <= std::min(codes - 1, echo + est.peak_window_bins); ++i)
+    if (expected_y(i) > expected_y(peak)) peak = i;
+  p.moments = estimator_moments(h, bins_, cycles_, peak, est);
+
+  // Window counts: background events = armed x background hazard (our share of it).
+  const Window w = p.moments.window;
+  const double s = share_;
+  double window_events = 0, window_background = 0;
+  for (int i = w.lo; i <= w.hi; ++i) {
+    const auto ui = static_cast<size_t>(i);
+    window_events += cycles_ * h.event_prob[ui];
+    window_background += cycles_ * h.armed_prob[ui] * -std::expm1(-s * a.live_fraction * a.uniform_rate_Hz * bins_.width_s(i)) / s;
+  }
+  p.signal_counts = std::max(0.0, window_events - window_background);
+  p.background_counts = window_background;
+  p.background_per_bin = window_background / (w.hi - w.lo + 1);
+  p.armed_at_echo = h.armed_prob[static_cast<size_t>(w.lo)];
+
+  const double half_c = phys::kSpeedOfLight_m_per_s / 2;
+  if (p.moments.defined) {
+    p.bias_m = half_c * (p.moments.mean_s - a.round_trip_s);
+    p.std_m = half_c * std::sqrt(p.moments.var_s2);
+    p.accuracy_m = std::hypot(p.bias_m, p.std_m);
+  }
+  const auto& e = cfg_.evaluation;
+  const double k_sigma_counts = e.detection_sigma * std::sqrt(p.background_counts);
+  if (p.armed_at_echo < e.min_armed_fraction)
+    p.detect = "pile_up_saturated";
+  else if (p.signal_counts < k_sigma_counts && k_sigma_counts >= e.min_signal_counts)
+    p.detect = "background_dominates";
+  else if (p.signal_counts < e.min_signal_counts || p.signal_counts < k_sigma_counts || !p.moments.defined)
+    p.detect = "too_few_signal_counts";
+  else
+    p.detect = "detectable";
+  return p;
+}
+
+double afterpulse_armed_fraction(const TofSpadConfig& cfg) {
+  const double block_s = std::max(cfg.spad.dead_time_s, cfg.tdc.busy_time_s);
+  return cfg.spad.afterpulse_probability *
+         std::exp(-(block_s - cfg.spad.dead_time_s) / cfg.spad.afterpulse_time_constant_s);
+}
+
+}  // namespace rangesim::golden::spad

@@ -1,0 +1,64 @@
+#pragma once
+// One operating point of the tof-spad golden model: signal and background count rates and a
+// target distance -> expected histogram -> detection verdict, bias and spread of the range.
+// Data flow: arrival_rates -> pile_up -> estimator -> (this) -> evaluate.cpp.
+#include <string>
+#include <vector>
+
+#include "core/tof_spad_config.h"
+#include "golden/tof_spad/arrival_rates.h"
+#include "golden/tof_spad/estimator.h"
+#include "golden/tof_spad/pile_up.h"
+#include "golden/tof_spad/tdc_bins.h"
+
+namespace rangesim::golden::spad {
+
+struct PointResult {
+  std::string detect;              // "detectable" or a reason id (SpadModel::reasons())
+  double bias_m = 0;               // E[L_hat] - L (TDC nonlinearity, truncation, pile-up, ratio bias)
+  double std_m = 0;                // sqrt(Var[L_hat])
+  double accuracy_m = 0;           // sqrt(bias^2 + std^2)
+  double signal_counts = 0;        // expected signal events of our pixel in the peak window
+  double background_counts = 0;    // expected background + dark events in the peak window
+  double detections_per_cycle = 0; // our pixel's recorded TDC events per laser cycle
+  double armed_at_echo = 0;        // fraction of cycles with the TDC still armed at the window start
+  double background_per_bin = 0;   // expected background events per bin at the echo (Thompson's b)
+  double cycles = 0;               // laser cycles in the histogram
+  EstimateMoments moments;
+  bool chain_converged = true;
+};
+
+class SpadModel {
+ public:
+  explicit SpadModel(const TofSpadConfig& cfg);
+
+  // With the preset's estimator (histogram.coates_correction, histogram.subtract_background).
+  PointResult evaluate(double signal_Hz, double background_Hz, double distance_m) const;
+  PointResult evaluate(double signal_Hz, double background_Hz, double distance_m, const EstimatorConfig& est) const;
+
+  // Expected per-cycle histogram of an operating point.
+  PileUpHistogram histogram(double signal_Hz, double background_Hz, double distance_m) const;
+  PileUpInput pile_up_input(std::vector<double> photons_per_bin) const;
+
+  const TofSpadConfig& config() const { return cfg_; }
+  const TdcBins& bins() const { return bins_; }
+  EstimatorConfig estimator() const;
+  double cycles() const { return cycles_; }  // integration_time x repetition rate x frames averaged
+  double share() const { return share_; }
+
+  // Reason ids with one-line descriptions, "detectable" first.
+  static std::vector<std::pair<std::string, std::string>> reasons();
+
+ private:
+  TofSpadConfig cfg_;
+  TdcBins bins_;
+  double cycles_ = 0;
+  double share_ = 1;
+};
+
+// Upper bound of the afterpulse events per recorded event that can reach an armed TDC: an
+// afterpulse comes dead_time + Exp(tau_ap) after the avalanche; the TDC group is blind for
+// max(dead, busy), so at most p_ap exp(-(block - dead) / tau_ap) of them land while it is armed.
+double afterpulse_armed_fraction(const TofSpadConfig& cfg);
+
+}  // namespace rangesim::golden::spad

@@ -1,0 +1,97 @@
+#include "scene/optics.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/user_error.h"
+#include "golden/pixel.h"
+#include "golden/spot.h"
+
+namespace rangesim::scene {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene) : config_(config), scene_(scene) {
+  const PixelConfig& px = config.pixel;
+  const double f = config.optics.focal_length_m;
+  const double lens_area = kPi * std::pow(f / (2 * scene.f_number), 2);
+  const double sigma_px = golden::spot_sigma_px(config.spot);
+  // rho (P / rows) A_lens / pi -> current at the spot peak -> swing; divided by z^2 later.
+  const double collected_z2 = scene.reflectance * (scene.beam_power_W / px.rows) * lens_area / kPi;
+  const double peak_current_z2 = scene.responsivity_A_per_W * scene.fill_factor * collected_z2 / (sigma_px * std::sqrt(2 * kPi));
+  signal_per_inv_z2_V_ = golden::voltage_from_current_V(peak_current_z2, px.integration_time_s, px.pd_capacitance_F);
+  const double bg_current = scene.responsivity_A_per_W * scene.fill_factor * px.pitch_m * px.pitch_m * scene.reflectance *
+                            scene.background_irradiance_W_per_m2 / (4 * scene.f_number * scene.f_number);
+  background_V_ = golden::voltage_from_current_V(bg_current, px.integration_time_s, px.pd_capacitance_F);
+  // The beam must actually sweep: every position must leave the projector in front (0 < a_p < pi)
+  // — always true for cot finite — and not run parallel to a tilted target.
+  for (int b = 0; b < beam_positions(); ++b) {
+    const double c = cot_beam(b);
+    if (!std::isfinite(c))
+      throw UserError(fmt::format("{}: beam.reference_distance_m = {:g} gives a degenerate beam angle at position {}",
+                                  scene.file, scene.reference_distance_m, b));
+  }
+}
+
+double SceneOptics::cot_beam(int b) const {
+  const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m, p = config_.pixel.pitch_m;
+  const double u = static_cast<double>(b) * columns() / beam_positions() + scene_.column_offset_px;
+  const double x_e = (u - principal_column_px()) * p;
+  return (f * d / scene_.reference_distance_m - x_e) / f;  // x_e = f d / l_ref - f cot(a_p)
+}
+
+double SceneOptics::beam_angle_rad(int b) const { return std::atan2(1.0, cot_beam(b)); }
+
+RowTruth SceneOptics::truth(int b, int row) const {
+  const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m, p = config_.pixel.pitch_m;
+  const double cot = cot_beam(b);
+  const double y_e = (row - principal_row_px()) * p;
+  double z = 0;
+  switch (scene_.shape) {
+    case TargetShape::Plane:
+      z = scene_.distance_m;
+      break;
+    case TargetShape::Tilted: {
+      // z = l0 + x tx + y ty with x = d/2 - z cot, y = z y_e / f.
+      const double tx = std::tan(scene_.tilt_x_rad), ty = std::tan(scene_.tilt_y_rad);
+      const double den = 1 + tx * cot - ty * y_e / f;
+      z = den > 0 ? (scene_.distance_m + 0.5 * d * tx) / den : -1;
+      break;
+    }
+    case TargetShape::Step:
+      z = scene_.near_distance_m * y_e / f > scene_.step_y_m ? scene_.near_distance_m : scene_.distance_m;
+      break;
+  }
+  RowTruth t;
+  t.background_V = background_V_;
+  if (!(z > 0) || !std::isfinite(z)) return t;  // the beam misses the target in front of the sensor
+  t.hit = true;
+  t.range_m = z;
+  const double x_e = f * d / z - f * cot;
+  t.centre_px = x_e / p + principal_column_px();
+  t.visible = t.centre_px >= 0 && t.centre_px <= columns() - 1;
+  t.signal_V = signal_per_inv_z2_V_ / (z * z);
+  return t;
+}
+
+void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) const {
+  const int b = beam_position(frame);
+  out.rows.resize(static_cast<std::size_t>(rows()));
+  for (int r = 0; r < rows(); ++r) {
+    const RowTruth t = truth(b, r);
+    systemc::RowIllumination& in = out.rows[static_cast<std::size_t>(r)];
+    in.background_V = t.background_V;
+    in.signal_V = t.hit ? t.signal_V : 0.0;
+    in.centre_px = t.hit ? t.centre_px : 0.0;
+  }
+}
+
+double SceneOptics::range_from_centre_m(int b, double centre_px) const {
+  const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m;
+  const double x_e = (centre_px - principal_column_px()) * config_.pixel.pitch_m;
+  return d * f / (x_e + f * cot_beam(b));
+}
+
+}  // namespace rangesim::scene

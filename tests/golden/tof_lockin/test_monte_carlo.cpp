@@ -1,0 +1,91 @@
+// Monte Carlo check of the closed-form mean and variance of L (lockin_point.h): 20000 frames of
+// the same model, drawn electron by electron (Poisson) with Gaussian kTC and read noise, the
+// truncating ADC of eq. 4.9, the ambient frame and eq. 2.25. Seeded, so the test is deterministic.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "golden/tof_lockin/lockin_point.h"
+#include "golden/tof_lockin/pulse_timing.h"
+#include "golden/tof_lockin/tap_charge.h"
+#include "lockin_test_util.h"
+
+namespace rangesim::golden {
+
+namespace {
+
+struct McResult {
+  double mean = 0, var = 0, se_mean = 0, se_var = 0;
+};
+
+McResult monte_carlo(const TofLockinConfig& cfg, double is, double ib, double L, int frames, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const FrameCharge c = frame_charge(cfg, is, ib, round_trip_delay_s(L));
+  const double lsb = adc_lsb_V(cfg), top = std::ldexp(1.0, cfg.readout.adc_bits) - 1;
+  const double K = max_range_m(cfg.source);
+  // One readout of tap k holding `mean_e` electrons on average: Poisson electrons, frozen kTC
+  // of the reset, read noise, truncating ADC.
+  const auto read = [&](int k, double mean_e) {
+    std::poisson_distribution<long long> pois(mean_e);
+    const double v = volts_per_electron(cfg, k) * static_cast<double>(pois(rng)) +
+                     cfg.pixel.source_follower_gain * cfg.pixel.offset_voltage_V + ktc_noise_V(cfg, k) * gauss(rng) +
+                     cfg.noise.read_noise_V * gauss(rng);
+    return std::clamp(std::floor(v / lsb), 0.0, top) * lsb;
+  };
+  double s1 = 0, s2 = 0, s4 = 0;
+  std::vector<double> ls(frames);
+  for (int f = 0; f < frames; ++f) {
+    double t[2];
+    for (int k = 0; k < 2; ++k) {
+      t[k] = read(k, c.total_e(k)) - cfg.readout.offset_calibration_V;
+      if (cfg.readout.ambient_subtraction) t[k] -= read(k, c.ambient_e());
+    }
+    ls[f] = K * t[1] / (t[0] + t[1]);
+    s1 += ls[f];
+  }
+  McResult r;
+  r.mean = s1 / frames;
+  for (double l : ls) s2 += (l - r.mean) * (l - r.mean), s4 += std::pow(l - r.mean, 4);
+  r.var = s2 / (frames - 1);
+  r.se_mean = std::sqrt(r.var / frames);
+  r.se_var = std::sqrt((s4 / frames - r.var * r.var) / frames);  // no normality assumed
+  return r;
+}
+
+void expect_matches(const TofLockinConfig& cfg, double is, double ib, double L, unsigned seed) {
+  const LockinPoint p = evaluate_point(cfg, is, ib, L, 1);
+  ASSERT_EQ(p.detect, LockinDetect::Detectable);
+  const McResult mc = monte_carlo(cfg, is, ib, L, 20000, seed);
+  EXPECT_NEAR(p.mean_m, mc.mean, 5 * mc.se_mean) << "bias " << p.bias_m << " snr " << p.snr;
+  EXPECT_NEAR(p.std_m * p.std_m, mc.var, 5 * mc.se_var) << "std " << p.std_m << " mc " << std::sqrt(mc.var);
+}
+
+}  // namespace
+
+TEST(LockinMonteCarlo, PresetMidSignalWithBackground) {
+  // 0.3 nA signal (0.15 V), 0.1 nA background (about 3100 e- per tap), 2 m: ambient frame on.
+  expect_matches(test::lockin_config(), 3e-10, 1e-10, 2.0, 12345u);
+}
+
+TEST(LockinMonteCarlo, PresetWeakSignalFarTarget) {
+  // 0.03 nA (15 mV, ~940 e-): SNR ~ 7, where the second-order terms of the delta method count.
+  expect_matches(test::lockin_config(), 3e-11, 1e-12, 9.0, 777u);
+}
+
+TEST(LockinMonteCarlo, NonIdealPixelWithoutAmbientFrame) {
+  // Deep electrons, leaky drain, no ambient frame and a mis-calibrated offset: the bias terms.
+  TofLockinConfig cfg = test::lockin_config();
+  cfg.pixel.charge_separation = 0.9;
+  cfg.pixel.drain_efficiency = 0.98;
+  cfg.readout.ambient_subtraction = false;
+  cfg.readout.offset_calibration_V = 0.015;
+  cfg.source.rise_time_s = 8e-9;
+  const LockinPoint p = evaluate_point(cfg, 2e-10, 2e-11, 5.0, 1);
+  EXPECT_GT(std::fabs(p.bias_m), 3 * p.std_m / std::sqrt(20000.0));  // the bias is resolved by the check
+  expect_matches(cfg, 2e-10, 2e-11, 5.0, 4242u);
+}
+
+}  // namespace rangesim::golden

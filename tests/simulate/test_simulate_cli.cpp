@@ -1,0 +1,118 @@
+// End-to-end: `simulate` through the driver binary that wires run_simulate() exactly as
+// app/main.cpp is to wire it (simulate_driver.cpp). Files, JSON keys, timing beside golden,
+// errors and exit codes, and a VCD waveform.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "run_command.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kDriver = SIMULATE_DRIVER_BIN;
+const std::string kScenes = RANGESIM_SCENE_DIR;
+
+CommandResult simulate(const std::string& args) {
+  return run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " + kDriver + " simulate ls-conventional " + args);
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
+  const std::string dir = make_temp_dir();
+  const CommandResult r = simulate("--scene " + kScenes + "/plane.toml --frames 40 --kernel-only --json --out " + dir + "/o");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"frame_time_s", "frame_rate_Hz", "cycles", "range_error_rms_m", "range_error_rms_px", "phases",
+                          "golden", "frame_cycles", "points_detected"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["cycles"].get<long long>(), 40 * 100);
+  EXPECT_NEAR(j["frame_rate_Hz"].get<double>(), 394.5e3, 1e-6);
+  EXPECT_TRUE(j["timing_matches_golden"].get<bool>());
+  EXPECT_EQ(j["phases"].size(), 5U);
+  EXPECT_GT(j["points_detected"].get<long long>(), 40 * 300);
+  EXPECT_LT(j["range_error_rms_px"].get<double>(), 0.3);
+  EXPECT_LT(j["range_error_rms_m"].get<double>(), 5e-3);
+  for (const char* f : {"range_map.csv", "points.csv", "frames.csv", "summary.json"}) EXPECT_TRUE(fs::exists(dir + "/o/" + f)) << f;
+  const std::string frames = slurp(dir + "/o/frames.csv");
+  EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 41);
+  EXPECT_NE(frames.find("\n0,0,100,100,4,4,8,72,12,"), std::string::npos) << frames.substr(0, 200);
+  fs::remove_all(dir);
+}
+
+TEST(SimulateCommand, SystemCEqualsKernelAndWritesTrace) {
+  const std::string dir = make_temp_dir();
+  const std::string scene = kScenes + "/step.toml";
+  const CommandResult k = simulate("--scene " + scene + " --frames 3 --kernel-only --json --no-plots --out " + dir + "/k");
+  const CommandResult s = simulate("--scene " + scene + " --frames 3 --json --no-plots --trace " + dir + "/w.vcd --out " + dir + "/s");
+  ASSERT_EQ(k.exit_code, 0) << k.err;
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto jk = nlohmann::json::parse(k.out), js = nlohmann::json::parse(s.out);
+  EXPECT_EQ(js["harness"], "systemc");
+  EXPECT_EQ(js["sc_errors"].get<long long>(), 0);
+  EXPECT_EQ(js["cycles"], jk["cycles"]);
+  EXPECT_EQ(js["range_error_rms_m"], jk["range_error_rms_m"]);
+  EXPECT_EQ(slurp(dir + "/k/points.csv"), slurp(dir + "/s/points.csv"));
+  EXPECT_NEAR(js["frame_time_s"].get<double>(), jk["frame_time_s"].get<double>(), 1e-7 * jk["frame_time_s"].get<double>());
+  const std::string vcd = slurp(dir + "/w.vcd");
+  EXPECT_NE(vcd.find("$enddefinitions"), std::string::npos);
+  EXPECT_NE(vcd.find("search_start"), std::string::npos);
+  for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().string().find(".partial"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(SimulateCommand, BadInputExitsTwoAndWritesNothing) {
+  const std::string dir = make_temp_dir();
+  struct Case {
+    std::string args, message;
+  };
+  const Case cases[] = {
+      {"--scene " + dir + "/missing.toml --kernel-only", "cannot read scene file"},
+      {"--scene " + kScenes + "/plane.toml --frames 0 --kernel-only", "--frames 0: allowed 1 <= N"},
+      {"--scene " + kScenes + "/plane.toml --kernel-only --trace " + dir + "/x.vcd", "--trace needs the SystemC model"},
+      {"--scene " + kScenes + "/plane.toml --trace " + dir + "/x.txt", "must end in .vcd"},
+      {"--scene " + kScenes + "/plane.toml --tick", "use it with --kernel-only"},
+  };
+  for (const Case& c : cases) {
+    const CommandResult r = simulate(c.args + " --out " + dir + "/o");
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/o")) << c.args;
+  }
+  std::ofstream(dir + "/bad.toml") << "[scene]\nname = \"b\"\n[target]\nshape = \"plane\"\ndistance_m = -1\n";
+  const CommandResult r = simulate("--scene " + dir + "/bad.toml --kernel-only --out " + dir + "/o");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.toml:5: target.distance_m = -1 is out of range; allowed: [0.01, 10000]"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/o"));
+  const CommandResult m = run_command(kDriver + " simulate tof-spad --scene " + kScenes + "/plane.toml --kernel-only");
+  EXPECT_EQ(m.exit_code, 3) << m.err;
+  fs::remove_all(dir);
+}
+
+TEST(SimulateCommand, TickingEqualsEventSkippingEndToEnd) {
+  const std::string dir = make_temp_dir();
+  const std::string base = "--scene " + kScenes + "/tilted.toml --frames 8 --kernel-only --no-plots --json";
+  const CommandResult a = simulate(base + " --out " + dir + "/a");
+  const CommandResult b = simulate(base + " --tick --out " + dir + "/b");
+  const CommandResult d = simulate(base + " --dense --out " + dir + "/d");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_EQ(slurp(dir + "/a/points.csv"), slurp(dir + "/b/points.csv"));
+  EXPECT_EQ(slurp(dir + "/a/frames.csv"), slurp(dir + "/b/frames.csv"));
+  EXPECT_EQ(slurp(dir + "/a/points.csv"), slurp(dir + "/d/points.csv"));
+  fs::remove_all(dir);
+}
