@@ -98,7 +98,8 @@ std::string sweep_script(const golden::EvalSweep& sw, const std::string& data) {
     return unit.empty() ? label : fmt::format("{} [{}]", label, unit);
   };
   std::string s = fmt::format(
-      "set title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\nset key outside bottom center horizontal\n"
+      "set termoption noenhanced\nset title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\n"
+      "set key outside bottom center horizontal\n"
       "set datafile missing 'NaN'\n{}{}plot ",
       sw.title, axis(sw.x_label, sw.x_unit), axis(sw.y_label, sw.y_unit), sw.log_x ? "set logscale x\n" : "",
       sw.log_y ? "set logscale y\n" : "");
