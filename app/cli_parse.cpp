@@ -55,6 +55,27 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)");
   fr->add_flag("--json", fr_opt.json, "Print JSON");
 
+  SimulateOptions& sim_opt = c.simulate;
+  auto* sim = app.add_subcommand(
+      "simulate",
+      "Clock-level model of the sensor (SystemC, or the bare cycle kernels) on a scene: range map with its\n"
+      "error against the scene's ground truth, per-frame cycle counts by phase and the frame rate measured\n"
+      "from simulated time beside the clock schedule. Writes range_map.csv/.png, points.csv, frames.csv and\n"
+      "summary.json into --out.");
+  sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file (clock-level model: ls-conventional)")
+      ->required();
+  sim->add_option("--scene", sim_opt.scene, "Scene file (TOML), e.g. scenes/plane.toml")->required();
+  sim->add_option("--frames", sim_opt.frames, "Frame accesses to simulate (default: one range map = timing.beam_positions)");
+  sim->add_option("--seed", sim_opt.seed, "Seed of the noise streams (default: 1)");
+  sim->add_option("--trace", sim_opt.trace, "Write a VCD waveform (SystemC run only) to this .vcd file");
+  sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)");
+  sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");
+  sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");
+  sim->add_flag("--tick", sim_opt.tick, "With --kernel-only: evaluate every clock cycle (no event skipping)");
+  sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
+  sim->add_flag("--dense", sim_opt.dense, "Simulate every pixel (no sparse window around the beam)");
+  sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");
+
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(
       "table",
@@ -79,7 +100,14 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
     result.exit_code = app.exit(e, out, err);
     return result;
   } catch (const CLI::ParseError& e) {
-    err << "rangesim: " << e.what() << "\nRun 'rangesim --help' or 'rangesim <command> --help'.\n";
+    // CLI11 2.1 says only "A subcommand is required" for an unknown first word: name it.
+    std::string what = e.what();
+    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty()) {
+      std::string known;
+      for (const auto* sub : app.get_subcommands({})) known += (known.empty() ? "" : ", ") + sub->get_name();
+      what = "unknown command '" + std::string(argv[1]) + "'; commands: " + known;
+    }
+    err << "rangesim: " << what << "\nRun 'rangesim --help' or 'rangesim <command> --help'.\n";
     result.finished = true;
     result.exit_code = kExitBadInput;
     return result;
@@ -90,6 +118,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   else if (*ev) c.kind = CommandKind::Evaluate;
   else if (*fr) c.kind = CommandKind::FrameRate;
   else if (*tb) c.kind = CommandKind::Table;
+  else if (*sim) c.kind = CommandKind::Simulate;
   return result;
 }
 

@@ -4,11 +4,12 @@
 // argv. Only CLI11 and the option structs of commands.h are needed here.
 #include <iosfwd>
 
+#include "app/cmd_simulate.h"
 #include "app/commands.h"
 
 namespace rangesim::app {
 
-enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table };
+enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate };
 
 // One parsed command line: which subcommand, and its options.
 struct ParsedCommand {
@@ -18,6 +19,7 @@ struct ParsedCommand {
   EvaluateOptions evaluate;
   FrameRateOptions frame_rate;
   TableOptions table;
+  SimulateOptions simulate;
 };
 
 struct CommandLine {

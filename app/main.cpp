@@ -6,6 +6,7 @@
 
 #include "app/cli_common.h"
 #include "app/cli_parse.h"
+#include "app/cmd_simulate.h"
 #include "app/commands.h"
 #include "core/user_error.h"
 
@@ -20,6 +21,7 @@ int run(const ParsedCommand& c) {
     case CommandKind::Evaluate: return run_evaluate(c.evaluate);
     case CommandKind::FrameRate: return run_frame_rate(c.frame_rate);
     case CommandKind::Table: return run_table(c.table);
+    case CommandKind::Simulate: return run_simulate(c.simulate);
     case CommandKind::None: break;
   }
   return kExitInternal;

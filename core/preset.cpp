@@ -171,6 +171,7 @@ ParamSet load_preset_text(const std::string& text, const std::string& path) {
       const ParamSpec* spec = schema.find(key);
       if (!spec) {
         std::string allowed;
+        if (section == "sensor") allowed = "sensor.id";
         for (const auto& p : schema.params)
           if (p.key.rfind(section + ".", 0) == 0) allowed += (allowed.empty() ? "" : ", ") + p.key;
         throw UserError(fmt::format("{}: unknown key '{}' for sensor {}; allowed in [{}]: {}", where_of(path, entry),

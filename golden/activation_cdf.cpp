@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace rangesim::golden {
 namespace {
@@ -19,6 +18,10 @@ double Phi(double z) { return 0.5 * std::erfc(-z * M_SQRT1_2); }
 
 ActivationProbability activation_probability(double mu, double t, double s) {
   if (s < 0) s = 0;
+  // A threshold beyond any electron count (e.g. theta / A_sf overflowing for a tiny gain) is
+  // never or always reached; keep the arithmetic below finite.
+  if (t == INFINITY) return {0, 1};
+  if (t == -INFINITY) return {1, 0};
   const double cut = kZCut * s;
   if (mu <= 0) {  // no electrons: only the static noise can reach the threshold
     if (s == 0) return t <= 0 ? ActivationProbability{1, 0} : ActivationProbability{0, 1};
@@ -35,44 +38,38 @@ ActivationProbability activation_probability(double mu, double t, double s) {
   const double nhi = std::ceil(mu + 13 * sd + 20);
   const double mode = std::min(std::max(std::floor(mu), nlo), nhi);
 
-  // Poisson pmf over the window by recurrence from the mode (started in log space), cut where it
-  // falls below 1e-25 of the mode (monotone away from the mode, so the rest is smaller still).
-  thread_local std::vector<double> pmf;
-  const long lo_i = static_cast<long>(nlo), hi_i = static_cast<long>(nhi), mode_i = static_cast<long>(mode);
-  pmf.assign(static_cast<size_t>(hi_i - lo_i + 1), 0.0);
-  const double pmf_mode = std::exp(mode * std::log(mu) - mu - std::lgamma(mode + 1));
-  long first = mode_i, last = mode_i;
-  pmf[mode_i - lo_i] = pmf_mode;
-  for (long n = mode_i; n < hi_i; ++n) {
-    const double next = pmf[n - lo_i] * mu / (n + 1);
-    if (next < 1e-25 * pmf_mode) break;
-    pmf[n + 1 - lo_i] = next;
-    last = n + 1;
-  }
-  for (long n = mode_i; n > lo_i; --n) {
-    const double prev = pmf[n - lo_i] * n / mu;
-    if (prev < 1e-25 * pmf_mode) break;
-    pmf[n - 1 - lo_i] = prev;
-    first = n - 1;
-  }
-
+  // Poisson pmf by recurrence outwards from the mode (started in log space), summed on the fly
+  // (no storage: the window is ~26 sqrt(mu) wide), cut where it falls below 1e-25 of the mode
+  // (monotone away from the mode, so the rest is smaller still). Each term goes to p or q by
+  // its noise-free side of the threshold, or is split by Phi inside the band |z| < 9.
   double p = 0, q = 0;
-  if (s == 0) {
-    for (long n = first; n <= last; ++n) (n >= t ? p : q) += pmf[n - lo_i];
-  } else {
-    // Tails where Phi is 0 or 1 to 1e-19, then the band |z| < 9 where it is evaluated.
-    const long band_lo = std::max(first, static_cast<long>(std::floor(t - cut)) + 1);
-    const long band_hi = std::min(last, static_cast<long>(std::ceil(t + cut)) - 1);
-    for (long n = first; n <= last && n < band_lo; ++n) q += pmf[n - lo_i];
-    for (long n = std::max(first, band_hi + 1); n <= last; ++n) p += pmf[n - lo_i];
-    if (band_lo <= band_hi) {
-      for (long n = band_lo; n <= band_hi; ++n) {
-        const double z = (n - t) / s;
-        const double small = Phi(-std::fabs(z));  // one erfc per term, for the smaller tail
-        p += pmf[n - lo_i] * (z < 0 ? small : 1 - small);
-        q += pmf[n - lo_i] * (z < 0 ? 1 - small : small);
-      }
+  auto add = [&](double n, double w) {
+    if (s == 0) {
+      (n >= t ? p : q) += w;
+      return;
     }
+    if (n <= t - cut) {
+      q += w;
+    } else if (n >= t + cut) {
+      p += w;
+    } else {
+      const double z = (n - t) / s;
+      const double small = Phi(-std::fabs(z));  // one erfc per term, for the smaller tail
+      p += w * (z < 0 ? small : 1 - small);
+      q += w * (z < 0 ? 1 - small : small);
+    }
+  };
+  const double pmf_mode = std::exp(mode * std::log(mu) - mu - std::lgamma(mode + 1));
+  add(mode, pmf_mode);
+  for (double n = mode, cur = pmf_mode; n < nhi; ++n) {
+    cur *= mu / (n + 1);
+    if (cur < 1e-25 * pmf_mode) break;
+    add(n + 1, cur);
+  }
+  for (double n = mode, cur = pmf_mode; n > nlo; --n) {
+    cur *= n / mu;
+    if (cur < 1e-25 * pmf_mode) break;
+    add(n - 1, cur);
   }
   // The window holds all but < 1e-25 of the mass; renormalise away the rounding of the start.
   const double tot = p + q;

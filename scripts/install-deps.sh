@@ -8,6 +8,7 @@ packages=(
   libsystemc-dev verilator iverilog
   libgtest-dev libfmt-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libpcg-cpp-dev
   gnuplot-nox
+  librapidcheck-dev clang libclang-rt-14-dev
 )
 
 missing=()

@@ -45,7 +45,15 @@ bool PixelArrayKernel::control(bool pix_reset, std::uint64_t frame, int sampling
   return false;
 }
 
-double PixelArrayKernel::cut_swing_V(double threshold_V) const {
+double PixelArrayKernel::cut_swing_V(double threshold_V) {
+  // Rows usually share their threshold (same background): one-entry memo.
+  if (threshold_V == memo_threshold_V_) return memo_cut_V_;
+  memo_threshold_V_ = threshold_V;
+  memo_cut_V_ = compute_cut_swing_V(threshold_V);
+  return memo_cut_V_;
+}
+
+double PixelArrayKernel::compute_cut_swing_V(double threshold_V) const {
   // Smallest mean swing at t_N for which a pixel is simulated. Below it, P(activated) < 1e-16 by
   // a closed-form bound (cheap, so it can be evaluated per row and frame):
   //   P(n + R >= theta) <= P(n >= mu + a) + P(R >= theta - mu - a)
@@ -114,6 +122,8 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
         p.read_V = options_.noise.read ? read * read_V_ : 0.0;
         p.mean_step_e = golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, 1.0) *
                         electrons_per_V_ / N;
+        // Every sampling interval has the same mean: one sampler per pixel and frame.
+        p.shot = std::poisson_distribution<long long>(p.mean_step_e > 0 ? p.mean_step_e : 1.0);
       } else {
         p.offset_V = p.read_V = p.mean_step_e = 0;
       }
@@ -144,7 +154,7 @@ void PixelArrayKernel::sample(int k) {
       } else {
         double v;
         if (options_.noise.shot) {
-          p.electrons += poisson_count(p.rng, p.mean_step_e);
+          p.electrons += p.mean_step_e > 0 ? static_cast<double>(p.shot(p.rng)) : 0.0;
           v = p.electrons / electrons_per_V_;
         } else {
           v = golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, t_over_T);

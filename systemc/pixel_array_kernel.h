@@ -23,6 +23,7 @@
 // activated) < 1e-16 per pixel and frame. Dense mode simulates
 // every pixel; tests require identical outputs.
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include <pcg_random.hpp>
@@ -78,6 +79,7 @@ class PixelArrayKernel {
     pcg32 rng;              // this pixel's stream in this frame access
     double electrons = 0;   // integrated electrons up to the last sampling (shot noise on)
     double mean_step_e = 0; // mean electrons per sampling interval, mu(T) / N
+    std::poisson_distribution<long long> shot;  // Poisson sampler of that mean (libstdc++)
     double offset_V = 0;    // kTC reset noise on the photodiode
     double read_V = 0;      // read noise at the comparator input (input-referred)
     double profile = 0;     // g(i - x0)
@@ -88,7 +90,8 @@ class PixelArrayKernel {
     std::vector<Pixel> pixels;  // window pixels (index i - first)
   };
 
-  double cut_swing_V(double threshold_V) const;  // smallest mean swing at t_N worth simulating
+  double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
+  double compute_cut_swing_V(double threshold_V) const;
 
   LsConventionalConfig config_;      // sensor
   PixelArrayOptions options_;        // noise, seed, sparse
@@ -103,6 +106,7 @@ class PixelArrayKernel {
   double electrons_per_V_ = 0;       // C / q
   double ktc_V_ = 0, read_V_ = 0;    // noise rms
   long long pixels_simulated_ = 0;   // statistics
+  double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 
 }  // namespace rangesim::systemc

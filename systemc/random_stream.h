@@ -12,8 +12,8 @@
 //   1. kTC reset noise (normal), at the pixel reset;
 //   2. read noise (normal), once per frame access;
 //   3. per sampling k = 1..N, the Poisson count of photo-/dark electrons integrated in (t_{k-1}, t_k].
-// A switched-off noise source still consumes its draw, so switching one source does not move the
-// bits of the others.
+// A switched-off kTC or read noise still consumes its draw, so switching one source does not move
+// the bits of the others (the Poisson counts come last).
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -54,14 +54,7 @@ inline double standard_normal(pcg32& rng) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
 }
 
-// Poisson count of mean `mean` (>= 0). libstdc++'s sampler: deterministic for a given toolchain.
-inline double poisson_count(pcg32& rng, double mean) {
-  if (!(mean > 0)) {
-    (void)rng();  // keep the draw count independent of the mean
-    return 0;
-  }
-  std::poisson_distribution<long long> d(mean);
-  return static_cast<double>(d(rng));
-}
+// Poisson counts: std::poisson_distribution<long long> (libstdc++'s sampler, deterministic for a
+// given toolchain) drawing from the pixel's stream; the pixel array keeps one per pixel and frame.
 
 }  // namespace rangesim::systemc

@@ -9,9 +9,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <ostream>
 
 #include "golden/activation_cdf.h"
+#include "golden/detect.h"
 #include "golden/ls_conventional_eval.h"
 #include "golden/pixel.h"
 #include "stress_gen.h"
@@ -99,6 +101,32 @@ TEST(ActivationStress, TinyMeansDoNotUnderflowIntoNaN) {
     EXPECT_EQ(r.p, 0.0);
     EXPECT_EQ(r.q, 1.0);
   }
+}
+
+// FINDING (golden/activation_cdf.cpp, reported, not fixed here): a legal preset can make the
+// threshold in electrons overflow to +inf: theta / A_sf x C / q with source_follower_gain = 1e-300
+// (schema: (0, 10]), threshold_above_background_V = 10 and pd_capacitance_F = 1e-9 gives
+// 10 / 1e-300 x 6.2e9 = inf. activation_probability(mu, inf, s > 0) then skips its Chernoff exit
+// (inf - inf = NaN compares false) and casts floor(inf) to long (undefined behaviour) and
+// computes LONG_MIN - 1 (signed overflow). A release build happens to return p = 0; the
+// sanitizer build (scripts/sanitize.sh) stops here. Reached from `rangesim evaluate` through
+// signal_dynamic_range -> row_false_activation_probability. Fix: return {0, 1} for t = +inf and
+// {1, 0} for t = -inf at the top, and clamp the band edges in double before casting to long.
+TEST(ActivationStress, InfiniteThresholdIsNeverAndDefined) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double s : {0.0, 5.0}) {
+    const ActivationProbability r = activation_probability(10.0, inf, s);
+    EXPECT_EQ(r.p, 0.0);
+    EXPECT_EQ(r.q, 1.0);
+    const ActivationProbability n = activation_probability(10.0, -inf, s);
+    EXPECT_EQ(n.p, 1.0);
+    EXPECT_EQ(n.q, 0.0);
+  }
+  LsConventionalConfig cfg;
+  cfg.pixel.source_follower_gain = 1e-300;
+  cfg.pixel.pd_capacitance_F = 1e-9;
+  cfg.comparator.threshold_above_background_V = 10.0;
+  EXPECT_EQ(row_false_activation_probability(cfg, 0.01), 0.0);
 }
 
 // The largest legal counts: the Poisson + Gaussian sum is then Gaussian to ~1/(6 sqrt(mu)) =
