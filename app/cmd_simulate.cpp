@@ -79,9 +79,9 @@ std::string render_range_map(OutputDir& out, const std::vector<std::vector<doubl
 int run_simulate(const SimulateOptions& opt) {
   const auto t_start = Clock::now();
   ParamSet params = load_modelled_preset(opt.sensor, "simulate");
-  if (params.sensor_id() != "ls-conventional")
-    throw NotModelled{fmt::format("rangesim simulate: sensor '{}' has no clock-level model yet; modelled: ls-conventional",
-                                  params.sensor_id())};
+  if (params.sensor_id() == "ls-demodulation") return run_simulate_ls_demodulation(opt, params);
+  if (params.sensor_id() == "tof-lockin") return run_simulate_tof_lockin(opt, params);
+  if (params.sensor_id() == "tof-spad") return run_simulate_tof_spad(opt, params);
   const LsConventionalConfig cfg = ls_conventional_from_params(params);
   if (cfg.comparator.adc_bits != 1)
     throw UserError(fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",

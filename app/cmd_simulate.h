@@ -28,3 +28,17 @@ struct SimulateOptions {
 int run_simulate(const SimulateOptions& opt);
 
 }  // namespace rangesim::app
+
+namespace rangesim {
+class ParamSet;
+}
+
+namespace rangesim::app {
+
+// Per-sensor clock-level simulations (app/simulate/simulate_<sensor>.cpp); `params` is the
+// validated preset with the command-line overrides applied.
+int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& params);
+int run_simulate_tof_lockin(const SimulateOptions& opt, const ParamSet& params);
+int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params);
+
+}  // namespace rangesim::app

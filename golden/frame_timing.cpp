@@ -22,6 +22,8 @@ FrameTiming frame_timing(const FrameTimingConfig& timing, int samplings) {
   t.frame_access_rate_Hz = timing.clock_Hz / t.frame_cycles;
   t.range_map_time_s = t.frame_time_s * timing.beam_positions;
   t.range_maps_per_s = t.frame_access_rate_Hz / timing.beam_positions;
+  t.clock_Hz = timing.clock_Hz;
+  t.frames_per_range_map = timing.beam_positions;
   return t;
 }
 

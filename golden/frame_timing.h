@@ -20,6 +20,9 @@ struct TimingPhase {
   double time_s;        // cycles / clock
 };
 
+// Also the frame timing of the other sensors (golden/<sensor>/frame_timing.h): there a "frame"
+// is one sensor frame (accumulation + readout) and a "range map" the frames that make one
+// range image (e.g. signal + ambient frame).
 struct FrameTiming {
   std::vector<TimingPhase> phases;  // in schedule order, summed over samplings
   long long frame_cycles = 0;       // cycles of one frame access
@@ -28,6 +31,8 @@ struct FrameTiming {
   double range_map_time_s = 0;      // beam_positions frame accesses
   double range_maps_per_s = 0;
   int samplings = 0;
+  double clock_Hz = 0;              // clock the cycles count
+  long long frames_per_range_map = 0;  // ls-conventional: beam positions
 };
 
 FrameTiming frame_timing(const FrameTimingConfig& timing, int samplings);
