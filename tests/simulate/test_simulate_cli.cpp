@@ -1,5 +1,4 @@
-// End-to-end: `simulate` through the driver binary that wires run_simulate() exactly as
-// app/main.cpp is to wire it (simulate_driver.cpp). Files, JSON keys, timing beside golden,
+// End-to-end: `simulate` through the rangesim binary. Files, JSON keys, timing beside golden,
 // errors and exit codes, and a VCD waveform.
 #include <gtest/gtest.h>
 
