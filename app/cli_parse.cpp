@@ -62,9 +62,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "error against the scene's ground truth, per-frame cycle counts by phase and the frame rate measured\n"
       "from simulated time beside the clock schedule. Writes range_map.csv/.png, points.csv, frames.csv and\n"
       "summary.json into --out.");
-  sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file (clock-level model: ls-conventional)")
+  sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")
       ->required();
-  sim->add_option("--scene", sim_opt.scene, "Scene file (TOML), e.g. scenes/plane.toml")->required();
+  sim->add_option("--scene", sim_opt.scene, "Scene file (TOML) for the sensor: scenes/plane.toml (ls-conventional), scenes/<sensor>-plane.toml")->required();
   sim->add_option("--frames", sim_opt.frames, "Frame accesses to simulate (default: one range map = timing.beam_positions)");
   sim->add_option("--seed", sim_opt.seed, "Seed of the noise streams (default: 1)");
   sim->add_option("--trace", sim_opt.trace, "Write a VCD waveform (SystemC run only) to this .vcd file");

@@ -46,11 +46,14 @@ int run_frame_rate(const FrameRateOptions& opt) {
   }
   const bool ls = params.sensor_id().rfind("ls-", 0) == 0;
   fmt::print("{}: {}{} at {:g} MHz\n\n", params.sensor_id(), ls ? "frame access" : "frame",
-             t.samplings > 0 ? fmt::format(" with {} sampling{}", t.samplings, t.samplings == 1 ? "" : "s") : "",
+             ls && t.samplings > 0 ? fmt::format(" with {} sampling{}", t.samplings, t.samplings == 1 ? "" : "s") : "",
              t.clock_Hz / 1e6);
-  fmt::print("  {:<16} {:>10} {:>14}\n", "phase", "cycles", "time");
-  for (const auto& p : t.phases) fmt::print("  {:<16} {:>10} {:>11.2f} ns\n", p.name, p.cycles, p.time_s * 1e9);
-  fmt::print("  {:<16} {:>10} {:>11.2f} ns\n\n", ls ? "frame access" : "frame", t.frame_cycles, t.frame_time_s * 1e9);
+  // Times in the unit that suits the frame: ns for ls-conventional's 2.5 us, s for a SPAD frame.
+  const double scale = t.frame_time_s < 1e-5 ? 1e9 : t.frame_time_s < 1e-2 ? 1e6 : t.frame_time_s < 10 ? 1e3 : 1;
+  const char* unit = scale == 1e9 ? "ns" : scale == 1e6 ? "us" : scale == 1e3 ? "ms" : "s";
+  fmt::print("  {:<18} {:>14} {:>14}\n", "phase", "cycles", "time");
+  for (const auto& p : t.phases) fmt::print("  {:<18} {:>14} {:>11.3f} {}\n", p.name, p.cycles, p.time_s * scale, unit);
+  fmt::print("  {:<18} {:>14} {:>11.3f} {}\n\n", ls ? "frame access" : "frame", t.frame_cycles, t.frame_time_s * scale, unit);
   fmt::print("  {:<18} {:>14.3f} Hz\n", ls ? "frame access rate" : "frame rate", t.frame_access_rate_Hz);
   fmt::print("  {:<18} {:>14.6f} s  ({} frame{} per range map)\n", "range map", t.range_map_time_s,
              t.frames_per_range_map, t.frames_per_range_map == 1 ? "" : "s");

@@ -25,9 +25,9 @@ namespace rangesim {
 const std::vector<SensorInfo>& sensors() {
   static const std::vector<SensorInfo> list = {
       {"ls-conventional", "light-section, row-parallel search, multi-sampling", "[31]", true, true},
-      {"ls-demodulation", "light-section, demodulation, background suppression", "[27]", true, false},
-      {"tof-lockin", "pulsed lock-in time-of-flight, two-tap photogate", "[12]", true, false},
-      {"tof-spad", "direct time-of-flight, SPADs with column TDCs", "[11]", true, false},
+      {"ls-demodulation", "light-section, demodulation, background suppression", "[27]", true, true},
+      {"tof-lockin", "pulsed lock-in time-of-flight, two-tap photogate", "[12]", true, true},
+      {"tof-spad", "direct time-of-flight, SPADs with column TDCs", "[11]", true, true},
   };
   return list;
 }

@@ -1,15 +1,331 @@
-// Placeholder until the clock-level model of ls-demodulation lands.
+// rangesim simulate for ls-demodulation: runs the clock-level model (bare kernels or SystemC,
+// systemc/ls_demodulation/) on a light-section scene with a modulated sheet beam over a strong
+// background, reconstructs the range map by triangulation, compares it with the scene's exact
+// ground truth and reports the measured frame timing beside golden::frame_timing_ls_demodulation.
+// Scene format: docs/ls-demodulation-clock.md ("Scenes"); output files as for ls-conventional.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <toml++/toml.h>
 
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
+#include "app/output_dir.h"
+#include "core/ls_demodulation_config.h"
 #include "core/params.h"
+#include "core/user_error.h"
+#include "golden/evaluate_sensor.h"
+#include "golden/frame_timing.h"
+#include "systemc/ls_demodulation/demod_sensor.h"
 
 namespace rangesim::app {
 
-int run_simulate_ls_demodulation(const SimulateOptions&, const ParamSet& params) {
-  throw NotModelled{fmt::format("rangesim simulate: sensor '{}' has no clock-level model yet; modelled: ls-conventional",
-                                params.sensor_id())};
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A light-section scene for ls-demodulation: a plane (optionally tilted row by row), a sheet beam
+// stepping across the columns, a beam-on photocurrent at the spot peak and a uniform background.
+struct DemodScene {
+  std::string file;                // path as given
+  std::string name;                // [scene].name
+  std::string description;         // [scene].description
+  double distance_m = 1.0;         // [target].distance_m: range of row 0
+  double tilt_m_per_row = 0.0;     // [target].tilt_m_per_row: range change per row
+  double signal_A = 1.11e-10;      // [beam].signal_A: beam-on photocurrent at the spot peak
+  double first_column_px = 5.0;    // [beam].first_column_px: spot column of frame 0 at the preset's optics.distance_m
+  double columns_per_frame = 1.0;  // [beam].columns_per_frame: beam step per frame, in pixels
+  double background_A = 1e-7;      // [background].photocurrent_A: per pixel
+};
+
+double read_key(const std::string& file, const toml::table& root, const std::string& table, const std::string& key,
+                double def, double lo, double hi, bool required) {
+  const std::string where = fmt::format("{}: [{}].{}", file, table, key);
+  const toml::node* n = root.at_path(table + "." + key).node();
+  if (!n) {
+    if (required) throw UserError(fmt::format("{} is missing; allowed {:g} <= value <= {:g}", where, lo, hi));
+    return def;
+  }
+  const auto v = n->value<double>();
+  if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
+    throw UserError(fmt::format("{} must be a number with {:g} <= value <= {:g}", where, lo, hi));
+  return *v;
+}
+
+DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg) {
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw UserError(fmt::format("{}: not a readable TOML scene: {}", path, e.description()));
+  }
+  DemodScene s;
+  s.file = path;
+  const auto name = root.at_path("scene.name").value<std::string>();
+  if (!name || name->empty() || name->find_first_of("/\\") != std::string::npos)
+    throw UserError(fmt::format("{}: [scene].name is missing or not a plain name (a string without '/')", path));
+  s.name = *name;
+  s.description = root.at_path("scene.description").value_or(std::string{});
+  const auto shape = root.at_path("target.shape").value_or(std::string("plane"));
+  if (shape != "plane") throw UserError(fmt::format("{}: [target].shape = \"{}\": allowed \"plane\"", path, shape));
+  s.distance_m = read_key(path, root, "target", "distance_m", 1.0, 0.05, 100.0, true);
+  s.tilt_m_per_row = read_key(path, root, "target", "tilt_m_per_row", 0.0, -0.01, 0.01, false);
+  s.signal_A = read_key(path, root, "beam", "signal_A", 0, 0.0, 1e-6, true);
+  s.first_column_px = read_key(path, root, "beam", "first_column_px", 0.0, -1000.0, cfg.pixel.columns - 1.0, false);
+  s.columns_per_frame = read_key(path, root, "beam", "columns_per_frame", 1.0, -10.0, 10.0, false);
+  s.background_A = read_key(path, root, "background", "photocurrent_A", 0, 0.0, 1e-5, true);
+  const double z_last = s.distance_m + s.tilt_m_per_row * (cfg.pixel.rows - 1);
+  if (z_last < 0.05)
+    throw UserError(fmt::format("{}: [target].tilt_m_per_row = {:g} puts the last row at {:g} m; allowed: every row >= 0.05 m",
+                                path, s.tilt_m_per_row, z_last));
+  return s;
+}
+
+// Triangulation of the light-section geometry (thesis eq. 1.1): a target at range z images the
+// sheet beam at disparity d(z) = f B / (p z) pixels; beam position b is aimed so that a target at
+// the preset's optics.distance_m images at column x_b = first + b step.
+struct DemodOptics {
+  const LsDemodulationConfig& cfg;
+  const DemodScene& sc;
+  double disparity_px(double z) const { return cfg.optics.focal_length_m * cfg.optics.baseline_m / (cfg.pixel.pitch_m * z); }
+  double beam_column(long long b) const { return sc.first_column_px + sc.columns_per_frame * static_cast<double>(b); }
+  double range_m(int row) const { return sc.distance_m + sc.tilt_m_per_row * row; }
+  double centre_px(long long b, int row) const {
+    return beam_column(b) + disparity_px(range_m(row)) - disparity_px(cfg.optics.distance_m);
+  }
+  bool visible(long long b, int row) const {
+    const double x = centre_px(b, row);
+    return x >= 0 && x <= cfg.pixel.columns - 1;
+  }
+  double range_from_centre_m(long long b, double x) const {
+    const double d = x - beam_column(b) + disparity_px(cfg.optics.distance_m);
+    return d > 0 ? cfg.optics.focal_length_m * cfg.optics.baseline_m / (cfg.pixel.pitch_m * d) : NAN;
+  }
+  void stimulus(std::uint64_t f, systemc::DemodStimulus& s) const {
+    const int R = cfg.pixel.rows, C = cfg.pixel.columns;
+    const double sigma = cfg.spot.fwhm_px * cfg.spot.sigma_per_fwhm;
+    s.beam_A.assign(static_cast<std::size_t>(R) * C, 0.0);
+    s.background_A.assign(s.beam_A.size(), sc.background_A);
+    for (int r = 0; r < R; ++r) {
+      const double x0 = centre_px(static_cast<long long>(f), r);
+      for (int c = 0; c < C; ++c)
+        s.beam_A[static_cast<std::size_t>(r) * C + c] = sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
+    }
+  }
+};
+
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
+nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string render(OutputDir& out, const std::vector<std::vector<double>>& map, const std::string& title) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+    return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh installs gnuplot-nox)";
+  const std::string data = out.scratch("range_map.dat");
+  {
+    std::ofstream d(data);
+    for (const auto& row : map) {
+      for (std::size_t b = 0; b < row.size(); ++b) d << (b ? " " : "") << (std::isfinite(row[b]) ? fmt::format("{:.6g}", row[b]) : "NaN");
+      d << "\n";
+    }
+  }
+  const std::string png = out.staged("range_map.png"), gp = out.scratch("range_map.gp");
+  std::ofstream(gp) << fmt::format(
+      "set terminal pngcairo size 900,800 font 'Sans,11'\nset output '{}'\nset title '{}'\n"
+      "set xlabel 'beam position (frame)'\nset ylabel 'row'\nset cblabel 'range [m]'\n"
+      "set palette rgbformulae 22,13,-31\nset datafile missing 'NaN'\nset autoscale xfix\nset autoscale yfix\n"
+      "set tics out\nplot '{}' matrix with image notitle\n",
+      png, title, data);
+  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0) {
+    std::remove(png.c_str());
+    return "gnuplot failed: range_map.png skipped";
+  }
+  return "";
+}
+
+}  // namespace
+
+int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& params) {
+  const auto t_start = Clock::now();
+  const LsDemodulationConfig cfg = ls_demodulation_from_params(params);
+  if (cfg.comparator.adc_bits != 1)
+    throw UserError(fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
+                                params.origin(), cfg.comparator.adc_bits));
+  if (opt.scene.empty()) throw UserError("--scene is required: a scene file, e.g. scenes/ls-demodulation-plane.toml");
+  if (!opt.trace.empty())
+    throw UserError("--trace: ls-demodulation has no waveform output yet; drop --trace");
+  const golden::FrameTiming gt = golden::frame_timing_ls_demodulation(params);
+  const long long frames = opt.frames ? *opt.frames : gt.frames_per_range_map;
+  if (frames < 1 || frames > 100000)
+    throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 100000 (frames; a range map is {})", frames,
+                                gt.frames_per_range_map));
+  const DemodScene sc = load_demod_scene(opt.scene, cfg);
+  const DemodOptics optics{cfg, sc};
+  OutputDir out(opt.out.empty() ? "rangesim-out/simulate/" + sc.name : opt.out, "--out");
+
+  systemc::DemodKernelOptions kopt;
+  kopt.event_skipping = !opt.tick;
+  kopt.seed = opt.seed;
+  if (opt.noise_free) kopt.noise = systemc::DemodNoiseSwitches::none();
+  const systemc::DemodStimulusSource source = [&optics](std::uint64_t f, systemc::DemodStimulus& s) { optics.stimulus(f, s); };
+  systemc::DemodRunResult res;
+  try {
+    res = opt.kernel_only ? systemc::run_demod_kernel(cfg, kopt, source, frames)
+                          : systemc::run_demod_systemc(cfg, kopt, source, frames);
+  } catch (const std::invalid_argument& e) {
+    throw UserError(fmt::format("{}: {}", params.origin(), e.what()));
+  }
+  if (res.sc_errors > 0) throw std::runtime_error(fmt::format("the model reported {} SystemC error(s)", res.sc_errors));
+  if (static_cast<long long>(res.frames.size()) != frames)
+    throw std::runtime_error(fmt::format("the simulation ended after {} of {} frames", res.frames.size(), frames));
+
+  // ---- Range map and its error against the ground truth ----
+  const int rows = cfg.pixel.rows;
+  std::vector<std::vector<double>> map(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
+  long long visible = 0, detected = 0, missed = 0, false_det = 0;
+  double sum_sq_m = 0, sum_sq_px = 0, sum_m = 0, max_abs_m = 0;
+  std::string points = "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
+  std::string frames_csv = "frame,cycles,end_cycle";
+  for (const auto& p : gt.phases) frames_csv += "," + p.name;
+  frames_csv += ",rows_detected\n";
+  bool timing_matches = true;
+  for (std::size_t f = 0; f < res.frames.size(); ++f) {
+    const auto& fr = res.frames[f];
+    const auto b = static_cast<long long>(fr.frame);
+    frames_csv += fmt::format("{},{},{}", fr.frame, fr.cycles, fr.end_cycle);
+    for (std::size_t i = 0; i < fr.phase_cycles.size(); ++i) {
+      frames_csv += fmt::format(",{}", fr.phase_cycles[i]);
+      timing_matches = timing_matches && i < gt.phases.size() && fr.phase_cycles[i] == gt.phases[i].cycles;
+    }
+    timing_matches = timing_matches && fr.cycles == gt.frame_cycles;
+    frames_csv += fmt::format(",{}\n", fr.rows_detected());
+    for (int r = 0; r < rows; ++r) {
+      const auto& rr = fr.rows[static_cast<std::size_t>(r)];
+      const bool vis = optics.visible(b, r);
+      const double truth_x = optics.centre_px(b, r), truth_z = optics.range_m(r);
+      double range = NAN, err_px = NAN, err_m = NAN;
+      if (rr.valid()) {
+        range = optics.range_from_centre_m(b, rr.centre_px());
+        map[static_cast<std::size_t>(r)][f] = range;
+      }
+      if (vis) {
+        ++visible;
+        if (rr.valid() && std::isfinite(range)) {
+          ++detected;
+          err_px = rr.centre_px() - truth_x;
+          err_m = range - truth_z;
+          sum_sq_px += err_px * err_px;
+          sum_sq_m += err_m * err_m;
+          sum_m += err_m;
+          max_abs_m = std::max(max_abs_m, std::fabs(err_m));
+        } else {
+          ++missed;
+        }
+      } else if (rr.valid()) {
+        ++false_det;
+      }
+      if (vis || rr.valid())
+        points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, num(truth_x), num(truth_z),
+                              rr.valid() ? 1 : 0, rr.valid() ? num(rr.centre_px()) : "", num(range), num(err_px), num(err_m));
+    }
+  }
+  const double rms_m = detected ? std::sqrt(sum_sq_m / detected) : NAN;
+  const double rms_px = detected ? std::sqrt(sum_sq_px / detected) : NAN;
+  std::string range_csv = "row";
+  for (const auto& fr : res.frames) range_csv += fmt::format(",b{}", fr.frame);
+  range_csv += "\n";
+  for (int r = 0; r < rows; ++r) {
+    range_csv += std::to_string(r);
+    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + num(v);
+    range_csv += "\n";
+  }
+
+  // ---- Timing: measured from simulated time, beside the clock schedule ----
+  const double frame_time_s = res.simulated_time_s / static_cast<double>(res.frames.size());
+  const double frame_rate_Hz = 1.0 / frame_time_s;
+  nlohmann::json phases = nlohmann::json::array();
+  const auto& first = res.frames.front();
+  for (std::size_t i = 0; i < gt.phases.size(); ++i)
+    phases.push_back({{"name", gt.phases[i].name},
+                      {"cycles", first.phase_cycles[i]},
+                      {"time_s", first.phase_cycles[i] / cfg.readout.clock_Hz},
+                      {"golden_cycles", gt.phases[i].cycles}});
+  const double wall_s = std::chrono::duration<double>(Clock::now() - t_start).count();
+  nlohmann::json j = {
+      {"sensor", params.sensor_id()},
+      {"preset", params.origin()},
+      {"scene", sc.name},
+      {"scene_file", sc.file},
+      {"harness", opt.kernel_only ? "kernel" : "systemc"},
+      {"event_skipping", !opt.tick},
+      {"noise", !opt.noise_free},
+      {"seed", opt.seed},
+      {"frames", static_cast<long long>(res.frames.size())},
+      {"clock_Hz", cfg.readout.clock_Hz},
+      {"cycles", res.cycles},
+      {"simulated_time_s", res.simulated_time_s},
+      {"frame_time_s", frame_time_s},
+      {"frame_rate_Hz", frame_rate_Hz},
+      {"range_maps_per_s", frame_rate_Hz / static_cast<double>(gt.frames_per_range_map)},
+      {"phases", phases},
+      {"golden",
+       {{"frame_cycles", gt.frame_cycles},
+        {"frame_time_s", gt.frame_time_s},
+        {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
+        {"frames_per_range_map", gt.frames_per_range_map},
+        {"range_maps_per_s", gt.range_maps_per_s}}},
+      {"timing_matches_golden", timing_matches},
+      {"range_error_rms_m", jnum(rms_m)},
+      {"range_error_rms_px", jnum(rms_px)},
+      {"range_error_mean_m", jnum(detected ? sum_m / detected : NAN)},
+      {"range_error_max_abs_m", detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr)},
+      {"points_visible", visible},
+      {"points_detected", detected},
+      {"points_missed", missed},
+      {"points_false", false_det},
+      {"wall_time_s", wall_s},
+      {"simulation_wall_time_s", res.wall_time_s},
+      {"simulated_cycles_per_s", res.cycles / res.wall_time_s},
+      {"sc_errors", res.sc_errors},
+  };
+  out.write("range_map.csv", range_csv);
+  out.write("points.csv", points);
+  out.write("frames.csv", frames_csv);
+  std::string warning;
+  if (!opt.no_plots) warning = render(out, map, fmt::format("{} — {} ({} frames)", sc.name, params.sensor_id(), res.frames.size()));
+  if (!warning.empty()) j["warnings"] = {warning};
+  out.write("summary.json", j.dump(2) + "\n");
+  const std::vector<std::string> written = out.commit();
+
+  if (opt.json) {
+    fmt::print("{}\n", j.dump(2));
+    return kExitOk;
+  }
+  if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
+  fmt::print("{} on scene '{}': {} frame{}, {}{}, {}\n\n", params.sensor_id(), sc.name, res.frames.size(),
+             res.frames.size() == 1 ? "" : "s", opt.kernel_only ? "bare kernels" : "SystemC",
+             opt.tick ? " (ticking)" : " (event skipping)", opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
+  fmt::print("  {:<16} {:>8} {:>8} {:>11}\n", "phase", "cycles", "golden", "time");
+  for (const auto& p : phases)
+    fmt::print("  {:<16} {:>8} {:>8} {:>8.2f} us\n", p["name"].get<std::string>(), p["cycles"].get<long long>(),
+               p["golden_cycles"].get<long long>(), p["time_s"].get<double>() * 1e6);
+  fmt::print("  {:<16} {:>8} {:>8}\n\n", "frame", first.cycles, gt.frame_cycles);
+  fmt::print("  frame time       {:>12.3f} us measured, {:.3f} us golden{}\n", frame_time_s * 1e6, gt.frame_time_s * 1e6,
+             timing_matches ? "" : "  (MISMATCH)");
+  fmt::print("  frame rate       {:>12.2f} fps measured, {:.2f} fps golden\n", frame_rate_Hz, gt.frame_access_rate_Hz);
+  fmt::print("  range maps       {:>12.3f} /s ({} frames each)\n\n", frame_rate_Hz / static_cast<double>(gt.frames_per_range_map),
+             gt.frames_per_range_map);
+  fmt::print("  points visible {}, detected {}, missed {}, false {}\n", visible, detected, missed, false_det);
+  if (detected)
+    fmt::print("  range error      rms {:.3f} mm ({:.4f} px), mean {:+.3f} mm, max |e| {:.3f} mm\n", rms_m * 1e3, rms_px,
+               sum_m / detected * 1e3, max_abs_m * 1e3);
+  fmt::print("  wall time        {:.2f} s, {:.3g} simulated cycles/s\n\n", wall_s, res.cycles / res.wall_time_s);
+  for (const auto& w : written) fmt::print("  wrote {}\n", w);
+  return kExitOk;
 }
 
 }  // namespace rangesim::app

@@ -1,15 +1,396 @@
-// Placeholder until the clock-level model of tof-lockin lands.
+// rangesim simulate tof-lockin: the clock-level model of the pulsed lock-in ToF
+// sensor (bare kernels or SystemC) on a tof-lockin scene; range map by
+// eq. 2.25, error against the scene's ground truth and the golden expectation,
+// frame timing measured from simulated time beside
+// golden::frame_timing_tof_lockin (docs/tof-lockin-clock.md).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
+#include "app/output_dir.h"
 #include "core/params.h"
+#include "core/tof_lockin_config.h"
+#include "core/user_error.h"
+#include "golden/evaluate_sensor.h"
+#include "golden/tof_lockin/lockin_point.h"
+#include "systemc/tof_lockin/lockin_scene.h"
+#include "systemc/tof_lockin/tof_lockin_sensor.h"
 
 namespace rangesim::app {
 
-int run_simulate_tof_lockin(const SimulateOptions&, const ParamSet& params) {
-  throw NotModelled{fmt::format("rangesim simulate: sensor '{}' has no clock-level model yet; modelled: ls-conventional",
-                                params.sensor_id())};
+namespace {
+
+namespace fs = std::filesystem;
+namespace lk = rangesim::systemc::lockin;
+using Clock = std::chrono::steady_clock;
+
+std::string num(double v) {
+  return std::isfinite(v) ? fmt::format("{:.9g}", v) : "";
+}
+nlohmann::json jnum(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-}  // namespace rangesim::app
+// Range map as a gnuplot image: x = column, y = row, colour = range in m.
+std::string render(OutputDir &out, const std::vector<double> &map, int rows,
+                   int cols, const std::string &title) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+    return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh "
+           "installs gnuplot-nox)";
+  const std::string data = out.scratch("range_map.dat");
+  {
+    std::ofstream d(data);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) {
+        const double v = map[static_cast<std::size_t>(r) * cols + c];
+        d << (c ? " " : "")
+          << (std::isfinite(v) ? fmt::format("{:.6g}", v) : "NaN");
+      }
+      d << "\n";
+    }
+  }
+  const std::string png = out.staged("range_map.png");
+  const std::string gp = out.scratch("range_map.gp");
+  std::ofstream(gp) << fmt::format(
+      "set terminal pngcairo size 900,760 font 'Sans,11'\nset output '{}'\nset "
+      "title '{}'\n"
+      "set xlabel 'column'\nset ylabel 'row'\nset cblabel 'range [m]'\nset "
+      "yrange [*:*] reverse\n"
+      "set palette rgbformulae 22,13,-31\nset datafile missing 'NaN'\nset "
+      "autoscale xfix\nset autoscale yfix\n"
+      "set tics out\nplot '{}' matrix with image notitle\n",
+      png, title, data);
+  const std::string log = out.scratch("gnuplot.log");
+  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, log).c_str()) !=
+      0) {
+    std::remove(png.c_str());
+    return "gnuplot failed: range_map.png skipped";
+  }
+  return "";
+}
+
+} // namespace
+
+int run_simulate_tof_lockin(const SimulateOptions &opt,
+                            const ParamSet &params) {
+  const auto t_start = Clock::now();
+  const TofLockinConfig cfg = tof_lockin_from_params(params);
+  if (opt.scene.empty())
+    throw UserError("--scene is required: a tof-lockin scene file, e.g. "
+                    "scenes/tof-lockin-plane.toml");
+  const golden::FrameTiming gt = golden::frame_timing_tof_lockin(params);
+  const long long frames = opt.frames ? *opt.frames : gt.frames_per_range_map;
+  if (frames < 1 || frames > 100000)
+    throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 100000 (sensor "
+                                "frames; a range map is {})",
+                                frames, gt.frames_per_range_map));
+  if (!opt.trace.empty()) {
+    if (opt.kernel_only)
+      throw UserError("--trace needs the SystemC model; drop --kernel-only "
+                      "(the bare kernels have no waveform)");
+    if (opt.trace.size() < 5 ||
+        opt.trace.substr(opt.trace.size() - 4) != ".vcd")
+      throw UserError(fmt::format(
+          "--trace {}: the waveform file name must end in .vcd", opt.trace));
+    const fs::path parent = fs::absolute(opt.trace).parent_path();
+    if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
+      throw UserError(fmt::format(
+          "--trace {}: directory {} does not exist or is not writable",
+          opt.trace, parent.string()));
+  }
+  if (opt.tick && !opt.kernel_only)
+    throw UserError("--tick selects the kernel's cycle-by-cycle path; use it "
+                    "with --kernel-only");
+  const lk::LockinScene sc = lk::load_lockin_scene(opt.scene);
+  {
+    lk::LockinGateKernel check(cfg);
+  } // T_rep on the gate-clock grid, or UserError before anything is written
+  OutputDir out(opt.out.empty() ? "rangesim-out/simulate/" + sc.name : opt.out,
+                "--out");
+
+  const int R = sc.window_rows(cfg), C = sc.window_columns(cfg);
+  lk::LockinSimOptions kopt;
+  kopt.noise = !opt.noise_free;
+  kopt.event_skipping = !opt.tick;
+  kopt.aggregate = !opt.tick; // N_acc identical periods as one event, Poisson
+                              // of the total mean
+  kopt.seed = opt.seed;
+
+  // ---- Run ----
+  const auto t_sim = Clock::now();
+  std::unique_ptr<lk::TofLockinSensorKernel> owned;
+  const lk::TofLockinSensorKernel *k = nullptr;
+  double sim_time_s = 0;
+  long long sc_errors = 0;
+  const std::string vcd_tmp_base =
+      opt.trace.empty() ? ""
+                        : fmt::format("{}.partial-{}", opt.trace, ::getpid());
+  if (opt.kernel_only) {
+    owned = std::make_unique<lk::TofLockinSensorKernel>(
+        cfg, kopt, R, C, sc.stimulus(cfg), frames);
+    auto last = Clock::now();
+    long long reported = 0;
+    while (owned->step()) {
+      if (owned->frame() != reported) {
+        reported = owned->frame();
+        const auto now = Clock::now();
+        const double el = std::chrono::duration<double>(now - t_start).count();
+        if (el > 2.0 &&
+            std::chrono::duration<double>(now - last).count() > 1.0) {
+          fmt::print(stderr, "simulate: frame {}/{} ({:.0f}%), {:.1f} s\n",
+                     reported, frames, 100.0 * reported / frames, el);
+          last = now;
+        }
+      }
+    }
+    sim_time_s = owned->time_s();
+    k = owned.get();
+  } else {
+    lk::TofLockinSensor *mod = nullptr;
+    lk::LockinScRun r;
+    try {
+      r = lk::run_tof_lockin_systemc(
+          mod, cfg, kopt, R, C, sc.stimulus(cfg), frames,
+          1.01 * gt.frame_time_s * static_cast<double>(frames) + 1e-6,
+          vcd_tmp_base.empty() ? "" : vcd_tmp_base + ".vcd");
+    } catch (...) {
+      if (!vcd_tmp_base.empty())
+        std::remove((vcd_tmp_base + ".vcd").c_str());
+      throw;
+    }
+    sc_errors = r.sc_errors;
+    sim_time_s = r.end_time_s;
+    k = &mod->kernel();
+    if (!r.finished || sc_errors > 0) {
+      if (!vcd_tmp_base.empty())
+        std::remove((vcd_tmp_base + ".vcd").c_str());
+      throw std::runtime_error(
+          fmt::format("the SystemC model reported {} error(s) (finished: {})",
+                      sc_errors, r.finished));
+    }
+  }
+  const double sim_wall_s =
+      std::chrono::duration<double>(Clock::now() - t_sim).count();
+
+  // ---- Range map (averaged over the range maps run) and its error ----
+  const long long maps = k->range_maps();
+  std::vector<double> avg(static_cast<std::size_t>(R) * C, NAN);
+  long long visible = 0, detected = 0, missed = 0;
+  double sum_sq = 0, sum = 0, max_abs = 0;
+  for (int r = 0; r < R; ++r)
+    for (int c = 0; c < C; ++c) {
+      const double truth = sc.distance_at(r, c, C);
+      double acc = 0;
+      int n = 0;
+      for (long long m = 0; m < maps; ++m) {
+        const double L = k->range_m(m, r, c);
+        ++visible;
+        if (!std::isfinite(L)) {
+          ++missed;
+          continue;
+        }
+        ++detected, ++n, acc += L;
+        const double e = L - truth;
+        sum_sq += e * e, sum += e, max_abs = std::max(max_abs, std::fabs(e));
+      }
+      if (n)
+        avg[static_cast<std::size_t>(r) * C + c] = acc / n;
+    }
+  const double rms = detected ? std::sqrt(sum_sq / detected) : NAN;
+  const double mean_err = detected ? sum / detected : NAN;
+  // Golden expectation at each distinct scene distance (one range map).
+  std::map<double, int> distances;
+  for (int c = 0; c < C; ++c)
+    distances[sc.distance_at(0, c, C)] += R;
+  nlohmann::json golden_points = nlohmann::json::array();
+  double golden_ms = 0;
+  long long golden_n = 0;
+  for (const auto &[d, count] : distances) {
+    const double kk = sc.reference_distance_m / d;
+    const golden::LockinPoint pt =
+        golden::evaluate_point(cfg, sc.signal_photocurrent_A * kk * kk,
+                               sc.background_photocurrent_A, d, 1);
+    golden_points.push_back({{"distance_m", d},
+                             {"pixels", count},
+                             {"detect", golden::to_string(pt.detect)},
+                             {"mean_m", jnum(pt.mean_m)},
+                             {"std_m", jnum(pt.std_m)},
+                             {"accuracy_m", jnum(pt.accuracy_m)}});
+    if (pt.detect == golden::LockinDetect::Detectable)
+      golden_ms += pt.accuracy_m * pt.accuracy_m * count, golden_n += count;
+  }
+  const double golden_rms = golden_n ? std::sqrt(golden_ms / golden_n) : NAN;
+
+  std::string range_csv = "row";
+  for (int c = 0; c < C; ++c)
+    range_csv += fmt::format(",c{}", c);
+  range_csv += "\n";
+  for (int r = 0; r < R; ++r) {
+    range_csv += std::to_string(r);
+    for (int c = 0; c < C; ++c)
+      range_csv += "," + num(avg[static_cast<std::size_t>(r) * C + c]);
+    range_csv += "\n";
+  }
+
+  // ---- Timing ----
+  std::string frames_csv = "frame,led_on,cycles,start_s,end_s";
+  for (int p = 0; p < lk::kPhaseCount; ++p)
+    frames_csv +=
+        fmt::format(",{}", lk::phase_name(static_cast<lk::LockinPhase>(p + 1)));
+  frames_csv += "\n";
+  bool timing_matches = true;
+  for (const auto &fr : k->frame_records()) {
+    long long total = 0;
+    for (int p = 0; p < lk::kPhaseCount; ++p)
+      total += fr.cycles[p],
+          timing_matches =
+              timing_matches && fr.cycles[p] == gt.phases[p].cycles;
+    frames_csv += fmt::format("{},{},{},{},{}", fr.frame, fr.led_on ? 1 : 0,
+                              total, num(fr.start_s), num(fr.end_s));
+    for (int p = 0; p < lk::kPhaseCount; ++p)
+      frames_csv += fmt::format(",{}", fr.cycles[p]);
+    frames_csv += "\n";
+  }
+  const double frame_time_s = sim_time_s / static_cast<double>(frames);
+  const double frame_rate_Hz = 1.0 / frame_time_s;
+  const lk::LockinFrameRecord &first = k->frame_records().front();
+  nlohmann::json phases = nlohmann::json::array();
+  long long cycles_total = 0;
+  for (int p = 0; p < lk::kPhaseCount; ++p) {
+    const double clk = p < 3 ? cfg.gates.clock_Hz : cfg.readout.clock_Hz;
+    phases.push_back({{"name", gt.phases[p].name},
+                      {"cycles", first.cycles[p]},
+                      {"clock_Hz", clk},
+                      {"time_s", static_cast<double>(first.cycles[p]) / clk},
+                      {"golden_cycles", gt.phases[p].cycles}});
+  }
+  nlohmann::json frame_cycles = nlohmann::json::array();
+  for (const auto &fr : k->frame_records()) {
+    long long t = 0;
+    for (int p = 0; p < lk::kPhaseCount; ++p)
+      t += fr.cycles[p];
+    frame_cycles.push_back(t), cycles_total += t;
+  }
+  const double wall_s =
+      std::chrono::duration<double>(Clock::now() - t_start).count();
+  nlohmann::json j = {
+      {"sensor", params.sensor_id()},
+      {"preset", params.origin()},
+      {"scene", sc.name},
+      {"scene_file", sc.file},
+      {"target_shape", lk::shape_name(sc.shape)},
+      {"harness", opt.kernel_only ? "kernel" : "systemc"},
+      {"event_skipping", kopt.event_skipping},
+      {"aggregation", kopt.aggregate},
+      {"noise", kopt.noise},
+      {"seed", opt.seed},
+      {"frames", frames},
+      {"range_maps", maps},
+      {"frames_per_range_map", gt.frames_per_range_map},
+      {"window_rows", R},
+      {"window_columns", C},
+      {"pixels_simulated", static_cast<long long>(R) * C},
+      {"clock_Hz", cfg.gates.clock_Hz},
+      {"readout_clock_Hz", cfg.readout.clock_Hz},
+      {"cycles", cycles_total},
+      {"gate_cycles", k->gate_cycles()},
+      {"readout_cycles", k->readout_cycles()},
+      {"frame_cycles", frame_cycles},
+      {"events", k->events()},
+      {"simulated_time_s", sim_time_s},
+      {"frame_time_s", frame_time_s},
+      {"frame_rate_Hz", frame_rate_Hz},
+      {"range_maps_per_s",
+       frame_rate_Hz / static_cast<double>(gt.frames_per_range_map)},
+      {"phases", phases},
+      {"golden",
+       {{"frame_cycles", gt.frame_cycles},
+        {"frame_time_s", gt.frame_time_s},
+        {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
+        {"range_maps_per_s", gt.range_maps_per_s},
+        {"accuracy_rms_m", jnum(golden_rms)},
+        {"points", golden_points}}},
+      {"timing_matches_golden", timing_matches},
+      {"range_error_rms_m", jnum(rms)},
+      {"range_error_mean_m", jnum(mean_err)},
+      {"range_error_max_abs_m",
+       detected ? nlohmann::json(max_abs) : nlohmann::json(nullptr)},
+      {"points_visible", visible},
+      {"points_detected", detected},
+      {"points_missed", missed},
+      {"wall_time_s", wall_s},
+      {"simulation_wall_time_s", sim_wall_s},
+      {"simulated_cycles_per_s",
+       static_cast<double>(cycles_total) / sim_wall_s},
+      {"sc_errors", sc_errors},
+  };
+
+  out.write("range_map.csv", range_csv);
+  out.write("frames.csv", frames_csv);
+  std::string warning;
+  if (!opt.no_plots)
+    warning =
+        render(out, avg, R, C,
+               fmt::format("{} - {} ({} range map{})", sc.name,
+                           params.sensor_id(), maps, maps == 1 ? "" : "s"));
+  if (!warning.empty())
+    j["warnings"] = {warning};
+  out.write("summary.json", j.dump(2) + "\n");
+  const std::vector<std::string> written = out.commit();
+  if (!vcd_tmp_base.empty())
+    fs::rename(vcd_tmp_base + ".vcd", opt.trace);
+
+  if (opt.json) {
+    fmt::print("{}\n", j.dump(2));
+    return kExitOk;
+  }
+  if (!warning.empty())
+    fmt::print(stderr, "rangesim: warning: {}\n", warning);
+  fmt::print("{} on scene '{}' ({}): {} frame{} ({} range map{}), {} x {} "
+             "pixels, {}, {}\n\n",
+             params.sensor_id(), sc.name, lk::shape_name(sc.shape), frames,
+             frames == 1 ? "" : "s", maps, maps == 1 ? "" : "s", R, C,
+             opt.kernel_only ? "bare kernels" : "SystemC",
+             opt.noise_free ? "noise-free"
+                            : fmt::format("noise seed {}", opt.seed));
+  fmt::print("  {:<16} {:>10} {:>10} {:>14}\n", "phase", "cycles", "golden",
+             "time");
+  for (const auto &p : phases)
+    fmt::print("  {:<16} {:>10} {:>10} {:>11.3f} us\n",
+               p["name"].get<std::string>(), p["cycles"].get<long long>(),
+               p["golden_cycles"].get<long long>(),
+               p["time_s"].get<double>() * 1e6);
+  fmt::print("  {:<16} {:>10} {:>10}\n\n", "frame",
+             frame_cycles.front().get<long long>(), gt.frame_cycles);
+  fmt::print("  frame time       {:>12.6f} ms measured, {:.6f} ms golden{}\n",
+             frame_time_s * 1e3, gt.frame_time_s * 1e3,
+             timing_matches ? "" : "  (MISMATCH)");
+  fmt::print("  frame rate       {:>12.4f} Hz measured, {:.4f} Hz golden\n",
+             frame_rate_Hz, gt.frame_access_rate_Hz);
+  fmt::print("  range maps       {:>12.4f} /s ({} frames each)\n\n",
+             frame_rate_Hz / gt.frames_per_range_map, gt.frames_per_range_map);
+  fmt::print("  pixel values {}, detected {}, missed {}\n", visible, detected,
+             missed);
+  if (detected)
+    fmt::print("  range error      rms {:.3f} mm, mean {:+.3f} mm, max |e| "
+               "{:.3f} mm (golden accuracy {:.3f} mm)\n",
+               rms * 1e3, mean_err * 1e3, max_abs * 1e3, golden_rms * 1e3);
+  fmt::print("  wall time        {:.2f} s ({:.2f} s simulating, {} events)\n\n",
+             wall_s, sim_wall_s, k->events());
+  for (const auto &w : written)
+    fmt::print("  wrote {}\n", w);
+  if (!opt.trace.empty())
+    fmt::print("  wrote {}\n", opt.trace);
+  return kExitOk;
+}
+
+} // namespace rangesim::app

@@ -1,0 +1,369 @@
+#include "systemc/tof_lockin/lockin_kernel.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+#include <random>
+
+#include "core/physics.h"
+#include "core/user_error.h"
+#include "golden/tof_lockin/pulse_timing.h"
+#include "golden/tof_lockin/tap_charge.h"
+#include "systemc/random_stream.h"
+
+namespace rangesim::systemc::lockin {
+
+const char *phase_name(LockinPhase p) {
+  switch (p) {
+  case LockinPhase::Phase1:
+    return "phase1";
+  case LockinPhase::Phase2:
+    return "phase2";
+  case LockinPhase::Phase3:
+    return "phase3";
+  case LockinPhase::AdcConversion:
+    return "adc_conversion";
+  case LockinPhase::Output:
+    return "output";
+  case LockinPhase::Idle:
+    return "idle";
+  }
+  return "?";
+}
+
+// ---------------------------------------------------------------- gate timing
+// generator
+
+LockinGateKernel::LockinGateKernel(const TofLockinConfig &cfg) {
+  const double fg = cfg.gates.clock_Hz;
+  const double t0 = cfg.source.pulse_width_s * fg;
+  const double period = cfg.source.pulse_width_s / cfg.source.duty_cycle * fg;
+  t0_ = std::llround(t0);
+  period_ = std::llround(period);
+  n_acc_ = cfg.gates.accumulations_per_frame;
+  if (t0_ < 1 ||
+      std::fabs(t0 - static_cast<double>(t0_)) > 1e-6 * std::max(1.0, t0))
+    throw UserError(fmt::format("source.pulse_width_s = {:g} is {:g} cycles of "
+                                "gates.clock_Hz = {:g}; allowed: a whole "
+                                "number >= 1 of gate-clock cycles",
+                                cfg.source.pulse_width_s, t0, fg));
+  if (period_ < 2 * t0_ || std::fabs(period - static_cast<double>(period_)) >
+                               1e-6 * std::max(1.0, period))
+    throw UserError(fmt::format(
+        "source.pulse_width_s / source.duty_cycle = {:g} s is {:g} cycles of "
+        "gates.clock_Hz = "
+        "{:g}; allowed for the clock-level model: a whole number of gate-clock "
+        "cycles >= 2 T0",
+        cfg.source.pulse_width_s / cfg.source.duty_cycle, period, fg));
+  acc_ = n_acc_; // idle until start()
+}
+
+void LockinGateKernel::start() { acc_ = 0, cyc_ = 0; }
+
+LockinPhase LockinGateKernel::phase() const {
+  if (done())
+    return LockinPhase::Idle;
+  return cyc_ < t0_       ? LockinPhase::Phase1
+         : cyc_ < 2 * t0_ ? LockinPhase::Phase2
+                          : LockinPhase::Phase3;
+}
+
+long long LockinGateKernel::cycles_to_edge() const {
+  if (done())
+    return 0;
+  return cyc_ < t0_       ? t0_ - cyc_
+         : cyc_ < 2 * t0_ ? 2 * t0_ - cyc_
+                          : period_ - cyc_;
+}
+
+bool LockinGateKernel::advance(long long n) {
+  assert(n >= 1 && n <= cycles_to_edge());
+  cyc_ += n;
+  const bool closed = cyc_ == t0_ || cyc_ == 2 * t0_ || cyc_ == period_;
+  if (cyc_ == period_)
+    cyc_ = 0, ++acc_;
+  return closed;
+}
+
+long long LockinGateKernel::finish_all() {
+  const long long skipped = (n_acc_ - acc_) * period_ - cyc_;
+  acc_ = n_acc_, cyc_ = 0;
+  return skipped;
+}
+
+// ---------------------------------------------------------------- photogate
+// pixel
+
+double LockinPixelKernel::generated_e(const TofLockinConfig &cfg,
+                                      const LockinPixelStimulus &s, bool led_on,
+                                      double t_a, double t_b) {
+  const double q = phys::kElementaryCharge_C;
+  const double T0 = cfg.source.pulse_width_s;
+  const double Trep = golden::repetition_period_s(cfg.source);
+  double e = s.background_A * (t_b - t_a);
+  if (led_on && s.signal_A != 0.0) {
+    const double eta = cfg.pixel.charge_separation;
+    const double overlap =
+        golden::pulse_area_before_s(cfg.source, t_b - s.delay_s) -
+        golden::pulse_area_before_s(cfg.source, t_a - s.delay_s);
+    e += eta * s.signal_A * overlap +
+         (1.0 - eta) * s.signal_A * T0 / Trep * (t_b - t_a);
+  }
+  return e / q;
+}
+
+void LockinPixelKernel::reset(const TofLockinConfig &cfg,
+                              const LockinSimOptions &o, std::uint64_t frame,
+                              std::uint32_t row, std::uint32_t column) {
+  fd_e_[0] = fd_e_[1] = 0, pg_e_ = 0;
+  ktc_V_[0] = ktc_V_[1] = read_V_[0] = read_V_[1] = 0;
+  if (!o.noise)
+    return;
+  rng_ = pixel_stream(pixel_stream_key(o.seed, frame, row, column));
+  // Draw order: kTC FD1, kTC FD2, read FD1, read FD2 (always consumed), then
+  // the Poisson counts.
+  for (int k = 0; k < 2; ++k)
+    ktc_V_[k] = standard_normal(rng_) * golden::ktc_noise_V(cfg, k) /
+                cfg.pixel.source_follower_gain;
+  for (int k = 0; k < 2; ++k)
+    read_V_[k] = standard_normal(rng_) * cfg.noise.read_noise_V;
+}
+
+void LockinPixelKernel::collect(const TofLockinConfig &cfg,
+                                const LockinPixelStimulus &s, bool led_on,
+                                double t_open, double t_now) {
+  pg_e_ = generated_e(cfg, s, led_on, t_open, t_now);
+}
+
+double LockinPixelKernel::draw_poisson(const LockinSimOptions &o, double mean) {
+  if (!o.noise)
+    return mean;
+  if (!(mean > 0.0))
+    return 0.0;
+  return static_cast<double>(std::poisson_distribution<long long>(mean)(rng_));
+}
+
+void LockinPixelKernel::transfer(const TofLockinConfig &cfg,
+                                 const LockinSimOptions &o, int window,
+                                 double period_s) {
+  if (window < 2) {
+    fd_e_[window] += draw_poisson(o, pg_e_);
+  } else {
+    const double leak = (1.0 - cfg.pixel.drain_efficiency) / 2.0;
+    const double dark =
+        cfg.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
+    for (int k = 0; k < 2; ++k)
+      fd_e_[k] += draw_poisson(o, leak * pg_e_ + dark);
+  }
+  pg_e_ = 0;
+}
+
+void LockinPixelKernel::aggregate(const LockinSimOptions &o, long long n,
+                                  const double m_per_period[2]) {
+  for (int k = 0; k < 2; ++k)
+    fd_e_[k] += draw_poisson(o, static_cast<double>(n) * m_per_period[k]);
+}
+
+double LockinPixelKernel::adc_input_V(const TofLockinConfig &cfg,
+                                      int tap) const {
+  const double a = cfg.pixel.source_follower_gain;
+  const double g = golden::volts_per_electron(cfg, tap);
+  double swing = fd_e_[tap] * g / a +
+                 cfg.pixel.offset_voltage_V; // golden::tap_sample's form
+  swing += ktc_V_[tap];
+  swing = std::min(swing, cfg.pixel.saturation_voltage_V);
+  return a * swing + read_V_[tap];
+}
+
+// ---------------------------------------------------------------- column ADC
+
+LockinColumnAdcKernel::LockinColumnAdcKernel(const TofLockinConfig &cfg)
+    : lsb_(cfg.readout.adc_full_scale_V /
+           std::ldexp(1.0, cfg.readout.adc_bits)),
+      codes_(1LL << cfg.readout.adc_bits),
+      conv_(cfg.readout.adc_conversion_cycles) {}
+
+long long LockinColumnAdcKernel::code(double v) const {
+  return static_cast<long long>(
+      std::clamp(std::floor(v / lsb_), 0.0, static_cast<double>(codes_ - 1)));
+}
+
+// ---------------------------------------------------------------- sensor
+
+TofLockinSensorKernel::TofLockinSensorKernel(
+    const TofLockinConfig &cfg, const LockinSimOptions &opt, int sim_rows,
+    int sim_columns, std::vector<LockinPixelStimulus> stimulus,
+    long long frames)
+    : cfg_(cfg), opt_(opt), rows_(sim_rows), cols_(sim_columns),
+      stim_(std::move(stimulus)), frames_(frames), gates_(cfg), adc_(cfg) {
+  assert(rows_ >= 0 && rows_ <= cfg.pixel.rows && cols_ >= 0 &&
+         cols_ <= cfg.pixel.columns);
+  assert(stim_.size() == static_cast<std::size_t>(rows_) * cols_);
+  assert(frames_ >= 0);
+  pixels_.resize(stim_.size());
+  codes_.assign(static_cast<std::size_t>(frames_) * stim_.size() * 2, 0);
+  inputs_.assign(codes_.size(), 0.0);
+}
+
+bool TofLockinSensorKernel::led_on() const {
+  return !(cfg_.readout.ambient_subtraction && frame_ % 2 == 1);
+}
+
+double TofLockinSensorKernel::time_s() const {
+  return static_cast<double>(gate_cycles_) / cfg_.gates.clock_Hz +
+         static_cast<double>(readout_cycles_) / cfg_.readout.clock_Hz;
+}
+
+void TofLockinSensorKernel::begin_frame() {
+  LockinFrameRecord rec;
+  rec.frame = frame_;
+  rec.led_on = led_on();
+  rec.start_s = time_s();
+  records_.push_back(rec);
+  for (int r = 0; r < rows_; ++r)
+    for (int c = 0; c < cols_; ++c)
+      pixels_[static_cast<std::size_t>(r) * cols_ + c].reset(
+          cfg_, opt_, static_cast<std::uint64_t>(frame_),
+          static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c));
+  gates_.start();
+  phase_ = gates_.phase();
+  row_ = 0, in_phase_ = 0;
+}
+
+void TofLockinSensorKernel::convert_row(int r) {
+  if (r >= rows_)
+    return; // rows outside the simulated window are converted without pixels
+  for (int c = 0; c < cols_; ++c) {
+    const std::size_t p = static_cast<std::size_t>(r) * cols_ + c;
+    for (int k = 0; k < 2; ++k) {
+      const std::size_t i =
+          (static_cast<std::size_t>(frame_) * stim_.size() + p) * 2 + k;
+      inputs_[i] = pixels_[p].adc_input_V(cfg_, k);
+      codes_[i] = adc_.code(inputs_[i]);
+    }
+  }
+}
+
+bool TofLockinSensorKernel::step() {
+  if (done())
+    return false;
+  if (phase_ == LockinPhase::Idle)
+    begin_frame();
+  ++events_;
+  LockinFrameRecord &rec = records_.back();
+  const double fg = cfg_.gates.clock_Hz;
+  if (phase_ == LockinPhase::Phase1 || phase_ == LockinPhase::Phase2 ||
+      phase_ == LockinPhase::Phase3) {
+    const bool on = led_on();
+    if (opt_.event_skipping && opt_.aggregate && gates_.accumulation() == 0 &&
+        gates_.cycle_in_period() == 0) {
+      // N_acc identical periods in one event: per-period means of every window,
+      // Poisson of the total.
+      const long long n = gates_.accumulations();
+      const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
+      const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
+      const double dark =
+          cfg_.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
+      double t[3][2];
+      for (int w = 0; w < 3; ++w)
+        t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
+        t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
+      for (std::size_t p = 0; p < pixels_.size(); ++p) {
+        const double g1 = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
+                                                         t[0][0], t[0][1]);
+        const double g2 = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
+                                                         t[1][0], t[1][1]);
+        const double gd = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
+                                                         t[2][0], t[2][1]);
+        const double m[2] = {g1 + (leak * gd + dark), g2 + (leak * gd + dark)};
+        pixels_[p].aggregate(opt_, n, m);
+      }
+      rec.cycles[0] += n * gates_.t0_cycles();
+      rec.cycles[1] += n * gates_.t0_cycles();
+      rec.cycles[2] += n * (gates_.period_cycles() - 2 * gates_.t0_cycles());
+      gate_cycles_ += gates_.finish_all();
+    } else {
+      const int w = static_cast<int>(phase_) - 1;
+      const long long n = opt_.event_skipping ? gates_.cycles_to_edge() : 1;
+      const long long pos = gates_.cycle_in_period() + n;
+      gates_.advance(n);
+      gate_cycles_ += n;
+      rec.cycles[w] += n;
+      const bool closed = pos == gates_.window_close(w);
+      const double t_open = static_cast<double>(gates_.window_open(w)) / fg,
+                   t_now = static_cast<double>(pos) / fg;
+      const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
+      // PHASE3 of zero length (duty 0.5): the drain edge coincides with the TX2
+      // closing edge.
+      const bool empty_drain =
+          closed && w == 1 && gates_.period_cycles() == 2 * gates_.t0_cycles();
+      for (std::size_t p = 0; p < pixels_.size(); ++p) {
+        pixels_[p].collect(cfg_, stim_[p], on, t_open, t_now);
+        if (closed)
+          pixels_[p].transfer(cfg_, opt_, w, period_s);
+        if (empty_drain)
+          pixels_[p].transfer(cfg_, opt_, 2, period_s);
+      }
+    }
+    if (gates_.done()) {
+      phase_ = LockinPhase::AdcConversion, row_ = 0, in_phase_ = 0;
+    } else {
+      phase_ = gates_.phase();
+    }
+  } else if (phase_ == LockinPhase::AdcConversion) {
+    const long long total = adc_.conversion_cycles();
+    const long long n = opt_.event_skipping ? total - in_phase_ : 1;
+    in_phase_ += n, readout_cycles_ += n, rec.cycles[3] += n;
+    if (in_phase_ == total)
+      convert_row(row_), phase_ = LockinPhase::Output, in_phase_ = 0;
+  } else if (phase_ == LockinPhase::Output) {
+    const long long total = cfg_.readout.output_cycles_per_row;
+    const long long n = opt_.event_skipping ? total - in_phase_ : 1;
+    in_phase_ += n, readout_cycles_ += n, rec.cycles[4] += n;
+    if (in_phase_ == total) {
+      in_phase_ = 0;
+      if (++row_ == cfg_.pixel.rows) {
+        rec.end_s = time_s();
+        ++frame_;
+        phase_ = LockinPhase::Idle;
+      } else {
+        phase_ = LockinPhase::AdcConversion;
+      }
+    }
+  }
+  return !done();
+}
+
+long long TofLockinSensorKernel::range_maps() const {
+  const long long done_frames = static_cast<long long>(frame_);
+  return cfg_.readout.ambient_subtraction ? done_frames / 2 : done_frames;
+}
+
+void TofLockinSensorKernel::tap_values(long long m, int r, int c, double *a,
+                                       double *b) const {
+  const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
+  double v[2];
+  for (int k = 0; k < 2; ++k) {
+    v[k] = adc_.value_V(code(f, r, c, k)) - cfg_.readout.offset_calibration_V;
+    if (cfg_.readout.ambient_subtraction)
+      v[k] -= adc_.value_V(code(f + 1, r, c, k));
+  }
+  *a = v[0], *b = v[1];
+}
+
+double TofLockinSensorKernel::range_m(long long m, int r, int c) const {
+  const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
+  if (code(f, r, c, 0) == adc_.top_code() ||
+      code(f, r, c, 1) == adc_.top_code())
+    return std::numeric_limits<double>::quiet_NaN(); // saturated (clipped code)
+  double a, b;
+  tap_values(m, r, c, &a, &b);
+  const double s = a + b;
+  if (!(s > 0.0) || s < cfg_.readout.detection_threshold_V * (1.0 - 1e-9))
+    return std::numeric_limits<double>::quiet_NaN();
+  return golden::max_range_m(cfg_.source) * b / s;
+}
+
+} // namespace rangesim::systemc::lockin

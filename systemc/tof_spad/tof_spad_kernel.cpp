@@ -1,0 +1,143 @@
+#include "systemc/tof_spad/tof_spad_kernel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/physics.h"
+#include "golden/tof_spad/pile_up.h"
+#include "golden/tof_spad/point_model.h"
+
+namespace rangesim::systemc::spad {
+
+TofSpadKernel::TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, const TofSpadKernelOptions& opt)
+    : cfg_(cfg), rows_(rows), columns_(columns), opt_(opt) {
+  if (rows < 1 || columns < 1 || cfg.tdc.columns_per_tdc < 1 || columns % cfg.tdc.columns_per_tdc != 0)
+    throw std::invalid_argument("tof-spad kernel: columns must be a multiple of tdc.columns_per_tdc");
+  const golden::spad::SpadModel model(cfg);  // same bins, share and blocking as the golden model
+  bins_ = model.bins();
+  est_ = model.estimator();
+  share_ = model.share();
+  const golden::spad::PileUpInput in = model.pile_up_input(std::vector<double>(static_cast<size_t>(bins_.phase_bins), 0.0));
+  block_event_bins_ = in.block_event_bins;
+  block_overflow_bins_ = in.block_overflow_bins;
+  laser_cycles_ = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
+  cycles_per_word_ = static_cast<long long>(std::ceil(clock_Hz() / kReadoutWordRate_Hz - 1e-9));
+}
+
+int TofSpadKernel::phase_bin(double phase_s) const {
+  // Coarse counter: the clock cycle of the hit; fine interpolation: position between the actual
+  // (INL/DNL) edges around it. Equivalent to a search on the golden edges.
+  const auto& e = bins_.edges_s;
+  const int np = bins_.phase_bins;
+  int i = std::clamp(static_cast<int>(phase_s / bins_.lsb_s), 0, np - 1);
+  while (i > 0 && phase_s < e[static_cast<size_t>(i)]) --i;
+  while (i < np - 1 && phase_s >= e[static_cast<size_t>(i) + 1]) ++i;
+  return i;
+}
+
+GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+  const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
+  const double period_s = 1.0 / cfg_.laser.repetition_rate_Hz;
+  std::vector<SpadPixelKernel> px;
+  px.reserve(static_cast<size_t>(cpt));
+  for (int k = 0; k < cpt; ++k) {
+    const int col = group * cpt + k;
+    px.emplace_back(cfg_, rates(row, col), opt_.noise, laser_cycles_, opt_.seed, frame, static_cast<std::uint32_t>(row),
+                    static_cast<std::uint32_t>(col));
+  }
+  GroupHistogram g;
+  g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
+  std::vector<long long> armed_diff(static_cast<size_t>(np) + 1, 0);
+  long long full_cycles = 0;
+  const long long end_bin = laser_cycles_ * np;
+  // Armed at the start of absolute bins [from, to]: partial first/last cycles into the
+  // difference array, whole cycles into a counter.
+  auto add_armed = [&](long long from, long long to) {
+    if (from > to) return;
+    const long long kf = from / np, kt = to / np;
+    const int pf = static_cast<int>(from % np), pt = static_cast<int>(to % np);
+    if (kf == kt) {
+      ++armed_diff[static_cast<size_t>(pf)], --armed_diff[static_cast<size_t>(pt) + 1];
+      return;
+    }
+    ++armed_diff[static_cast<size_t>(pf)], --armed_diff[static_cast<size_t>(np)];
+    full_cycles += kt - kf - 1;
+    ++armed_diff[0], --armed_diff[static_cast<size_t>(pt) + 1];
+  };
+  long long armed_from = 0;  // absolute phase bin from which the TDC is armed
+  for (;;) {
+    int who = -1;
+    double t = SpadPixelKernel::kNever;
+    for (int k = 0; k < cpt; ++k)  // arbitration: the earliest avalanche of the group
+      if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
+    if (who < 0) break;
+    px[static_cast<size_t>(who)].pop();
+    if (t < 0) { ++g.lost_busy; continue; }  // jittered before the first START
+    const long long cycle = static_cast<long long>(t / period_s);
+    if (cycle >= laser_cycles_) break;
+    const int bin = phase_bin(t - static_cast<double>(cycle) * period_s);
+    const long long abs_bin = cycle * np + bin;
+    if (abs_bin < armed_from) { ++g.lost_busy; continue; }
+    add_armed(armed_from, abs_bin);
+    long long rearm;
+    if (bin < nc) {
+      ++g.events[static_cast<size_t>(who)][static_cast<size_t>(bin)];
+      rearm = abs_bin + block_event_bins_;
+    } else {
+      ++g.overflows;
+      rearm = abs_bin + block_overflow_bins_;
+    }
+    armed_from = std::max(rearm, (cycle + 1) * np);  // a stopped TDC waits for the next START
+  }
+  add_armed(armed_from, end_bin - 1);
+  g.armed.assign(static_cast<size_t>(nc), 0);
+  long long run = 0;
+  for (int i = 0; i < nc; ++i) run += armed_diff[static_cast<size_t>(i)], g.armed[static_cast<size_t>(i)] = run + full_cycles;
+  g.starts = laser_cycles_;
+  for (const auto& p : px) g.avalanches += p.avalanches(), g.photons += p.photons();
+  return g;
+}
+
+std::optional<double> TofSpadKernel::estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const {
+  golden::spad::HistogramCounts h;
+  h.events.assign(events.begin(), events.end());
+  h.armed.assign(armed.begin(), armed.end());
+  h.share = share_;
+  return golden::spad::estimate_time_s(h, bins_, est_);
+}
+
+PixelResult TofSpadKernel::make_pixel(int row, int column, const GroupHistogram& g, int index) const {
+  PixelResult p;
+  p.row = row, p.column = column;
+  p.events = g.events[static_cast<size_t>(index)];
+  p.armed = g.armed;
+  p.time_s = estimate(p.events, p.armed);
+  p.range_m = p.time_s ? 0.5 * phys::kSpeedOfLight_m_per_s * *p.time_s : NAN;
+  return p;
+}
+
+FrameResult TofSpadKernel::run_frame(std::uint64_t frame, const PixelSelection& sel, const RateSource& rates) const {
+  FrameResult f;
+  f.frame = static_cast<long long>(frame);
+  f.phase_cycles.assign(2, 0);
+  const int cpt = cfg_.tdc.columns_per_tdc;
+  for (int row = 0; row < rows_; ++row) {
+    const bool simulated = std::find(sel.rows.begin(), sel.rows.end(), row) != sel.rows.end();
+    long long starts = laser_cycles_;
+    if (simulated) {
+      for (int gi = sel.first_group; gi < sel.first_group + sel.groups; ++gi) {
+        const GroupHistogram g = simulate_group(frame, row, gi, rates);
+        starts = g.starts;
+        f.avalanches += g.avalanches, f.photons += g.photons;
+        for (int k = 0; k < cpt; ++k) f.pixels.push_back(make_pixel(row, gi * cpt + k, g, k));
+      }
+    }
+    f.phase_cycles[0] += starts * bins_.phase_bins;  // the coarse counter runs Np cycles per START
+    for (long long w = 0; w < readout_words_per_row(); ++w) f.phase_cycles[1] += cycles_per_word_;
+  }
+  f.cycles = f.phase_cycles[0] + f.phase_cycles[1];
+  return f;
+}
+
+}  // namespace rangesim::systemc::spad

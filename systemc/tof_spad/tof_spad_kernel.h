@@ -1,0 +1,105 @@
+#pragma once
+// Clock-level kernel of tof-spad (plain C++, no SystemC): column TDC groups with first-hit
+// arbitration, coarse counter + interpolated fine code on the golden bin edges, busy time and
+// overflow; per-pixel histogram memory; the row sequencer (integration, histogram readout) that
+// counts the clock cycles of the schedule of golden::frame_timing_tof_spad; the estimator of the
+// golden model applied to the measured histograms. docs/tof-spad-clock.md.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/tof_spad_config.h"
+#include "golden/tof_spad/estimator.h"
+#include "golden/tof_spad/tdc_bins.h"
+#include "systemc/tof_spad/spad_pixel_kernel.h"
+
+namespace rangesim::systemc::spad {
+
+struct TofSpadKernelOptions {
+  std::uint64_t seed = 1;  // key of the noise streams
+  SpadNoise noise;         // noise switches
+};
+
+// Histogram memory of one TDC group after one row integration.
+struct GroupHistogram {
+  std::vector<std::vector<long long>> events;  // [pixel in group][code]: recorded TDC events
+  std::vector<long long> armed;                // [code]: laser cycles with the TDC armed at the code's start
+  long long starts = 0;                        // START pulses (laser cycles) seen
+  long long overflows = 0;                     // hits past the full range (no event)
+  long long lost_busy = 0;                     // avalanches while the TDC was busy/stopped
+  long long avalanches = 0;                    // all avalanches of the group
+  long long photons = 0;                       // photon + dark arrivals of the group (incl. lost)
+};
+
+// One pixel's result in a frame.
+struct PixelResult {
+  int row = 0, column = 0;
+  std::vector<long long> events;  // its histogram
+  std::vector<long long> armed;   // its TDC's armed cycles per code
+  long long avalanches = 0;
+  std::optional<double> time_s;   // estimator output (round trip)
+  double range_m = 0;             // c t / 2 (NaN when nothing detected)
+};
+
+struct FrameResult {
+  long long frame = 0;
+  long long cycles = 0;                     // measured clock cycles of the frame
+  std::vector<long long> phase_cycles;      // laser_cycles, histogram_readout
+  std::vector<PixelResult> pixels;          // simulated pixels, row-major
+  long long avalanches = 0, photons = 0;    // over the simulated pixels
+};
+
+// Pixel subset: rows and TDC groups (columns [g cpt, (g+1) cpt)) simulated; the other rows only
+// cost their cycles.
+struct PixelSelection {
+  std::vector<int> rows;
+  int first_group = 0, groups = 1;
+};
+
+using RateSource = std::function<PixelRates(int row, int column)>;
+
+class TofSpadKernel {
+ public:
+  // Throws std::invalid_argument for an inconsistent configuration.
+  TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, const TofSpadKernelOptions& opt);
+
+  // One TDC group over one row integration (event driven).
+  GroupHistogram simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const;
+  // Estimator of the golden model on one pixel's histogram.
+  std::optional<double> estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const;
+  PixelResult make_pixel(int row, int column, const GroupHistogram& g, int index) const;
+
+  // Whole frame: every row in turn (integration then readout), cycles counted by the sequencer.
+  FrameResult run_frame(std::uint64_t frame, const PixelSelection& sel, const RateSource& rates) const;
+
+  // Schedule quantities (the sequencer's counters).
+  long long laser_cycles() const { return laser_cycles_; }       // STARTs per row integration
+  int phase_bins() const { return bins_.phase_bins; }            // clock cycles per laser period
+  int codes() const { return bins_.codes; }
+  long long readout_words_per_row() const { return static_cast<long long>(cfg_.tdc.columns_per_tdc) * bins_.codes; }
+  long long cycles_per_word() const { return cycles_per_word_; }
+  double clock_Hz() const { return 1.0 / cfg_.tdc.lsb_s; }
+  int rows() const { return rows_; }
+  int columns() const { return columns_; }
+  int groups() const { return columns_ / cfg_.tdc.columns_per_tdc; }
+  const golden::spad::TdcBins& bins() const { return bins_; }
+  const TofSpadConfig& config() const { return cfg_; }
+  // TDC code of a phase in the laser period (coarse count + fine interpolation on the edges).
+  int phase_bin(double phase_s) const;
+
+  static constexpr double kReadoutWordRate_Hz = 100e6;  // golden/tof_spad/frame_timing.cpp
+
+ private:
+  TofSpadConfig cfg_;
+  int rows_, columns_;
+  TofSpadKernelOptions opt_;
+  golden::spad::TdcBins bins_;
+  golden::spad::EstimatorConfig est_;
+  double share_;
+  long long laser_cycles_, cycles_per_word_;
+  int block_event_bins_, block_overflow_bins_;
+};
+
+}  // namespace rangesim::systemc::spad
