@@ -15,6 +15,7 @@
 
 #include "app/cli_common.h"
 #include "app/output_dir.h"
+#include "app/simulate/simulate_output.h"
 #include "core/ls_conventional_config.h"
 #include "core/preset.h"
 #include "core/user_error.h"
@@ -42,37 +43,6 @@ struct Metrics {
   double rms_px() const { return detected ? std::sqrt(sum_sq_px / detected) : NAN; }
   double mean_m() const { return detected ? sum_m / detected : NAN; }
 };
-
-std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
-nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-// Range map as a gnuplot image: x = beam position, y = row, colour = range in m.
-std::string render_range_map(OutputDir& out, const std::vector<std::vector<double>>& map, const std::string& title) {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-    return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh installs gnuplot-nox)";
-  const std::string data = out.scratch("range_map.dat");
-  {
-    std::ofstream d(data);
-    for (const auto& row : map) {
-      for (std::size_t b = 0; b < row.size(); ++b) d << (b ? " " : "") << (std::isfinite(row[b]) ? fmt::format("{:.6g}", row[b]) : "NaN");
-      d << "\n";
-    }
-  }
-  const std::string png = out.staged("range_map.png");
-  const std::string gp = out.scratch("range_map.gp");
-  std::ofstream(gp) << fmt::format(
-      "set terminal pngcairo size 900,800 font 'Sans,11'\nset output '{}'\nset title '{}'\n"
-      "set xlabel 'beam position (frame access)'\nset ylabel 'row'\nset cblabel 'range [m]'\n"
-      "set palette rgbformulae 22,13,-31\nset datafile missing 'NaN'\nset autoscale xfix\nset autoscale yfix\n"
-      "set tics out\nplot '{}' matrix with image notitle\n",
-      png, title, data);
-  const std::string log = out.scratch("gnuplot.log");
-  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, log).c_str()) != 0) {
-    std::remove(png.c_str());
-    return "gnuplot failed: range_map.png skipped (see gnuplot's message with --out on a kept directory)";
-  }
-  return "";
-}
 
 }  // namespace
 
@@ -184,8 +154,8 @@ int run_simulate(const SimulateOptions& opt) {
       }
       if (t.visible || p.valid)
         points += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
-                              t.hit ? num(t.centre_px) : "", t.hit ? num(t.range_m) : "", p.valid ? 1 : 0,
-                              p.valid ? num(p.centre_px()) : "", num(range), num(err_px), num(err_m));
+                              t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
+                              p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
     }
   }
   std::string range_csv = "row";
@@ -193,7 +163,7 @@ int run_simulate(const SimulateOptions& opt) {
   range_csv += "\n";
   for (int r = 0; r < rows; ++r) {
     range_csv += std::to_string(r);
-    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + num(v);
+    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + csv_number(v);
     range_csv += "\n";
   }
 
@@ -238,9 +208,9 @@ int run_simulate(const SimulateOptions& opt) {
         {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
         {"range_maps_per_s", gt.range_maps_per_s}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", jnum(m.rms_m())},
-      {"range_error_rms_px", jnum(m.rms_px())},
-      {"range_error_mean_m", jnum(m.mean_m())},
+      {"range_error_rms_m", json_number(m.rms_m())},
+      {"range_error_rms_px", json_number(m.rms_px())},
+      {"range_error_mean_m", json_number(m.mean_m())},
       {"range_error_max_abs_m", m.detected ? nlohmann::json(m.max_abs_m) : nlohmann::json(nullptr)},
       {"points_visible", m.visible},
       {"points_detected", m.detected},
@@ -258,7 +228,8 @@ int run_simulate(const SimulateOptions& opt) {
   out.write("frames.csv", frames_csv);
   std::string warning;
   if (!opt.no_plots)
-    warning = render_range_map(out, map, fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size()));
+    warning = render_range_map(out, map, fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size()),
+                               "beam position (frame access)");
   if (!warning.empty()) j["warnings"] = {warning};
   out.write("summary.json", j.dump(2) + "\n");
   const std::vector<std::string> written = out.commit();

@@ -16,6 +16,7 @@
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
 #include "app/output_dir.h"
+#include "app/simulate/simulate_output.h"
 #include "core/ls_demodulation_config.h"
 #include "core/params.h"
 #include "core/user_error.h"
@@ -119,34 +120,6 @@ struct DemodOptics {
   }
 };
 
-std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
-nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-std::string render(OutputDir& out, const std::vector<std::vector<double>>& map, const std::string& title) {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-    return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh installs gnuplot-nox)";
-  const std::string data = out.scratch("range_map.dat");
-  {
-    std::ofstream d(data);
-    for (const auto& row : map) {
-      for (std::size_t b = 0; b < row.size(); ++b) d << (b ? " " : "") << (std::isfinite(row[b]) ? fmt::format("{:.6g}", row[b]) : "NaN");
-      d << "\n";
-    }
-  }
-  const std::string png = out.staged("range_map.png"), gp = out.scratch("range_map.gp");
-  std::ofstream(gp) << fmt::format(
-      "set terminal pngcairo size 900,800 font 'Sans,11'\nset output '{}'\nset title '{}'\n"
-      "set xlabel 'beam position (frame)'\nset ylabel 'row'\nset cblabel 'range [m]'\n"
-      "set palette rgbformulae 22,13,-31\nset datafile missing 'NaN'\nset autoscale xfix\nset autoscale yfix\n"
-      "set tics out\nplot '{}' matrix with image notitle\n",
-      png, title, data);
-  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0) {
-    std::remove(png.c_str());
-    return "gnuplot failed: range_map.png skipped";
-  }
-  return "";
-}
-
 }  // namespace
 
 int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& params) {
@@ -229,8 +202,8 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
         ++false_det;
       }
       if (vis || rr.valid())
-        points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, num(truth_x), num(truth_z),
-                              rr.valid() ? 1 : 0, rr.valid() ? num(rr.centre_px()) : "", num(range), num(err_px), num(err_m));
+        points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, csv_number(truth_x), csv_number(truth_z),
+                              rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
     }
   }
   const double rms_m = detected ? std::sqrt(sum_sq_m / detected) : NAN;
@@ -240,7 +213,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   range_csv += "\n";
   for (int r = 0; r < rows; ++r) {
     range_csv += std::to_string(r);
-    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + num(v);
+    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + csv_number(v);
     range_csv += "\n";
   }
 
@@ -279,9 +252,9 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
         {"frames_per_range_map", gt.frames_per_range_map},
         {"range_maps_per_s", gt.range_maps_per_s}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", jnum(rms_m)},
-      {"range_error_rms_px", jnum(rms_px)},
-      {"range_error_mean_m", jnum(detected ? sum_m / detected : NAN)},
+      {"range_error_rms_m", json_number(rms_m)},
+      {"range_error_rms_px", json_number(rms_px)},
+      {"range_error_mean_m", json_number(detected ? sum_m / detected : NAN)},
       {"range_error_max_abs_m", detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr)},
       {"points_visible", visible},
       {"points_detected", detected},
@@ -296,7 +269,8 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   out.write("points.csv", points);
   out.write("frames.csv", frames_csv);
   std::string warning;
-  if (!opt.no_plots) warning = render(out, map, fmt::format("{} — {} ({} frames)", sc.name, params.sensor_id(), res.frames.size()));
+  if (!opt.no_plots) warning = render_range_map(out, map, fmt::format("{} — {} ({} frames)", sc.name, params.sensor_id(), res.frames.size()),
+                                                   "beam position (frame)");
   if (!warning.empty()) j["warnings"] = {warning};
   out.write("summary.json", j.dump(2) + "\n");
   const std::vector<std::string> written = out.commit();

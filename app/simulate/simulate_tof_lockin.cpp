@@ -17,6 +17,7 @@
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
 #include "app/output_dir.h"
+#include "app/simulate/simulate_output.h"
 #include "core/params.h"
 #include "core/tof_lockin_config.h"
 #include "core/user_error.h"
@@ -32,51 +33,6 @@ namespace {
 namespace fs = std::filesystem;
 namespace lk = rangesim::systemc::lockin;
 using Clock = std::chrono::steady_clock;
-
-std::string num(double v) {
-  return std::isfinite(v) ? fmt::format("{:.9g}", v) : "";
-}
-nlohmann::json jnum(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-// Range map as a gnuplot image: x = column, y = row, colour = range in m.
-std::string render(OutputDir &out, const std::vector<double> &map, int rows,
-                   int cols, const std::string &title) {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-    return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh "
-           "installs gnuplot-nox)";
-  const std::string data = out.scratch("range_map.dat");
-  {
-    std::ofstream d(data);
-    for (int r = 0; r < rows; ++r) {
-      for (int c = 0; c < cols; ++c) {
-        const double v = map[static_cast<std::size_t>(r) * cols + c];
-        d << (c ? " " : "")
-          << (std::isfinite(v) ? fmt::format("{:.6g}", v) : "NaN");
-      }
-      d << "\n";
-    }
-  }
-  const std::string png = out.staged("range_map.png");
-  const std::string gp = out.scratch("range_map.gp");
-  std::ofstream(gp) << fmt::format(
-      "set terminal pngcairo size 900,760 font 'Sans,11'\nset output '{}'\nset "
-      "title '{}'\n"
-      "set xlabel 'column'\nset ylabel 'row'\nset cblabel 'range [m]'\nset "
-      "yrange [*:*] reverse\n"
-      "set palette rgbformulae 22,13,-31\nset datafile missing 'NaN'\nset "
-      "autoscale xfix\nset autoscale yfix\n"
-      "set tics out\nplot '{}' matrix with image notitle\n",
-      png, title, data);
-  const std::string log = out.scratch("gnuplot.log");
-  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, log).c_str()) !=
-      0) {
-    std::remove(png.c_str());
-    return "gnuplot failed: range_map.png skipped";
-  }
-  return "";
-}
 
 } // namespace
 
@@ -222,9 +178,9 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
     golden_points.push_back({{"distance_m", d},
                              {"pixels", count},
                              {"detect", golden::to_string(pt.detect)},
-                             {"mean_m", jnum(pt.mean_m)},
-                             {"std_m", jnum(pt.std_m)},
-                             {"accuracy_m", jnum(pt.accuracy_m)}});
+                             {"mean_m", json_number(pt.mean_m)},
+                             {"std_m", json_number(pt.std_m)},
+                             {"accuracy_m", json_number(pt.accuracy_m)}});
     if (pt.detect == golden::LockinDetect::Detectable)
       golden_ms += pt.accuracy_m * pt.accuracy_m * count, golden_n += count;
   }
@@ -237,7 +193,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   for (int r = 0; r < R; ++r) {
     range_csv += std::to_string(r);
     for (int c = 0; c < C; ++c)
-      range_csv += "," + num(avg[static_cast<std::size_t>(r) * C + c]);
+      range_csv += "," + csv_number(avg[static_cast<std::size_t>(r) * C + c]);
     range_csv += "\n";
   }
 
@@ -255,7 +211,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
           timing_matches =
               timing_matches && fr.cycles[p] == gt.phases[p].cycles;
     frames_csv += fmt::format("{},{},{},{},{}", fr.frame, fr.led_on ? 1 : 0,
-                              total, num(fr.start_s), num(fr.end_s));
+                              total, csv_number(fr.start_s), csv_number(fr.end_s));
     for (int p = 0; p < lk::kPhaseCount; ++p)
       frames_csv += fmt::format(",{}", fr.cycles[p]);
     frames_csv += "\n";
@@ -317,11 +273,11 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
         {"frame_time_s", gt.frame_time_s},
         {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
         {"range_maps_per_s", gt.range_maps_per_s},
-        {"accuracy_rms_m", jnum(golden_rms)},
+        {"accuracy_rms_m", json_number(golden_rms)},
         {"points", golden_points}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", jnum(rms)},
-      {"range_error_mean_m", jnum(mean_err)},
+      {"range_error_rms_m", json_number(rms)},
+      {"range_error_mean_m", json_number(mean_err)},
       {"range_error_max_abs_m",
        detected ? nlohmann::json(max_abs) : nlohmann::json(nullptr)},
       {"points_visible", visible},
@@ -337,11 +293,16 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   out.write("range_map.csv", range_csv);
   out.write("frames.csv", frames_csv);
   std::string warning;
-  if (!opt.no_plots)
-    warning =
-        render(out, avg, R, C,
-               fmt::format("{} - {} ({} range map{})", sc.name,
-                           params.sensor_id(), maps, maps == 1 ? "" : "s"));
+  if (!opt.no_plots) {
+    std::vector<std::vector<double>> rows(static_cast<std::size_t>(R));
+    for (int r = 0; r < R; ++r)
+      rows[static_cast<std::size_t>(r)].assign(avg.begin() + static_cast<std::ptrdiff_t>(r) * C,
+                                               avg.begin() + static_cast<std::ptrdiff_t>(r + 1) * C);
+    warning = render_range_map(out, rows,
+                               fmt::format("{} - {} ({} range map{})", sc.name, params.sensor_id(), maps,
+                                           maps == 1 ? "" : "s"),
+                               "column");
+  }
   if (!warning.empty())
     j["warnings"] = {warning};
   out.write("summary.json", j.dump(2) + "\n");

@@ -22,6 +22,7 @@
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
 #include "app/output_dir.h"
+#include "app/simulate/simulate_output.h"
 #include "core/params.h"
 #include "core/physics.h"
 #include "core/tof_spad_config.h"
@@ -135,34 +136,6 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
   return s;
 }
 
-std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
-nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-std::string render(OutputDir& out, const std::vector<std::vector<double>>& map, const std::string& title) {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
-    return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh installs gnuplot-nox)";
-  const std::string data = out.scratch("range_map.dat");
-  {
-    std::ofstream d(data);
-    for (const auto& row : map) {
-      for (std::size_t c = 0; c < row.size(); ++c) d << (c ? " " : "") << (std::isfinite(row[c]) ? fmt::format("{:.6g}", row[c]) : "NaN");
-      d << "\n";
-    }
-  }
-  const std::string png = out.staged("range_map.png"), gp = out.scratch("range_map.gp");
-  std::ofstream(gp) << fmt::format(
-      "set terminal pngcairo size 900,500 font 'Sans,11'\nset output '{}'\nset title '{}'\n"
-      "set xlabel 'column in window'\nset ylabel 'row in window'\nset cblabel 'range [m]'\n"
-      "set palette rgbformulae 22,13,-31\nset datafile missing 'NaN'\nset autoscale xfix\nset autoscale yfix\n"
-      "set tics out\nplot '{}' matrix with image notitle\n",
-      png, title, data);
-  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0) {
-    std::remove(png.c_str());
-    return "gnuplot failed: range_map.png skipped";
-  }
-  return "";
-}
-
 }  // namespace
 
 int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
@@ -244,8 +217,8 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
         const auto r = static_cast<size_t>(p.row - sc.first_row), c = static_cast<size_t>(p.column - sc.first_column);
         sum[r][c] += p.range_m, ++cnt[r][c];
       }
-      points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, num(truth), p.time_s ? 1 : 0,
-                            p.time_s ? num(p.range_m) : "", num(err), ev);
+      points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth), p.time_s ? 1 : 0,
+                            p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev);
     }
   }
   std::vector<std::vector<double>> map(static_cast<size_t>(sc.rows), std::vector<double>(static_cast<size_t>(sc.columns), NAN));
@@ -257,7 +230,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
     for (int c = 0; c < sc.columns; ++c) {
       const auto ur = static_cast<size_t>(r), uc = static_cast<size_t>(c);
       if (cnt[ur][uc]) map[ur][uc] = sum[ur][uc] / cnt[ur][uc];
-      range_csv += "," + num(map[ur][uc]);
+      range_csv += "," + csv_number(map[ur][uc]);
     }
     range_csv += "\n";
   }
@@ -300,8 +273,8 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
         {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
         {"range_maps_per_s", gt.range_maps_per_s}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", jnum(rms)},
-      {"range_error_mean_m", jnum(mean_err)},
+      {"range_error_rms_m", json_number(rms)},
+      {"range_error_mean_m", json_number(mean_err)},
       {"range_error_max_abs_m", detected ? nlohmann::json(max_abs) : nlohmann::json(nullptr)},
       {"points", points_total},
       {"points_detected", detected},
@@ -317,7 +290,8 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   out.write("points.csv", points);
   out.write("frames.csv", frames_csv);
   std::string warning;
-  if (!opt.no_plots) warning = render(out, map, fmt::format("{} — tof-spad ({} frame{})", sc.name, res.frames.size(), res.frames.size() == 1 ? "" : "s"));
+  if (!opt.no_plots) warning = render_range_map(out, map, fmt::format("{} — tof-spad ({} frame{})", sc.name, res.frames.size(), res.frames.size() == 1 ? "" : "s"),
+                                                   "column in window", "row in window");
   if (!warning.empty()) j["warnings"] = {warning};
   out.write("summary.json", j.dump(2) + "\n");
   const std::vector<std::string> written = out.commit();
