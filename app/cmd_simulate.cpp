@@ -158,14 +158,9 @@ int run_simulate(const SimulateOptions& opt) {
                               p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
     }
   }
-  std::string range_csv = "row";
-  for (const auto& fr : res.frames) range_csv += fmt::format(",b{}", optics.beam_position(fr.frame));
-  range_csv += "\n";
-  for (int r = 0; r < rows; ++r) {
-    range_csv += std::to_string(r);
-    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + csv_number(v);
-    range_csv += "\n";
-  }
+  std::vector<std::string> beams;
+  for (const auto& fr : res.frames) beams.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
+  const std::string range_csv = range_map_csv(map, beams);
 
   // ---- Timing: measured from simulated time, beside the clock schedule ----
   const double frame_time_s = res.simulated_time_s / static_cast<double>(res.frames.size());

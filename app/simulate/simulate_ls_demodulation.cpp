@@ -208,14 +208,9 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   }
   const double rms_m = detected ? std::sqrt(sum_sq_m / detected) : NAN;
   const double rms_px = detected ? std::sqrt(sum_sq_px / detected) : NAN;
-  std::string range_csv = "row";
-  for (const auto& fr : res.frames) range_csv += fmt::format(",b{}", fr.frame);
-  range_csv += "\n";
-  for (int r = 0; r < rows; ++r) {
-    range_csv += std::to_string(r);
-    for (double v : map[static_cast<std::size_t>(r)]) range_csv += "," + csv_number(v);
-    range_csv += "\n";
-  }
+  std::vector<std::string> beams;
+  for (const auto& fr : res.frames) beams.push_back(fmt::format("b{}", fr.frame));
+  const std::string range_csv = range_map_csv(map, beams);
 
   // ---- Timing: measured from simulated time, beside the clock schedule ----
   const double frame_time_s = res.simulated_time_s / static_cast<double>(res.frames.size());
