@@ -48,6 +48,23 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)");
   ev->add_flag("--json", ev_opt.json, "Print summary.json to stdout instead of the table");
   ev->add_flag("--no-plots", ev_opt.no_plots, "Skip the PNG/SVG heat maps");
+  // Monte Carlo evaluation (app/montecarlo/, docs/evaluate-montecarlo.md).
+  ev->add_option("--trials", ev_opt.trials,
+                 "Monte Carlo: run the clock-level kernels with noise N times at every detectable grid point\n"
+                 "(2..10000000) and report every accuracy value with its 95% confidence interval (mc_points.csv,\n"
+                 "mc_*.csv maps, mc_accuracy.png, summary.json monte_carlo)");
+  ev->add_option("--target-error", ev_opt.target_error,
+                 "Monte Carlo: add trials per point until the 95% CI half-width of the accuracy is <= E metres\n"
+                 "(starts with --trials, default 100; stops at --max-trials with a warning)");
+  ev->add_option("--max-trials", ev_opt.max_trials, "Monte Carlo: trial budget per point (default 100000)");
+  ev->add_option("--threads", ev_opt.threads,
+                 "Monte Carlo: worker threads, 1..1024 (default: all cores); results are bit-identical for any count");
+  ev->add_option("--seed", ev_opt.seed, "Monte Carlo: key of the random streams (default 1)");
+  ev->add_option("--max-seconds", ev_opt.max_seconds,
+                 "Monte Carlo: wall-time budget; when exceeded the sweep stops, keeps its journal and exits 4");
+  ev->add_flag("--resume", ev_opt.resume,
+               "Monte Carlo: continue the interrupted sweep whose journal is in --out (same options required);\n"
+               "the output is byte-identical to an uninterrupted run. Exit codes: 130 interrupted (Ctrl-C), 4 budget");
 
   FrameRateOptions& fr_opt = c.frame_rate;
   auto* fr = app.add_subcommand("frame-rate", "Frame time from the clock schedule, by phase, and the rates");

@@ -7,6 +7,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/evaluate_params.h"
 #include "app/evaluation_output.h"
 #include "app/output_dir.h"
 #include "app/plot.h"
@@ -70,8 +71,7 @@ void apply_grid(ParamSet& params, const ParamSchema& schema, const std::string& 
 
 }  // namespace
 
-int run_evaluate(const EvaluateOptions& opt) {
-  // Validate everything before computing or touching the output directory.
+ParamSet evaluate_params(const EvaluateOptions& opt) {
   ParamSet params = load_modelled_preset(opt.sensor, "evaluate");
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   if (opt.samplings) {
@@ -90,6 +90,12 @@ int run_evaluate(const EvaluateOptions& opt) {
   }
   if (opt.signal) apply_grid(params, schema, "signal", *opt.signal);
   if (opt.background) apply_grid(params, schema, "background", *opt.background);
+  return params;
+}
+
+int run_evaluate(const EvaluateOptions& opt) {
+  // Validate everything before computing or touching the output directory.
+  const ParamSet params = evaluate_params(opt);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
   OutputDir out(dir, "--out");
 

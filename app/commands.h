@@ -27,8 +27,19 @@ struct EvaluateOptions {
   std::string out;                    // output directory ("" -> rangesim-out/<sensor>)
   bool json = false;
   bool no_plots = false;
+  // Monte Carlo on the clock-level kernels (app/montecarlo/, docs/evaluate-montecarlo.md); any of
+  // trials / target_error switches it on.
+  std::optional<long long> trials;        // trials per grid point (first batch)
+  std::optional<double> target_error;     // m: add trials until the accuracy's 95% CI half-width <= this
+  std::optional<long long> max_trials;    // cap per point (trial budget)
+  std::optional<int> threads;             // worker threads (default: all cores)
+  std::optional<unsigned long long> seed; // key of the random streams
+  std::optional<double> max_seconds;      // wall-time budget of the sweep
+  bool resume = false;                    // continue the sweep journal in --out
 };
 int run_evaluate(const EvaluateOptions& opt);
+// `evaluate` with --trials / --target-error (app/montecarlo/cmd_evaluate_mc.cpp).
+int run_evaluate_mc(const EvaluateOptions& opt);
 
 struct FrameRateOptions {
   std::string sensor;

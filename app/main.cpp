@@ -18,7 +18,9 @@ int run(const ParsedCommand& c) {
   switch (c.kind) {
     case CommandKind::List: return run_list(c.list);
     case CommandKind::Show: return run_show(c.show);
-    case CommandKind::Evaluate: return run_evaluate(c.evaluate);
+    case CommandKind::Evaluate:
+      return c.evaluate.trials || c.evaluate.target_error || c.evaluate.resume ? run_evaluate_mc(c.evaluate)
+                                                                               : run_evaluate(c.evaluate);
     case CommandKind::FrameRate: return run_frame_rate(c.frame_rate);
     case CommandKind::Table: return run_table(c.table);
     case CommandKind::Simulate: return run_simulate(c.simulate);

@@ -1,0 +1,232 @@
+// rangesim evaluate --trials / --target-error: the golden evaluation of the grid, then a Monte
+// Carlo sweep of the clock-level kernels over its detectable points, every accuracy value with
+// its 95% CI; journaled so that a killed or interrupted sweep resumes where it stopped.
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <signal.h>
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <thread>
+#include <unistd.h>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/evaluate_params.h"
+#include "app/evaluation_output.h"
+#include "app/montecarlo/mc_model.h"
+#include "app/montecarlo/mc_output.h"
+#include "app/montecarlo/mc_sweep.h"
+#include "app/output_dir.h"
+#include "app/plot.h"
+#include "app/sweep_journal.h"
+#include "core/user_error.h"
+#include "golden/evaluate_sensor.h"
+
+namespace rangesim::app {
+
+namespace {
+
+constexpr int kExitBudget = 4;        // --max-seconds exceeded; journal kept
+constexpr int kExitInterrupted = 130; // SIGINT; journal kept
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_sigint(int) { g_interrupted.store(true); }
+
+// Installs the SIGINT handler for the sweep, restores the previous one on destruction.
+class SigintGuard {
+ public:
+  SigintGuard() {
+    struct sigaction sa {};
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_);
+  }
+  ~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
+
+ private:
+  struct sigaction old_ {};
+};
+
+void progress(long long done, long long total, long long trials, double elapsed, double left) {
+  static int last_quarter = -1;
+  if (isatty(fileno(stderr))) {
+    std::fprintf(stderr, "\revaluate --trials: %lld/%lld points, %lld trials, %.1f s, %s left   %s", done, total, trials,
+                 elapsed, std::isfinite(left) ? fmt::format("~{:.0f} s", left).c_str() : "?",
+                 done == total && left == 0 ? "\n" : "");
+  } else if (int q = static_cast<int>(4 * done / std::max(total, 1LL)); q != last_quarter || left == 0) {
+    last_quarter = q;
+    std::fprintf(stderr, "evaluate --trials: %lld/%lld points, %lld trials, %.1f s, %s left\n", done, total, trials,
+                 elapsed, std::isfinite(left) ? fmt::format("~{:.0f} s", left).c_str() : "?");
+  }
+}
+
+std::string shell_quote(const std::string& s) {
+  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./:=+,") ==
+                        std::string::npos)
+    return s;
+  std::string r = "'";
+  for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return r + "'";
+}
+
+// The command that continues this sweep: the same options with --resume.
+std::string resume_command(const EvaluateOptions& o, const std::string& dir) {
+  std::string c = "rangesim evaluate " + shell_quote(o.sensor);
+  if (o.signal) c += " --signal " + shell_quote(*o.signal);
+  if (o.background) c += " --background " + shell_quote(*o.background);
+  if (o.samplings) c += fmt::format(" --samplings {}", *o.samplings);
+  if (o.adc_bits) c += fmt::format(" --adc-bits {}", *o.adc_bits);
+  if (o.frames) c += fmt::format(" --frames {}", *o.frames);
+  if (o.trials) c += fmt::format(" --trials {}", *o.trials);
+  if (o.target_error) c += fmt::format(" --target-error {}", *o.target_error);
+  if (o.max_trials) c += fmt::format(" --max-trials {}", *o.max_trials);
+  if (o.seed) c += fmt::format(" --seed {}", *o.seed);
+  if (o.threads) c += fmt::format(" --threads {}", *o.threads);
+  if (o.max_seconds) c += fmt::format(" --max-seconds {}", *o.max_seconds);
+  if (o.json) c += " --json";
+  if (o.no_plots) c += " --no-plots";
+  return c + " --out " + shell_quote(dir) + " --resume";
+}
+
+// Everything that changes the sweep's results: the resolved preset and the Monte Carlo options.
+std::string fingerprint(const ParamSet& params, const mc::McSweepOptions& o) {
+  std::string f = fmt::format("rangesim evaluate --trials (Monte Carlo 1)\nsensor = {}\n", params.sensor_id());
+  for (const auto& [key, v] : params.values())
+    f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text) : fmt::format("{} = {:.17g}\n", key, v.number);
+  f += fmt::format("trials = {}\ntarget_error_m = {:.17g}\nmax_trials = {}\nseed = {}\n", o.trials, o.target_error_m,
+                   o.max_trials, o.seed);
+  return f;
+}
+
+mc::McSweepOptions sweep_options(const EvaluateOptions& opt) {
+  mc::McSweepOptions o;
+  o.trials = opt.trials.value_or(100);
+  if (o.trials < 2 || o.trials > 10000000)
+    throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", o.trials));
+  if (opt.target_error) {
+    if (!(std::isfinite(*opt.target_error) && *opt.target_error > 0))
+      throw UserError(fmt::format("--target-error {}: allowed a finite error > 0 (metres)", *opt.target_error));
+    o.target_error_m = *opt.target_error;
+  }
+  o.max_trials = opt.max_trials.value_or(std::max<long long>(100000, o.trials));
+  if (o.max_trials < o.trials || o.max_trials > 1000000000)
+    throw UserError(fmt::format("--max-trials {}: allowed --trials ({}) .. 1000000000", o.max_trials, o.trials));
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  o.threads = opt.threads.value_or(cores);
+  if (o.threads < 1 || o.threads > 1024) throw UserError(fmt::format("--threads {}: allowed 1 .. 1024", o.threads));
+  o.seed = opt.seed.value_or(1);
+  if (opt.max_seconds) {
+    if (!(std::isfinite(*opt.max_seconds) && *opt.max_seconds > 0))
+      throw UserError(fmt::format("--max-seconds {}: allowed a finite time > 0", *opt.max_seconds));
+    o.max_seconds = *opt.max_seconds;
+  }
+  return o;
+}
+
+// Staging folders (.staging-<pid>) left by a killed run whose process is gone: removed when the
+// sweep resumes, so the finished folder holds only the outputs.
+void remove_stale_staging(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(".staging-", 0) != 0 || name == ".staging-sweep") continue;
+    const std::string digits = name.substr(9);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::stol(digits);
+    if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+      std::filesystem::remove_all(e.path(), ec);
+  }
+}
+
+}  // namespace
+
+int run_evaluate_mc(const EvaluateOptions& opt) {
+  // Validate everything before computing or touching the output directory.
+  const ParamSet params = evaluate_params(opt);
+  mc::McSweepOptions sopt = sweep_options(opt);
+  const std::unique_ptr<mc::McModel> model = mc::make_mc_model(params);
+  const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
+  OutputDir out(dir, "--out");
+  const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
+  SweepJournal journal(journal_dir + "/evaluate.journal", fingerprint(params, sopt), opt.resume);
+  if (opt.resume) remove_stale_staging(dir);
+  if (opt.resume && !journal.done().empty())
+    fmt::print(stderr, "rangesim evaluate: resuming: {} points from {}\n", journal.done().size(), journal.path());
+
+  const golden::EvalResult ev = golden::evaluate_sensor(params);
+  std::vector<mc::McSweepPoint> points;
+  for (std::size_t i = 0; i < ev.points.size(); ++i)
+    if (ev.points[i].detect == "detectable")
+      points.push_back({static_cast<long long>(i), ev.points[i].signal, ev.points[i].background});
+
+  SigintGuard sigint;
+  g_interrupted = false;
+  sopt.stop = &g_interrupted;
+  sopt.progress = &progress;
+  const mc::McSweepResult r = mc::run_mc_sweep(*model, points, sopt, &journal);
+  if (!r.complete) {
+    long long have = 0;
+    for (const auto& s : r.stats) have += s ? 1 : 0;
+    fmt::print(stderr,
+               "\nrangesim evaluate: {}: {} of {} points finished and kept in {}; nothing else written.\n"
+               "To continue, run:\n  {}\n",
+               r.out_of_time ? fmt::format("--max-seconds {} exceeded", sopt.max_seconds) : "interrupted", have,
+               points.size(), journal.path(), resume_command(opt, dir));
+    return r.out_of_time ? kExitBudget : kExitInterrupted;
+  }
+
+  mc::McGrid grid;
+  grid.ev = &ev;
+  grid.stats.resize(ev.points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) grid.stats[static_cast<std::size_t>(points[k].index)] = r.stats[k];
+  grid.unit = model->unit();
+  grid.metres_per_unit = model->metres_per_unit();
+  grid.trials = sopt.trials;
+  grid.max_trials = sopt.max_trials;
+  grid.target_error_m = sopt.target_error_m;
+  grid.seed = sopt.seed;
+
+  out.write("points.csv", points_csv(ev));
+  out.write("detectable_area.csv", detect_matrix_csv(ev));
+  out.write("accuracy_mm.csv", accuracy_mm_matrix_csv(ev));
+  for (const auto& m : ev.metric_names)
+    if (m == "accuracy_px") out.write("accuracy_px.csv", metric_matrix_csv(ev, m));
+  out.write("mc_points.csv", mc::mc_points_csv(grid));
+  out.write("mc_accuracy_mm.csv", mc::mc_matrix_csv(grid, false));
+  out.write("mc_accuracy_ci_mm.csv", mc::mc_matrix_csv(grid, true));
+  std::string plot_warning;
+  if (!opt.no_plots) {
+    plot_warning = render_plots(out, ev);
+    const std::string w = mc::render_mc_plot(out, grid);
+    if (plot_warning.empty()) plot_warning = w;
+  }
+  nlohmann::json summary = summary_json(ev, params);
+  summary["monte_carlo"] = mc::mc_summary_json(grid);
+  out.write("summary.json", summary.dump(2) + "\n");
+  const std::vector<std::string> written = out.commit();
+  journal.remove();
+  std::error_code ec;
+  std::filesystem::remove(journal_dir, ec);  // only if empty
+  summary["files"] = written;
+
+  if (!plot_warning.empty()) fmt::print(stderr, "rangesim evaluate: warning: {}\n", plot_warning);
+  if (r.points_capped > 0)
+    fmt::print(stderr,
+               "rangesim evaluate: warning: {} of {} points reached --max-trials {} before the 95% CI half-width of the "
+               "accuracy fell to --target-error {:g} m (largest left: {:.3g} m); raise --max-trials for them\n",
+               r.points_capped, points.size(), sopt.max_trials, sopt.target_error_m, r.worst_capped_half_width_m);
+  if (opt.json) {
+    fmt::print("{}\n", summary.dump(2));
+    return 0;
+  }
+  fmt::print("{}\n{}outputs in {}/: ", summary_text(ev), mc::mc_summary_text(grid), dir);
+  for (size_t i = 0; i < written.size(); ++i)
+    fmt::print("{}{}", i ? ", " : "", written[i].substr(written[i].find_last_of('/') + 1));
+  fmt::print("\n");
+  return 0;
+}
+
+}  // namespace rangesim::app

@@ -1,0 +1,53 @@
+#pragma once
+// Monte Carlo trials of one sensor's clock-level kernels (not the sc_modules) at an operating
+// point of the evaluation grid: what `rangesim evaluate --trials` runs. One trial is one range
+// value as the sensor delivers it (ls-conventional: one frame access of a row, spot centre drawn
+// uniformly across one pixel; ls-demodulation: N_p frames of K decisions averaged, spot likewise;
+// tof-lockin: N_p range maps (LED + ambient frames) averaged; tof-spad: one histogram of N_p
+// integrations of one TDC group), with every noise source of the kernel on.
+//
+// Random streams are keyed by (seed, grid point, trial) only (systemc/random_stream.h): a trial's
+// result never depends on which thread runs it or when.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "core/params.h"
+
+namespace rangesim::app::mc {
+
+struct McTrial {
+  bool detected = false;  // the sensor reported a range / position
+  double error = 0;       // estimate - truth, in McModel::unit() (detected trials)
+};
+
+// Trials of one operating point; owns its kernels, used by one thread. trial() must be called with
+// t = 0, 1, 2, ... in order (kernels keep frame counters); the result of trial t is a function of
+// (seed, point, t) alone.
+class McPointRunner {
+ public:
+  virtual ~McPointRunner() = default;
+  virtual McTrial trial(long long t) = 0;
+  // Random variates drawn so far (Poisson, normal, uniform), -1 if the kernel does not count them.
+  virtual long long variates() const { return -1; }
+};
+
+class McModel {
+ public:
+  virtual ~McModel() = default;
+  virtual const char* unit() const = 0;           // "px" (light-section) or "m" (time of flight)
+  virtual double metres_per_unit() const = 0;     // triangulation at optics.distance_m, or 1
+  virtual std::unique_ptr<McPointRunner> point(double signal, double background, std::uint64_t point_key) const = 0;
+};
+
+// Key of a grid point's streams: (seed, point index) folded by SplitMix64.
+std::uint64_t point_key(std::uint64_t seed, std::uint64_t point_index);
+// Key of one trial of a point (kernels that take a seed per run).
+std::uint64_t trial_key(std::uint64_t point_key, std::uint64_t trial);
+// Uniform in [0, 1) of a trial (spot position), from its own stream.
+double trial_uniform(std::uint64_t point_key, std::uint64_t trial);
+
+// The model of the preset's sensor; throws NotModelled-style std::logic_error for others.
+std::unique_ptr<McModel> make_mc_model(const ParamSet& params);
+
+}  // namespace rangesim::app::mc

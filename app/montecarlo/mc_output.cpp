@@ -1,0 +1,176 @@
+#include "app/montecarlo/mc_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+
+namespace rangesim::app::mc {
+
+namespace {
+
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); }
+nlohmann::json json_num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+McInterval in_m(const McInterval& i, double f) { return {i.value * f, i.lo * f, i.hi * f}; }
+
+// Golden accuracy inside the MC accuracy's 95% CI.
+bool golden_in_ci(const McGrid& g, std::size_t i) {
+  const McInterval a = in_m(g.stats[i]->rms, g.metres_per_unit);
+  return a.contains(g.ev->points[i].accuracy_m);
+}
+
+}  // namespace
+
+std::string mc_points_csv(const McGrid& g) {
+  const auto& ev = *g.ev;
+  std::ostringstream o;
+  o << fmt::format(
+      "signal_{},background_{},golden_accuracy_m,trials,detected,p_detect,p_detect_lo,p_detect_hi,bias_m,bias_lo_m,"
+      "bias_hi_m,std_m,std_lo_m,std_hi_m,accuracy_m,accuracy_lo_m,accuracy_hi_m,golden_in_ci,target_met\n",
+      ev.signal.unit, ev.background.unit);
+  for (std::size_t i = 0; i < ev.points.size(); ++i) {
+    if (!g.stats[i]) continue;
+    const McPointStats& s = *g.stats[i];
+    const auto& p = ev.points[i];
+    o << fmt::format("{:.6g},{:.6g},{},{},{},{},{},{}", p.signal, p.background, num(p.accuracy_m), s.trials, s.detected,
+                     num(s.p_detect.value), num(s.p_detect.lo), num(s.p_detect.hi));
+    for (const McInterval* m : {&s.bias, &s.std, &s.rms}) {
+      const McInterval x = in_m(*m, g.metres_per_unit);
+      o << "," << num(x.value) << "," << num(x.lo) << "," << num(x.hi);
+    }
+    const double hw = s.rms.half_width() * g.metres_per_unit;
+    o << "," << (golden_in_ci(g, i) ? 1 : 0) << ","
+      << (g.target_error_m <= 0 ? "" : (std::isfinite(hw) && hw <= g.target_error_m ? "1" : "0")) << "\n";
+  }
+  return o.str();
+}
+
+std::string mc_matrix_csv(const McGrid& g, bool half_width) {
+  const auto& ev = *g.ev;
+  std::ostringstream o;
+  o << fmt::format("background_{}\\signal_{}", ev.background.unit, ev.signal.unit);
+  for (double s : ev.signal.values) o << fmt::format(",{:.6g}", s);
+  o << "\n";
+  const std::size_t ns = ev.signal.values.size();
+  for (std::size_t ib = 0; ib < ev.background.values.size(); ++ib) {
+    o << fmt::format("{:.6g}", ev.background.values[ib]);
+    for (std::size_t is = 0; is < ns; ++is) {
+      const auto& s = g.stats[ib * ns + is];
+      const double v = !s ? NAN : 1e3 * g.metres_per_unit * (half_width ? s->rms.half_width() : s->rms.value);
+      o << "," << num(v);
+    }
+    o << "\n";
+  }
+  return o.str();
+}
+
+nlohmann::json mc_summary_json(const McGrid& g) {
+  nlohmann::json j;
+  long long points = 0, trials = 0, in_ci = 0, met = 0;
+  double acc_min = INFINITY, acc_max = -INFINITY, hw_max = 0;
+  for (std::size_t i = 0; i < g.stats.size(); ++i) {
+    if (!g.stats[i]) continue;
+    const McPointStats& s = *g.stats[i];
+    ++points, trials += s.trials;
+    const double a = s.rms.value * g.metres_per_unit, hw = s.rms.half_width() * g.metres_per_unit;
+    if (std::isfinite(a)) acc_min = std::min(acc_min, a), acc_max = std::max(acc_max, a);
+    if (std::isfinite(hw)) hw_max = std::max(hw_max, hw);
+    if (golden_in_ci(g, i)) ++in_ci;
+    if (g.target_error_m > 0 && std::isfinite(hw) && hw <= g.target_error_m) ++met;
+  }
+  j["trials_per_point"] = g.trials;
+  j["target_error_m"] = g.target_error_m > 0 ? nlohmann::json(g.target_error_m) : nlohmann::json(nullptr);
+  j["max_trials"] = g.max_trials;
+  j["seed"] = g.seed;
+  j["model_unit"] = g.unit;
+  j["points"] = points;
+  j["trials_total"] = trials;
+  j["accuracy_min_m"] = json_num(points ? acc_min : NAN);
+  j["accuracy_max_m"] = json_num(points ? acc_max : NAN);
+  j["accuracy_ci_half_width_max_m"] = json_num(points ? hw_max : NAN);
+  j["points_golden_in_ci"] = in_ci;
+  j["points_target_met"] = g.target_error_m > 0 ? nlohmann::json(met) : nlohmann::json(nullptr);
+  j["confidence"] = 0.95;
+  return j;
+}
+
+std::string mc_summary_text(const McGrid& g) {
+  const nlohmann::json j = mc_summary_json(g);
+  std::string t = fmt::format("Monte Carlo ({} trials/point{}): {} points, {} trials\n", g.trials,
+                              g.target_error_m > 0 ? fmt::format(", target CI half-width {:g} m", g.target_error_m) : "",
+                              j["points"].get<long long>(), j["trials_total"].get<long long>());
+  if (j["points"].get<long long>() > 0)
+    t += fmt::format("  accuracy {:.4g} .. {:.4g} m, largest 95% CI half-width {:.3g} m\n"
+                     "  golden accuracy inside the MC 95% CI at {} of {} points\n",
+                     j["accuracy_min_m"].is_null() ? NAN : j["accuracy_min_m"].get<double>(),
+                     j["accuracy_max_m"].is_null() ? NAN : j["accuracy_max_m"].get<double>(),
+                     j["accuracy_ci_half_width_max_m"].is_null() ? NAN : j["accuracy_ci_half_width_max_m"].get<double>(),
+                     j["points_golden_in_ci"].get<long long>(), j["points"].get<long long>());
+  return t;
+}
+
+std::string render_mc_plot(OutputDir& out, const McGrid& g) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+    return "gnuplot not found: mc_accuracy plot skipped (scripts/install-deps.sh installs gnuplot-nox)";
+  const auto& ev = *g.ev;
+  const std::size_t ns = ev.signal.values.size(), nb = ev.background.values.size();
+  // Up to 6 background rows with MC points, evenly spread.
+  std::vector<std::size_t> rows;
+  for (std::size_t ib = 0; ib < nb; ++ib)
+    for (std::size_t is = 0; is < ns; ++is)
+      if (g.stats[ib * ns + is]) {
+        rows.push_back(ib);
+        break;
+      }
+  if (rows.empty()) return "";
+  std::vector<std::size_t> pick;
+  const std::size_t k = std::min<std::size_t>(6, rows.size());
+  for (std::size_t i = 0; i < k; ++i) pick.push_back(rows[k == 1 ? 0 : i * (rows.size() - 1) / (k - 1)]);
+  const std::string data = out.scratch("mc_accuracy.dat");
+  {
+    std::ofstream d(data);
+    for (std::size_t ib : pick) {
+      for (std::size_t is = 0; is < ns; ++is) {
+        const auto& s = g.stats[ib * ns + is];
+        if (!s || !std::isfinite(s->rms.value)) continue;
+        const double f = 1e3 * g.metres_per_unit;
+        d << fmt::format("{:.9g} {:.9g} {:.9g} {:.9g} {:.9g}\n", ev.signal.values[is], s->rms.value * f, s->rms.lo * f,
+                         s->rms.hi * f, ev.points[ib * ns + is].accuracy_m * 1e3);
+      }
+      d << "\n\n";
+    }
+  }
+  std::string script;
+  std::vector<std::string> images;
+  for (const std::string ext : {"png", "svg"}) {
+    images.push_back("mc_accuracy." + ext);
+    script += "reset\n";
+    script += ext == "png" ? "set terminal pngcairo size 900,600 noenhanced\n" : "set terminal svg size 900,600 noenhanced\n";
+    script += fmt::format("set output '{}'\n", out.staged(images.back()));
+    script += fmt::format(
+        "set title '{}: Monte Carlo accuracy with 95% CI (points) and golden closed form (lines)'\n"
+        "set logscale xy\nset xlabel 'signal ({})'\nset ylabel 'rms range error (mm)'\nset key outside right\n"
+        "set grid\n",
+        ev.sensor, ev.signal.unit);
+    std::string plot = "plot ";
+    for (std::size_t i = 0; i < pick.size(); ++i) {
+      const std::string bg = fmt::format("{:.3g} {}", ev.background.values[pick[i]], ev.background.unit);
+      plot += fmt::format("{}'{}' index {} using 1:2:3:4 with yerrorbars lc {} pt 7 ps 0.6 title 'MC bg {}', "
+                          "'{}' index {} using 1:5 with lines lc {} notitle",
+                          i ? ", " : "", data, i, i + 1, bg, data, i, i + 1);
+    }
+    script += plot + "\nunset output\n";
+  }
+  const std::string gp = out.scratch("mc_plot.gp");
+  std::ofstream(gp) << script;
+  const std::string log = out.scratch("mc_gnuplot.log");
+  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, log).c_str()) != 0) {
+    for (const auto& name : images) std::remove(out.scratch(name).c_str());
+    return "gnuplot failed on mc_accuracy: plot skipped";
+  }
+  return "";
+}
+
+}  // namespace rangesim::app::mc

@@ -1,0 +1,169 @@
+#include "app/montecarlo/mc_sweep.h"
+
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace rangesim::app::mc {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct PointOutcome {
+  McPointStats stats;
+  long long trials = 0, variates = 0;
+  bool finished = false;
+};
+
+long long next_trial_count(const McPointStats& s, double metres_per_unit, const McSweepOptions& opt) {
+  const long long n = s.trials;
+  long long want = n + opt.trials;
+  const double hw = s.rms.half_width() * metres_per_unit;
+  if (std::isfinite(hw) && hw > 0) {
+    const double projected = static_cast<double>(n) * (hw / opt.target_error_m) * (hw / opt.target_error_m) * 1.2;
+    if (projected > static_cast<double>(want)) want = static_cast<long long>(std::min(projected, 9e18));
+  }
+  return std::min(want, opt.max_trials);
+}
+
+// All trials of one point, in order; returns unfinished if the stop flag rises between trials.
+PointOutcome run_point(const McModel& model, const McSweepPoint& p, const McSweepOptions& opt,
+                       const std::atomic<bool>& halt) {
+  PointOutcome o;
+  auto runner = model.point(p.signal, p.background, point_key(opt.seed, static_cast<std::uint64_t>(p.index)));
+  std::vector<double> errors;
+  long long n = 0, target = std::min(opt.trials, opt.max_trials);
+  for (;;) {
+    for (; n < target; ++n) {
+      if ((n & 15) == 0 && halt.load(std::memory_order_relaxed)) return o;
+      const McTrial t = runner->trial(n);
+      if (t.detected) errors.push_back(t.error);
+    }
+    o.stats = summarise_trials(n, errors);
+    if (opt.target_error_m <= 0 || meets_target(o.stats, model.metres_per_unit(), opt.target_error_m) ||
+        n >= opt.max_trials)
+      break;
+    target = next_trial_count(o.stats, model.metres_per_unit(), opt);
+  }
+  o.trials = n;
+  o.variates = runner->variates();
+  o.finished = true;
+  return o;
+}
+
+}  // namespace
+
+bool meets_target(const McPointStats& s, double metres_per_unit, double target_error_m) {
+  if (target_error_m <= 0) return true;
+  const double hw = s.rms.half_width() * metres_per_unit;
+  return std::isfinite(hw) && hw <= target_error_m;
+}
+
+McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>& points, const McSweepOptions& opt,
+                           SweepJournal* journal) {
+  McSweepResult res;
+  res.stats.resize(points.size());
+  res.point_variates.assign(points.size(), 0);
+  std::vector<std::size_t> order = opt.order;
+  if (order.empty())
+    for (std::size_t i = 0; i < points.size(); ++i) order.push_back(i);
+  // Points finished by an earlier run come from the journal.
+  std::vector<std::size_t> todo;
+  for (std::size_t i : order) {
+    if (journal) {
+      const auto it = journal->done().find(points[i].index);
+      if (it != journal->done().end()) {
+        res.stats[i] = McPointStats::from_record(it->second);
+        ++res.points_from_journal;
+        continue;
+      }
+    }
+    todo.push_back(i);
+  }
+
+  const auto start = Clock::now();
+  std::atomic<std::size_t> next{0};
+  std::atomic<long long> done{0}, trials{0}, variates{0};
+  std::atomic<bool> halt{false}, counted{true};
+  std::mutex mutex;
+  std::condition_variable cv;
+  std::exception_ptr failure;
+  int running = std::max(1, std::min<int>(opt.threads, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
+  const int workers = running;
+
+  auto worker = [&] {
+    try {
+      for (;;) {
+        if (halt.load()) break;
+        const std::size_t k = next.fetch_add(1);
+        if (k >= todo.size()) break;
+        const std::size_t i = todo[k];
+        PointOutcome o = run_point(model, points[i], opt, halt);
+        if (!o.finished) break;
+        if (journal) journal->append(points[i].index, o.stats.to_record());
+        res.stats[i] = o.stats;  // distinct element per point: no race
+        res.point_variates[i] = o.variates;
+        trials += o.trials;
+        if (o.variates < 0) counted = false;
+        else variates += o.variates;
+        ++done;
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      halt = true;
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    --running;
+    cv.notify_all();
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < workers; ++t) pool.emplace_back(worker);
+
+  // The calling thread watches the stop flag, the time budget and reports progress.
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    auto last = Clock::now();
+    while (running > 0) {
+      cv.wait_for(lock, std::chrono::milliseconds(100));
+      const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      if (opt.stop && opt.stop->load()) res.stopped = true, halt = true;
+      if (opt.max_seconds > 0 && elapsed > opt.max_seconds && !halt) res.out_of_time = true, halt = true;
+      if (opt.progress && std::chrono::duration<double>(Clock::now() - last).count() >= opt.progress_interval_s) {
+        last = Clock::now();
+        const long long d = done.load(), total = static_cast<long long>(todo.size());
+        const double left = d > 0 ? elapsed * static_cast<double>(total - d) / static_cast<double>(d) : NAN;
+        lock.unlock();
+        opt.progress(d + res.points_from_journal, total + res.points_from_journal, trials.load(), elapsed, left);
+        lock.lock();
+      }
+    }
+  }
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  res.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  res.trials_run = trials.load();
+  res.variates = counted ? variates.load() : -1;
+  res.complete = true;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!res.stats[i]) {
+      res.complete = false;
+      continue;
+    }
+    if (!meets_target(*res.stats[i], model.metres_per_unit(), opt.target_error_m)) {
+      ++res.points_capped;
+      const double hw = res.stats[i]->rms.half_width() * model.metres_per_unit();
+      if (std::isfinite(hw)) res.worst_capped_half_width_m = std::max(res.worst_capped_half_width_m, hw);
+    }
+  }
+  if (opt.progress && !todo.empty())
+    opt.progress(res.points_from_journal + done.load(), static_cast<long long>(points.size()), res.trials_run,
+                 res.wall_s, 0);
+  return res;
+}
+
+}  // namespace rangesim::app::mc

@@ -1,0 +1,120 @@
+// Monte Carlo on the clock-level kernels against the golden closed forms, per sensor.
+//
+// The stated test: at a detectable operating point, with the random streams of seed 1, the golden
+// value lies within twice the Monte Carlo 95% CI half-width (about +-3.9 standard errors) of the
+// Monte Carlo estimate, for the mean error (bias) and for the variance (or, where the golden model
+// gives the rms over spot positions only, for the rms error). Where the golden model is a
+// delta-method approximation (tof-lockin ratio, tof-spad centroid) the variance may also differ
+// by the approximation's stated 10 %.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/montecarlo/mc_models.h"
+#include "app/montecarlo/mc_stats.h"
+#include "core/physics.h"
+#include "core/preset.h"
+#include "golden/ls_conventional_eval.h"
+#include "golden/ls_demodulation/evaluation.h"
+#include "golden/position_noise.h"
+#include "golden/row_model.h"
+#include "golden/tof_lockin/lockin_point.h"
+#include "golden/tof_spad/point_model.h"
+
+namespace rangesim::app::mc {
+namespace {
+
+McPointStats run(const McModel& m, double signal, double background, long long trials, std::uint64_t index = 0) {
+  auto runner = m.point(signal, background, point_key(1, index));
+  std::vector<double> errors;
+  for (long long t = 0; t < trials; ++t) {
+    const McTrial r = runner->trial(t);
+    if (r.detected) errors.push_back(r.error);
+  }
+  return summarise_trials(trials, errors);
+}
+
+// golden within 2 CI half-widths of the MC value, plus a relative slack for approximations.
+void expect_agrees(const McInterval& mc, double golden, double rel_slack, const char* what) {
+  EXPECT_LE(std::fabs(mc.value - golden), 2 * mc.half_width() + rel_slack * std::fabs(golden))
+      << what << ": MC " << mc.value << " [" << mc.lo << ", " << mc.hi << "], golden " << golden;
+}
+
+// Variance interval from the std interval.
+McInterval squared(const McInterval& s) { return {s.value * s.value, s.lo * s.lo, s.hi * s.hi}; }
+
+TEST(McGolden, LsConventionalMeanAndVarianceAtFixedSpot) {
+  const LsConventionalConfig cfg = ls_conventional_from_params(load_preset("ls-conventional"));
+  const double sig = 0.05, bg = 0.003;
+  ASSERT_EQ(golden::evaluate_point(cfg, sig, bg).detect, golden::Detect::Detectable);
+  for (double u : {0.15, 0.5, 0.8}) {
+    SCOPED_TRACE(u);
+    const golden::RowModel row = golden::make_row_model(cfg, sig, bg);
+    const double x0 = row.centre_pixel - 0.5 + u;
+    const golden::PositionMoments g = golden::position_moments(row, x0);
+    ASSERT_TRUE(g.exact);
+    const McPointStats s = run(LsConventionalMc(cfg, SpotPlacement{u}), sig, bg, 4000);
+    expect_agrees(s.p_detect, g.p_detect, 0, "p_detect");
+    expect_agrees(s.bias, g.mean_px - x0, 0, "mean error (px)");
+    expect_agrees(squared(s.std), g.var_px2, 0, "variance (px^2)");
+    EXPECT_GT(s.std.value, 0.01);  // noise does move the estimate here
+  }
+}
+
+// The golden accuracy averages the noise over spot positions with a midpoint rule of
+// evaluation.subpixel_points positions (16 in the preset). Monte Carlo draws the position
+// uniformly, and showed that 16 points are not enough: at (0.12 V, 0.002 V) the 16-point golden
+// value is 0.0675 px against 0.0796 [0.0784, 0.0807] px by Monte Carlo, and the golden value
+// converges to the Monte Carlo one as the rule is refined (64: 0.0811, 256: 0.0794, 1024: 0.0792).
+// The comparison therefore uses 1024 positions.
+TEST(McGolden, LsConventionalAccuracyOverSpotPositions) {
+  LsConventionalConfig cfg = ls_conventional_from_params(load_preset("ls-conventional"));
+  cfg.grid.subpixel_points = 1024;
+  for (auto [sig, bg] : {std::pair{0.05, 0.003}, std::pair{0.4, 0.02}, std::pair{0.12, 0.002}}) {
+    SCOPED_TRACE(sig);
+    const golden::OperatingPoint g = golden::evaluate_point(cfg, sig, bg);
+    ASSERT_EQ(g.detect, golden::Detect::Detectable);
+    const McPointStats s = run(LsConventionalMc(cfg), sig, bg, 6000);
+    expect_agrees(s.rms, g.accuracy_px, 0.0, "accuracy (px)");
+  }
+}
+
+TEST(McGolden, TofLockinMeanAndVariance) {
+  TofLockinConfig cfg = tof_lockin_from_params(load_preset("tof-lockin"));
+  const double is = 3e-10, ib = 1e-10;
+  const golden::LockinPoint g = golden::evaluate_point(cfg, is, ib, cfg.eval.distance_m, cfg.eval.frames_averaged);
+  ASSERT_EQ(g.detect, golden::LockinDetect::Detectable);
+  const McPointStats s = run(TofLockinMc(cfg), is, ib, 3000);
+  EXPECT_EQ(s.detected, s.trials);
+  expect_agrees(s.bias, g.bias_m, 0, "bias (m)");
+  const double var = g.std_m * g.std_m / static_cast<double>(cfg.eval.frames_averaged);
+  expect_agrees(squared(s.std), var, 0.10, "variance (m^2)");
+  expect_agrees(s.rms, g.accuracy_m, 0.05, "accuracy (m)");
+}
+
+TEST(McGolden, TofSpadMeanAndVariance) {
+  TofSpadConfig cfg = tof_spad_from_params(load_preset("tof-spad"));
+  cfg.histogram.integration_time_s = 5e-3;  // keeps the test short; the model is the same
+  const double sig = 4e4, bg = 2e5;
+  const golden::spad::SpadModel model(cfg);
+  const golden::spad::PointResult g = model.evaluate(sig, bg, cfg.evaluation.distance_m);
+  ASSERT_EQ(g.detect, "detectable");
+  ASSERT_TRUE(g.moments.defined);
+  // The golden histogram bounds afterpulses but does not model them: off for the comparison.
+  const McPointStats s = run(TofSpadMc(cfg, false), sig, bg, 500);
+  EXPECT_EQ(s.detected, s.trials);
+  expect_agrees(s.bias, g.bias_m, 0, "bias (m)");
+  expect_agrees(squared(s.std), g.std_m * g.std_m, 0.10, "variance (m^2)");
+}
+
+TEST(McGolden, LsDemodulationAccuracy) {
+  const LsDemodulationConfig cfg = ls_demodulation_from_params(load_preset("ls-demodulation"));
+  const double sig = cfg.grid.signal_min_A * 30, bg = cfg.grid.background_min_A * 10;
+  const golden::DemodPoint g = golden::evaluate_demod_point(cfg, sig, bg);
+  ASSERT_EQ(g.detect, golden::DemodDetect::Detectable);
+  const McPointStats s = run(LsDemodulationMc(cfg), sig, bg, 600);
+  expect_agrees(s.rms, g.accuracy.accuracy_px, 0.05, "accuracy (px)");
+}
+
+}  // namespace
+}  // namespace rangesim::app::mc
