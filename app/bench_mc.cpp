@@ -37,11 +37,15 @@ McBenchFigures measure_mc_bench(bool quick) {
   }
   if (points.empty()) throw std::runtime_error("bench_mc: no detectable point in the preset");
   mc::McSweepOptions opt;
-  opt.trials = quick ? 1500 : 6000;
+  opt.trials = quick ? 20000 : 80000;
   opt.seed = 7;
 
   McBenchFigures f;
+  // Warm-up (page faults, caches, CPU frequency) on a tenth of the trials, not measured.
   opt.threads = 1;
+  opt.trials /= 10;
+  mc::run_mc_sweep(model, points, opt, nullptr);
+  opt.trials *= 10;
   const mc::McSweepResult r1 = mc::run_mc_sweep(model, points, opt, nullptr);
   f.sweep_1thread_s = r1.wall_s;
   opt.threads = 2;

@@ -7,7 +7,9 @@
 #include <csignal>
 #include <signal.h>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <fmt/format.h>
 #include <thread>
 #include <unistd.h>
@@ -168,13 +170,18 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   sopt.progress = &progress;
   const mc::McSweepResult r = mc::run_mc_sweep(*model, points, sopt, &journal);
   if (!r.complete) {
-    long long have = 0;
-    for (const auto& s : r.stats) have += s ? 1 : 0;
+    long long have = 0;  // records in the journal (read only: abandoned workers may still append)
+    std::ifstream in(journal.path());
+    for (std::string line; std::getline(in, line);) have += line.rfind("P ", 0) == 0;
     fmt::print(stderr,
                "\nrangesim evaluate: {}: {} of {} points finished and kept in {}; nothing else written.\n"
                "To continue, run:\n  {}\n",
                r.out_of_time ? fmt::format("--max-seconds {} exceeded", sopt.max_seconds) : "interrupted", have,
                points.size(), journal.path(), resume_command(opt, dir));
+    if (r.abandoned) {
+      std::fflush(stderr);
+      std::_Exit(r.out_of_time ? kExitBudget : kExitInterrupted);  // workers still running: no unwinding
+    }
     return r.out_of_time ? kExitBudget : kExitInterrupted;
   }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -86,68 +87,92 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
   }
 
   const auto start = Clock::now();
-  std::atomic<std::size_t> next{0};
-  std::atomic<long long> done{0}, trials{0}, variates{0};
-  std::atomic<bool> halt{false}, counted{true};
-  std::mutex mutex;
-  std::condition_variable cv;
-  std::exception_ptr failure;
-  int running = std::max(1, std::min<int>(opt.threads, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
-  const int workers = running;
+  // State shared with the workers lives on the heap, owned jointly: if the workers have to be
+  // abandoned (see stop_grace_s) they may still touch it after this function has returned.
+  struct Shared {
+    std::atomic<std::size_t> next{0};
+    std::atomic<long long> done{0}, trials{0}, variates{0};
+    std::atomic<bool> halt{false}, counted{true};
+    std::mutex mutex;
+    std::condition_variable cv;
+    std::exception_ptr failure;
+    int running = 0;
+    std::vector<std::size_t> todo;
+    std::vector<std::optional<McPointStats>> stats;
+    std::vector<long long> point_variates;
+  };
+  auto sh = std::make_shared<Shared>();
+  sh->todo = todo;
+  sh->stats = res.stats;
+  sh->point_variates = res.point_variates;
+  sh->running = std::max(1, std::min<int>(opt.threads, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
+  const int workers = sh->running;
 
-  auto worker = [&] {
+  auto worker = [sh, &model, &points, &opt, journal] {
     try {
       for (;;) {
-        if (halt.load()) break;
-        const std::size_t k = next.fetch_add(1);
-        if (k >= todo.size()) break;
-        const std::size_t i = todo[k];
-        PointOutcome o = run_point(model, points[i], opt, halt);
+        if (sh->halt.load()) break;
+        const std::size_t k = sh->next.fetch_add(1);
+        if (k >= sh->todo.size()) break;
+        const std::size_t i = sh->todo[k];
+        PointOutcome o = run_point(model, points[i], opt, sh->halt);
         if (!o.finished) break;
         if (journal) journal->append(points[i].index, o.stats.to_record());
-        res.stats[i] = o.stats;  // distinct element per point: no race
-        res.point_variates[i] = o.variates;
-        trials += o.trials;
-        if (o.variates < 0) counted = false;
-        else variates += o.variates;
-        ++done;
+        sh->stats[i] = o.stats;  // distinct element per point: no race
+        sh->point_variates[i] = o.variates;
+        sh->trials += o.trials;
+        if (o.variates < 0) sh->counted = false;
+        else sh->variates += o.variates;
+        ++sh->done;
       }
     } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!failure) failure = std::current_exception();
-      halt = true;
+      std::lock_guard<std::mutex> lock(sh->mutex);
+      if (!sh->failure) sh->failure = std::current_exception();
+      sh->halt = true;
     }
-    std::lock_guard<std::mutex> lock(mutex);
-    --running;
-    cv.notify_all();
+    std::lock_guard<std::mutex> lock(sh->mutex);
+    --sh->running;
+    sh->cv.notify_all();
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < workers; ++t) pool.emplace_back(worker);
 
   // The calling thread watches the stop flag, the time budget and reports progress.
   {
-    std::unique_lock<std::mutex> lock(mutex);
+    std::unique_lock<std::mutex> lock(sh->mutex);
     auto last = Clock::now();
-    while (running > 0) {
-      cv.wait_for(lock, std::chrono::milliseconds(100));
+    double halted_at = -1;
+    while (sh->running > 0) {
+      sh->cv.wait_for(lock, std::chrono::milliseconds(100));
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-      if (opt.stop && opt.stop->load()) res.stopped = true, halt = true;
-      if (opt.max_seconds > 0 && elapsed > opt.max_seconds && !halt) res.out_of_time = true, halt = true;
+      if (opt.stop && opt.stop->load()) res.stopped = true, sh->halt = true;
+      if (opt.max_seconds > 0 && elapsed > opt.max_seconds && !sh->halt) res.out_of_time = true, sh->halt = true;
+      if (sh->halt && halted_at < 0) halted_at = elapsed;
+      // A trial that does not return within the grace time after a stop (a kernel stuck beyond its
+      // own budget): leave the workers behind; the caller must end the process at once.
+      if (sh->halt && !sh->failure && halted_at >= 0 && elapsed - halted_at > opt.stop_grace_s) {
+        for (auto& t : pool) t.detach();
+        res.abandoned = true;
+        res.wall_s = elapsed;
+        return res;
+      }
       if (opt.progress && std::chrono::duration<double>(Clock::now() - last).count() >= opt.progress_interval_s) {
         last = Clock::now();
-        const long long d = done.load(), total = static_cast<long long>(todo.size());
+        const long long d = sh->done.load(), total = static_cast<long long>(todo.size());
         const double left = d > 0 ? elapsed * static_cast<double>(total - d) / static_cast<double>(d) : NAN;
         lock.unlock();
-        opt.progress(d + res.points_from_journal, total + res.points_from_journal, trials.load(), elapsed, left);
+        opt.progress(d + res.points_from_journal, total + res.points_from_journal, sh->trials.load(), elapsed, left);
         lock.lock();
       }
     }
   }
   for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  if (sh->failure) std::rethrow_exception(sh->failure);
+  res.stats = std::move(sh->stats);
+  res.point_variates = std::move(sh->point_variates);
   res.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
-  res.trials_run = trials.load();
-  res.variates = counted ? variates.load() : -1;
+  res.trials_run = sh->trials.load();
+  res.variates = sh->counted ? sh->variates.load() : -1;
   res.complete = true;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!res.stats[i]) {
@@ -161,7 +186,7 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
     }
   }
   if (opt.progress && !todo.empty())
-    opt.progress(res.points_from_journal + done.load(), static_cast<long long>(points.size()), res.trials_run,
+    opt.progress(res.points_from_journal + sh->done.load(), static_cast<long long>(points.size()), res.trials_run,
                  res.wall_s, 0);
   return res;
 }

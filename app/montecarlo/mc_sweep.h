@@ -36,6 +36,7 @@ struct McSweepOptions {
   // (points done, points total, trials run, seconds elapsed, seconds left estimated).
   void (*progress)(long long, long long, long long, double, double) = nullptr;
   double progress_interval_s = 1.0;
+  double stop_grace_s = 10.0;  // after a stop, how long running trials may take to return
 };
 
 struct McSweepResult {
@@ -44,6 +45,8 @@ struct McSweepResult {
   bool complete = false;           // every point has its statistics
   bool stopped = false;            // stop flag seen
   bool out_of_time = false;        // max_seconds exceeded
+  bool abandoned = false;          // workers did not return within stop_grace_s of a stop: the
+                                   // caller must end the process now (std::_Exit); journal is safe
   long long trials_run = 0;        // trials run in this process (not from the journal)
   long long variates = 0;          // random variates drawn in this process (-1: not counted)
   long long points_from_journal = 0;
