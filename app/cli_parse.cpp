@@ -14,7 +14,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Sensors (presets): ls-conventional, ls-demodulation, tof-lockin, tof-spad; a path to a\n"
       "preset .toml file works wherever a sensor is expected.\n"
       "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
-      "3 sensor not modelled yet for the command.",
+      "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out, 130 interrupted\n"
+      "(Ctrl-C); 4 and 130 keep the sweep journal and print the command that resumes.",
       "rangesim"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rangesim 0.1.0");

@@ -1,6 +1,7 @@
 // rangesim: command-line entry point. The command line is parsed by parse_command_line()
 // (cli_parse.cpp), subcommands live in cmd_*.cpp; this file only runs the parsed command and maps
-// errors to exit codes (0 ok, 1 internal, 2 bad input, 3 not modelled yet).
+// errors to exit codes (0 ok, 1 internal, 2 bad input, 3 not modelled yet; run_evaluate_mc also
+// returns 4 and 130 for a sweep stopped by its time budget or Ctrl-C).
 #include <fmt/format.h>
 #include <iostream>
 
