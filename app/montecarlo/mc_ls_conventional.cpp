@@ -2,7 +2,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "app/montecarlo/mc_models.h"
+#include "core/user_error.h"
 #include "golden/triangulation.h"
 #include "systemc/ls_conventional_sensor_kernel.h"
 
@@ -68,7 +71,13 @@ class Runner : public McPointRunner {
 
 }  // namespace
 
-LsConventionalMc::LsConventionalMc(LsConventionalConfig cfg, SpotPlacement spot) : cfg_(std::move(cfg)), spot_(spot) {}
+LsConventionalMc::LsConventionalMc(LsConventionalConfig cfg, SpotPlacement spot) : cfg_(std::move(cfg)), spot_(spot) {
+  // The clock-level pixel array has the in-pixel comparator only (systemc/pixel_array_kernel.h).
+  if (cfg_.comparator.adc_bits != 1)
+    throw UserError(fmt::format("--adc-bits {} (comparator.adc_bits): --trials runs the clock-level model, which has "
+                                "the 1-bit in-pixel comparator only; allowed: 1",
+                                cfg_.comparator.adc_bits));
+}
 
 double LsConventionalMc::metres_per_unit() const {
   return golden::range_per_px_m(cfg_.optics, cfg_.pixel.pitch_m, cfg_.optics.distance_m);

@@ -187,7 +187,8 @@ TEST(EvaluateMcCli, TrialCapIsReported) {
 
 TEST(EvaluateMcCli, BadMonteCarloFlagsExit2WritingNothing) {
   for (const std::string flags : {"--trials 1", "--trials 100 --threads 0", "--target-error -1", "--target-error nan",
-                                  "--trials 50 --max-trials 10", "--trials 10 --max-seconds 0"}) {
+                                  "--trials 50 --max-trials 10", "--trials 10 --max-seconds 0",
+                                  "--trials 10 --adc-bits 2"}) {
     SCOPED_TRACE(flags);
     const std::string dir = make_temp_dir() + "/x";
     const CommandResult r = run_command(kBin + " evaluate ls-conventional " + flags + " --out " + dir);
