@@ -4,6 +4,7 @@
 // (gtest_discover_tests runs each test alone).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -33,7 +34,16 @@ std::string text(const CosimReport& r) {
   return s;
 }
 
+void print_summary(const CosimReport& r) {
+  std::printf("%s: %llu cycles, %llu transactions, %llu golden checks, %llu mismatches\n",
+              r.target.c_str(), static_cast<unsigned long long>(r.cycles),
+              static_cast<unsigned long long>(r.transactions),
+              static_cast<unsigned long long>(r.golden_checks),
+              static_cast<unsigned long long>(r.mismatches));
+}
+
 void expect_clean(const CosimReport& r, std::uint64_t cycles, std::uint64_t min_transactions) {
+  print_summary(r);
   EXPECT_GE(r.cycles, cycles);
   EXPECT_EQ(r.mismatches, 0u) << text(r);
   EXPECT_EQ(r.rtl_assertions_failed, 0);
@@ -63,10 +73,12 @@ std::string record_path(const char* name) {
 
 TEST(LockinCosimTargets, ListedWithTheirFaults) {
   const auto targets = rangesim::tb::lockin_tdc_cosim_targets();
-  ASSERT_EQ(targets.size(), 3u);
+  ASSERT_EQ(targets.size(), 5u);
   EXPECT_STREQ(targets[0].name, "tof-lockin");
-  EXPECT_STREQ(targets[1].name, "lockin_gate_generator");
-  EXPECT_STREQ(targets[2].name, "column_adc");
+  EXPECT_STREQ(targets[1].name, "tof-spad");
+  EXPECT_STREQ(targets[2].name, "lockin_gate_generator");
+  EXPECT_STREQ(targets[3].name, "column_adc");
+  EXPECT_STREQ(targets[4].name, "tdc");
   for (const auto& t : targets) {
     EXPECT_FALSE(t.faults.empty()) << t.name;
     EXPECT_NE(t.run, nullptr);
