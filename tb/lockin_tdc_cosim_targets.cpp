@@ -2,6 +2,7 @@
 #include "tb/lockin_tdc_cosim_targets.h"
 
 #include "tb/lockin_gate_generator_cosim.h"
+#include "tb/ls_demodulation_cosim.h"
 #include "tb/tof_spad_cosim.h"
 
 namespace rangesim::tb {
@@ -14,6 +15,11 @@ CosimReport tdc(const CosimOptions& o) { return run_tof_spad_cosim(o, true); }
 
 std::vector<CosimTarget> lockin_tdc_cosim_targets() {
   return {
+      {"ls-demodulation",
+       "ls-demodulation frame sequencer + address search vs the ticking sensor kernel: phases, "
+       "address stream, row results, centres",
+       {"dropped_row", "address_bit_flip"},
+       &run_ls_demodulation_cosim},
       {"tof-lockin",
        "tof-lockin frame sequencer + gate generator + column ADCs vs the tick-mode sensor kernel; "
        "ranges (eq. 2.25) from RTL codes vs the kernel's",

@@ -73,12 +73,13 @@ std::string record_path(const char* name) {
 
 TEST(LockinCosimTargets, ListedWithTheirFaults) {
   const auto targets = rangesim::tb::lockin_tdc_cosim_targets();
-  ASSERT_EQ(targets.size(), 5u);
-  EXPECT_STREQ(targets[0].name, "tof-lockin");
-  EXPECT_STREQ(targets[1].name, "tof-spad");
-  EXPECT_STREQ(targets[2].name, "lockin_gate_generator");
-  EXPECT_STREQ(targets[3].name, "column_adc");
-  EXPECT_STREQ(targets[4].name, "tdc");
+  ASSERT_EQ(targets.size(), 6u);
+  EXPECT_STREQ(targets[0].name, "ls-demodulation");
+  EXPECT_STREQ(targets[1].name, "tof-lockin");
+  EXPECT_STREQ(targets[2].name, "tof-spad");
+  EXPECT_STREQ(targets[3].name, "lockin_gate_generator");
+  EXPECT_STREQ(targets[4].name, "column_adc");
+  EXPECT_STREQ(targets[5].name, "tdc");
   for (const auto& t : targets) {
     EXPECT_FALSE(t.faults.empty()) << t.name;
     EXPECT_NE(t.run, nullptr);
