@@ -451,18 +451,25 @@ CosimReport run_tof_spad_cosim(const CosimOptions& o, bool high_rates, const std
   r.target = high_rates ? "tdc" : "tof-spad";
   VerilatedContext* ctx = cosim_verilator_context(o);
   std::mt19937_64 rng(o.seed);
-  // Rows of random setups until the requested cycles are covered (at most 64 rows).
+  // Rows of random setups until the requested cycles are covered; past 255 rows (ROW_BITS)
+  // the integration gets longer instead (more laser cycles per row).
   Setup s = random_setup(rng, high_rates);
   {
     const TofSpadKernel k(s.cfg, 1, kCpt, {});
     const long long row = k.laser_cycles() * k.phase_bins() + k.readout_words_per_row() * k.cycles_per_word();
-    const long long want_rows = std::clamp<long long>((static_cast<long long>(o.cycles) + row - 1) / row, 1, 64);
-    while (s.rows < want_rows) {
+    const long long want_rows = std::max<long long>((static_cast<long long>(o.cycles) + row - 1) / row, 1);
+    const long long rows = std::min<long long>(want_rows, 255);
+    while (s.rows < rows) {
       const Setup more = random_setup(rng, high_rates);
       s.rates.insert(s.rates.end(), more.rates.begin(), more.rates.end());
       s.rows += more.rows;
     }
-    s.rates.resize(static_cast<size_t>(std::max<long long>(s.rows, want_rows)) * kCpt);
+    s.rows = static_cast<int>(std::min<long long>(s.rows, 255));
+    s.rates.resize(static_cast<size_t>(s.rows) * kCpt);
+    if (want_rows > 255) {
+      const long long stretch = (want_rows + 254) / 255;
+      s.cfg.histogram.integration_time_s *= static_cast<double>(stretch);
+    }
   }
   const sc_core::sc_time period(s.cfg.tdc.lsb_s, sc_core::SC_SEC);
   SpadCosimTop top("cosim", o, r, std::move(s), record, period);
