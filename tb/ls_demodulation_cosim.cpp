@@ -193,10 +193,11 @@ class DemodCosimTop : public sc_core::sc_module {
     // The address stream against the kernel's search pins (cycle-exact, shared kernel).
     bool a_bit = addr_bit.read();
     if (o_.inject_fault == "address_bit_flip" && addr_valid.read() && !r_.fault_injected &&
-        frame_ == 0 && e_.row == 1) {
+        (frame_ > 0 || e_.row >= 1)) {
       a_bit = !a_bit;
       r_.fault_injected = true;
-      r_.fault_site = "frame 0 row 1: first streamed RTL address bit flipped";
+      r_.fault_site = "frame " + std::to_string(frame_) + " row " + std::to_string(e_.row) +
+                      ": first streamed RTL address bit from frame 0 row 1 on flipped";
     }
     if (e_.phase == 2 && row_cycle_ > 0) {
       const AddressSearchPins p = kernel_.search_pins();
