@@ -126,7 +126,18 @@ class GateCosimTop : public sc_core::sc_module {
       start.write(true);
       wait();
       start.write(false);
-      for (long long c = k.accumulations() * k.period_cycles(); c > 0; --c) wait();
+      const long long cycles = k.accumulations() * k.period_cycles();
+      if (o_.inject_fault == "period_change_while_busy" && ops_started_ == 1) {
+        // Protocol violation: T_rep shrinks below the running cycle counter mid-operation;
+        // the RTL assertion a_cycle_in_period must fire (the scoreboard sees mismatches too).
+        for (long long c = 0; c < k.period_cycles() - 1; ++c) wait();
+        period.write(static_cast<std::uint32_t>(k.t0_cycles()) / 2 + 1);
+        r_.fault_injected = true;
+        r_.fault_site = "operation 1: period_cycles_i shrunk while busy";
+        for (long long c = k.period_cycles() - 1; c < cycles; ++c) wait();
+      } else {
+        for (long long c = cycles; c > 0; --c) wait();
+      }
       ++ops_started_;
       if (cycle_ >= o_.cycles) break;  // whole operations only
     }

@@ -32,7 +32,7 @@ std::vector<CosimTarget> lockin_tdc_cosim_targets() {
        &tof_spad},
       {"lockin_gate_generator",
        "PHASE1/2/3 (TX1/TX2/TXD) and light pulse vs LockinGateKernel, random T0/duty/N_acc",
-       {"gate_shift"},
+       {"gate_shift", "period_change_while_busy"},
        &gate_generator},
       {"column_adc",
        "single-slope column ADC counter vs LockinColumnAdcKernel, random resolution/inputs",

@@ -106,6 +106,19 @@ TEST(LockinGateGeneratorCosim, GateShiftedOneCycleIsReported) {
   EXPECT_NE(text(r).find("frame 1 "), std::string::npos) << text(r);  // operation 1
 }
 
+// A protocol violation (T_rep shrinking under the running counter) fires the named assertion.
+TEST(LockinGateGeneratorCosim, PeriodChangeWhileBusyFiresRtlAssertion) {
+  REQUIRE_FRESH_ELABORATION();
+  CosimOptions o;
+  o.cycles = 3000;
+  o.seed = 13;
+  o.inject_fault = "period_change_while_busy";
+  const CosimReport r = rangesim::tb::run_lockin_gate_generator_cosim(o);
+  ASSERT_TRUE(r.fault_injected);
+  EXPECT_EQ(r.rtl_assertions_failed, 1);
+  EXPECT_GT(r.mismatches, 0u);
+}
+
 TEST(ColumnAdcCosim, RandomConversionsMatch) {
   REQUIRE_FRESH_ELABORATION();
   CosimOptions o;
