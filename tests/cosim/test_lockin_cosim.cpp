@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tb/cosim_scoreboard.h"
@@ -156,6 +157,21 @@ TEST(TofLockinCosim, OtherSeedsMatch) {
   o.seed = 32;
   const CosimReport r = rangesim::tb::run_tof_lockin_cosim(o);
   expect_clean(r, o.cycles, 100);
+}
+
+TEST(TofLockinCosim, WritesRtlWaveform) {
+  REQUIRE_FRESH_ELABORATION();
+  CosimOptions o;
+  o.cycles = 1000;
+  o.seed = 35;
+  o.trace_path = ::testing::TempDir() + "tof_lockin_cosim.vcd";
+  std::remove(o.trace_path.c_str());
+  const CosimReport r = rangesim::tb::run_tof_lockin_cosim(o);
+  EXPECT_EQ(r.mismatches, 0u) << text(r);
+  std::ifstream f(o.trace_path);
+  const std::string vcd((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  EXPECT_NE(vcd.find("$enddefinitions"), std::string::npos);
+  EXPECT_NE(vcd.find("tx1_o"), std::string::npos);
 }
 
 TEST(TofLockinCosim, GateShiftedOneCycleIsReported) {
