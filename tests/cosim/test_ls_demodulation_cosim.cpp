@@ -47,7 +47,7 @@ void expect_clean(const CosimReport& r, std::uint64_t cycles) {
 TEST(LsDemodulationCosim, RandomFramesMatch) {
   REQUIRE_FRESH_ELABORATION();
   CosimOptions o;
-  o.cycles = 20000;
+  o.cycles = 12000;
   o.seed = 51;
   expect_clean(run_ls_demodulation_cosim(o), o.cycles);
 }
@@ -55,7 +55,7 @@ TEST(LsDemodulationCosim, RandomFramesMatch) {
 TEST(LsDemodulationCosim, OtherSeedMatches) {
   REQUIRE_FRESH_ELABORATION();
   CosimOptions o;
-  o.cycles = 10000;
+  o.cycles = 6000;
   o.seed = 52;
   expect_clean(run_ls_demodulation_cosim(o), o.cycles);
 }

@@ -60,7 +60,7 @@ std::string record_path(const char* name) {
 TEST(TofSpadCosim, RandomRowsMatch) {
   REQUIRE_FRESH_ELABORATION();
   CosimOptions o;
-  o.cycles = 100000;
+  o.cycles = 40000;
   o.seed = 41;
   expect_clean(run_tof_spad_cosim(o, false, record_path("tof_spad_sequencer.rec")), o.cycles);
 }
