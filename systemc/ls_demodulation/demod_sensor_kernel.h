@@ -92,6 +92,9 @@ class DemodSensorKernel {
   int row() const { return row_; }                 // row being read out
   bool row_valid() const { return row_strobe_; }   // a row result completed at the last edge
   const DemodRowResult& last_row() const { return last_row_; }
+  // Pins of the row search in the current cycle (the address stream; co-simulation compares
+  // them with rtl/ls_demodulation_sequencer.sv cycle by cycle).
+  AddressSearchPins search_pins() const { return search_.pins(); }
   long long cycle() const { return cycle_; }       // edges since construction
   const DemodFrameResult& result() const { return res_; }
 

@@ -7,6 +7,7 @@
 #include "core/physics.h"
 #include "golden/tof_spad/pile_up.h"
 #include "golden/tof_spad/point_model.h"
+#include "systemc/tof_spad/tdc_kernel.h"
 
 namespace rangesim::systemc::spad {
 
@@ -46,26 +47,8 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
     px.emplace_back(cfg_, rates(row, col), opt_.noise, laser_cycles_, opt_.seed, frame, static_cast<std::uint32_t>(row),
                     static_cast<std::uint32_t>(col));
   }
-  GroupHistogram g;
-  g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
-  std::vector<long long> armed_diff(static_cast<size_t>(np) + 1, 0);
-  long long full_cycles = 0;
-  const long long end_bin = laser_cycles_ * np;
-  // Armed at the start of absolute bins [from, to]: partial first/last cycles into the
-  // difference array, whole cycles into a counter.
-  auto add_armed = [&](long long from, long long to) {
-    if (from > to) return;
-    const long long kf = from / np, kt = to / np;
-    const int pf = static_cast<int>(from % np), pt = static_cast<int>(to % np);
-    if (kf == kt) {
-      ++armed_diff[static_cast<size_t>(pf)], --armed_diff[static_cast<size_t>(pt) + 1];
-      return;
-    }
-    ++armed_diff[static_cast<size_t>(pf)], --armed_diff[static_cast<size_t>(np)];
-    full_cycles += kt - kf - 1;
-    ++armed_diff[0], --armed_diff[static_cast<size_t>(pt) + 1];
-  };
-  long long armed_from = 0;  // absolute phase bin from which the TDC is armed
+  // The shared TDC, hit by hit (systemc/tof_spad/tdc_kernel.h).
+  TdcGroupKernel tdc(np, nc, block_event_bins_, block_overflow_bins_, laser_cycles_, cpt);
   for (;;) {
     int who = -1;
     double t = SpadPixelKernel::kNever;
@@ -73,28 +56,12 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
       if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
     if (who < 0) break;
     px[static_cast<size_t>(who)].pop();
-    if (t < 0) { ++g.lost_busy; continue; }  // jittered before the first START
+    if (t < 0) { tdc.lose(); continue; }  // jittered before the first START
     const long long cycle = static_cast<long long>(t / period_s);
     if (cycle >= laser_cycles_) break;
-    const int bin = phase_bin(t - static_cast<double>(cycle) * period_s);
-    const long long abs_bin = cycle * np + bin;
-    if (abs_bin < armed_from) { ++g.lost_busy; continue; }
-    add_armed(armed_from, abs_bin);
-    long long rearm;
-    if (bin < nc) {
-      ++g.events[static_cast<size_t>(who)][static_cast<size_t>(bin)];
-      rearm = abs_bin + block_event_bins_;
-    } else {
-      ++g.overflows;
-      rearm = abs_bin + block_overflow_bins_;
-    }
-    armed_from = std::max(rearm, (cycle + 1) * np);  // a stopped TDC waits for the next START
+    tdc.hit(who, cycle, phase_bin(t - static_cast<double>(cycle) * period_s));
   }
-  add_armed(armed_from, end_bin - 1);
-  g.armed.assign(static_cast<size_t>(nc), 0);
-  long long run = 0;
-  for (int i = 0; i < nc; ++i) run += armed_diff[static_cast<size_t>(i)], g.armed[static_cast<size_t>(i)] = run + full_cycles;
-  g.starts = laser_cycles_;
+  GroupHistogram g = tdc.finish();
   for (const auto& p : px) g.avalanches += p.avalanches(), g.photons += p.photons();
   return g;
 }
