@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
@@ -36,6 +37,13 @@ namespace rangesim::app {
 namespace {
 
 namespace fs = std::filesystem;
+
+// SystemC displays its reports on stdout, which must stay clean JSON under --json: display them
+// on stderr instead (logging, stopping and throwing are left to the default handler).
+void report_to_stderr(const sc_core::sc_report& rep, const sc_core::sc_actions& actions) {
+  if (actions & sc_core::SC_DISPLAY) std::cerr << sc_core::sc_report_compose_message(rep) << std::endl;
+  sc_core::sc_report_handler::default_handler(rep, actions & ~sc_core::SC_DISPLAY);
+}
 using Clock = std::chrono::steady_clock;
 
 struct Metrics {
@@ -46,6 +54,10 @@ struct Metrics {
 
 int run_simulate(const SimulateOptions& opt) {
   const auto t_start = Clock::now();
+  // SystemC's informational reports (trace timescale, "stopped by user") are noise here; its
+  // warnings and errors go to stderr (stdout carries --json).
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+  sc_core::sc_report_handler::set_handler(report_to_stderr);
   ParamSet params = load_modelled_preset(opt.sensor, "simulate");
   if (params.sensor_id() == "ls-demodulation") return run_simulate_ls_demodulation(opt, params);
   if (params.sensor_id() == "tof-lockin") return run_simulate_tof_lockin(opt, params);

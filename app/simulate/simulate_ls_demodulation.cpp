@@ -118,7 +118,7 @@ struct DemodOptics {
   }
   double centre_px(long long b, int row) const {
     const double z = range_m(b, row);
-    return z > 0 ? beam_column(b) + disparity_px(z) - disparity_px(cfg.optics.distance_m) : -1e9;
+    return z > 0 ? beam_column(b) + disparity_px(z) - disparity_px(cfg.optics.distance_m) : NAN;  // NaN: the beam misses
   }
   bool visible(long long b, int row) const {
     const double x = centre_px(b, row);
@@ -135,6 +135,7 @@ struct DemodOptics {
     s.background_A.assign(s.beam_A.size(), sc.background_A);
     for (int r = 0; r < R; ++r) {
       const double x0 = centre_px(static_cast<long long>(f), r);
+      if (!std::isfinite(x0)) continue;  // no lit point on this row
       for (int c = 0; c < C; ++c)
         s.beam_A[static_cast<std::size_t>(r) * C + c] = sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
     }
@@ -201,7 +202,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
     for (int r = 0; r < rows; ++r) {
       const auto& rr = fr.rows[static_cast<std::size_t>(r)];
       const bool vis = optics.visible(b, r);
-      const double truth_x = optics.centre_px(b, r), truth_z = optics.range_m(b, r);
+      const double truth_x = optics.centre_px(b, r), truth_z = optics.visible(b, r) || optics.range_m(b, r) > 0 ? optics.range_m(b, r) : NAN;
       double range = NAN, err_px = NAN, err_m = NAN;
       if (rr.valid()) {
         range = optics.range_from_centre_m(b, rr.centre_px());
@@ -245,6 +246,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
       {"preset", params.origin()},
       {"scene", sc.name},
       {"scene_file", sc.file},
+      {"target_shape", sc.shape},
       {"harness", opt.kernel_only ? "kernel" : "systemc"},
       {"event_skipping", !opt.tick},
       {"noise", !opt.noise_free},
