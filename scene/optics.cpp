@@ -17,14 +17,18 @@ constexpr double kPi = 3.14159265358979323846;
 SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene) : config_(config), scene_(scene) {
   const PixelConfig& px = config.pixel;
   const double f = config.optics.focal_length_m;
-  const double lens_area = kPi * std::pow(f / (2 * scene.f_number), 2);
+  // The camera's radiometry: the preset's, unless the scene's [camera] overrides it.
+  const double f_number = scene.has("camera.f_number") ? scene.f_number : config.optics.f_number;
+  const double fill_factor = scene.has("camera.fill_factor") ? scene.fill_factor : px.fill_factor;
+  const double responsivity = scene.has("camera.responsivity_A_per_W") ? scene.responsivity_A_per_W : px.responsivity_A_per_W;
+  const double lens_area = kPi * std::pow(f / (2 * f_number), 2);
   const double sigma_px = golden::spot_sigma_px(config.spot);
   // rho (P / rows) A_lens / pi -> current at the spot peak -> swing; divided by z^2 later.
   const double collected_z2 = scene.reflectance * (scene.beam_power_W / px.rows) * lens_area / kPi;
-  const double peak_current_z2 = scene.responsivity_A_per_W * scene.fill_factor * collected_z2 / (sigma_px * std::sqrt(2 * kPi));
+  const double peak_current_z2 = responsivity * fill_factor * collected_z2 / (sigma_px * std::sqrt(2 * kPi));
   signal_per_inv_z2_V_ = golden::voltage_from_current_V(peak_current_z2, px.integration_time_s, px.pd_capacitance_F);
-  const double bg_current = scene.responsivity_A_per_W * scene.fill_factor * px.pitch_m * px.pitch_m * scene.reflectance *
-                            scene.background_irradiance_W_per_m2 / (4 * scene.f_number * scene.f_number);
+  const double bg_current = responsivity * fill_factor * px.pitch_m * px.pitch_m * scene.reflectance *
+                            scene.background_irradiance_W_per_m2 / (4 * f_number * f_number);
   background_V_ = golden::voltage_from_current_V(bg_current, px.integration_time_s, px.pd_capacitance_F);
   if (scene.shape == TargetShape::DepthMap) depth_grid_m_ = scene.depth_map->resample(px.rows, px.columns);
   // The beam must actually sweep: every position must leave the projector in front (0 < a_p < pi)

@@ -112,7 +112,7 @@ const std::vector<SensorRules>& sensor_rules() {
   static const std::vector<SensorRules> rules = {
       {"ls-conventional", LC, {"plane", "tilted", "step", "depth_map"},
        {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m",
-        "background.irradiance_W_per_m2", "camera.f_number", "camera.fill_factor", "camera.responsivity_A_per_W"}},
+        "background.irradiance_W_per_m2"}},
       {"ls-demodulation", LD, {"plane", "depth_map"}, {"scene.name", "beam.signal_A", "background.photocurrent_A"}},
       {"tof-lockin", TL, {"plane", "step", "depth_map"}, {"scene.name", "light.signal_photocurrent_A"}},
       {"tof-spad", TS, {"plane", "step", "depth_map"}, {}},

@@ -18,7 +18,8 @@
 //   [light]      tof-lockin: signal_photocurrent_A, reference_distance_m, background_photocurrent_A
 //   [rates]      tof-spad: signal_Hz, reference_distance_m, background_Hz
 //   [background] ls-conventional: irradiance_W_per_m2; ls-demodulation: photocurrent_A
-//   [camera]     ls-conventional: f_number, fill_factor, responsivity_A_per_W
+//   [camera]     ls-conventional, optional: f_number, fill_factor, responsivity_A_per_W override the
+//                preset's optics.f_number, pixel.fill_factor, pixel.responsivity_A_per_W
 //   [window]     tof-lockin: rows, columns; tof-spad: first_row, rows, first_column, columns
 // Focal length, baseline, pixel pitch, array size, integration time and capacitance come from
 // the sensor preset.
@@ -53,7 +54,7 @@ struct Scene {
   double column_offset_px = 0;
   // [background]
   double background_irradiance_W_per_m2 = 0;
-  // [camera]
+  // [camera] (when the file sets them: has("camera.f_number") etc.; else the preset's values)
   double f_number = 1.4;
   double fill_factor = 0.5;
   double responsivity_A_per_W = 0.4;

@@ -232,3 +232,25 @@ TEST(SceneOptics, DepthMapTruthLiesOnTheMap) {
   EXPECT_LT(zmin, 1.0);   // the dome's top is seen
   EXPECT_GT(zmax, 1.12);  // and the background around it
 }
+
+TEST(SceneOptics, CameraRadiometryComesFromThePresetUnlessTheSceneOverridesIt) {
+  rangesim::LsConventionalConfig cfg = rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
+  const std::string base = "[scene]\nname = \"c\"\n[target]\nshape = \"plane\"\ndistance_m = 1.0\nreflectance = 0.5\n"
+                           "[beam]\npower_W = 0.5\nreference_distance_m = 1.1\n[background]\nirradiance_W_per_m2 = 5.0\n";
+  const sc::Scene preset_only = sc::load_scene_text(base, "c.toml");
+  const sc::Scene same = sc::load_scene_text(
+      base + "[camera]\nf_number = 1.4\nfill_factor = 0.5\nresponsivity_A_per_W = 0.4\n", "c.toml");
+  const sc::Scene slower = sc::load_scene_text(base + "[camera]\nf_number = 2.8\n", "c.toml");
+  ASSERT_DOUBLE_EQ(cfg.optics.f_number, 1.4);  // presets/ls-conventional.toml
+  ASSERT_DOUBLE_EQ(cfg.pixel.fill_factor, 0.5);
+  ASSERT_DOUBLE_EQ(cfg.pixel.responsivity_A_per_W, 0.4);
+  const sc::RowTruth a = sc::SceneOptics(cfg, preset_only).truth(100, 100), b = sc::SceneOptics(cfg, same).truth(100, 100),
+                     c = sc::SceneOptics(cfg, slower).truth(100, 100);
+  EXPECT_DOUBLE_EQ(a.signal_V, b.signal_V);
+  EXPECT_DOUBLE_EQ(a.background_V, b.background_V);
+  EXPECT_NEAR(c.signal_V, a.signal_V / 4, 1e-12 * a.signal_V);  // lens area ~ 1 / F#^2
+  EXPECT_NEAR(c.background_V, a.background_V / 4, 1e-12 * a.background_V);
+  cfg.pixel.fill_factor = 0.25;  // the preset's value is used when the scene is silent
+  EXPECT_NEAR(sc::SceneOptics(cfg, preset_only).truth(100, 100).signal_V, a.signal_V / 2, 1e-12 * a.signal_V);
+  EXPECT_DOUBLE_EQ(sc::SceneOptics(cfg, same).truth(100, 100).signal_V, a.signal_V);
+}

@@ -199,3 +199,36 @@ TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
   }
   fs::remove_all(dir);
 }
+
+TEST(SimulatePresetKeys, TofSpadReadoutWordRateSetsTheReadoutPhaseInGoldenAndKernel) {
+  const std::string dir = make_temp_dir();
+  std::ifstream in(std::string(RANGESIM_SOURCE_DIR) + "/presets/tof-spad.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const std::string key = "readout_word_rate_Hz = { value = 100e6,";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.replace(text.find(key), key.size(), "readout_word_rate_Hz = { value = 50e6,");
+  std::ofstream(dir + "/slow.toml") << text;
+  auto readout_cycles = [](const nlohmann::json& phases) {
+    for (const auto& p : phases)
+      if (p["name"] == "histogram_readout") return p.contains("golden_cycles") ? p["golden_cycles"].get<long long>() : p["cycles"].get<long long>();
+    return -1LL;
+  };
+  const CommandResult fast = rangesim_cmd("frame-rate tof-spad --json"), slow = rangesim_cmd("frame-rate " + dir + "/slow.toml --json");
+  ASSERT_EQ(fast.exit_code, 0) << fast.err;
+  ASSERT_EQ(slow.exit_code, 0) << slow.err;
+  const long long rf = readout_cycles(nlohmann::json::parse(fast.out)["phases"]);
+  const long long rs = readout_cycles(nlohmann::json::parse(slow.out)["phases"]);
+  // W = ceil(clock / word rate): 103 cycles per word at 100 MHz, 205 at 50 MHz (clock 10.24 GHz).
+  EXPECT_GT(rf, 0);
+  EXPECT_NEAR(static_cast<double>(rs) / static_cast<double>(rf), 2.0, 0.02);
+  const CommandResult sim = rangesim_cmd("simulate " + dir + "/slow.toml --scene " + kScenes +
+                                         "/tof-spad-plane.toml --kernel-only --json --no-plots --out " + dir + "/o");
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto j = nlohmann::json::parse(sim.out);
+  EXPECT_TRUE(j["timing_matches_golden"].get<bool>());
+  for (const auto& p : j["phases"])
+    if (p["name"] == "histogram_readout") EXPECT_EQ(p["cycles"].get<long long>(), rs);
+  fs::remove_all(dir);
+}
