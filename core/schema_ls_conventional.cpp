@@ -20,7 +20,7 @@ const ParamSchema& ls_conventional_schema() {
           {"pixel.rows", K::Integer, "", 1, 4096, false, "rows (searched in parallel)"},
           {"pixel.pitch_m", K::Real, "m", 0, 1e-3, true, "pixel pitch"},
           {"pixel.fill_factor", K::Real, "", 0, 1, true, "photosensitive area / pixel area (scene radiometry, rangesim simulate)"},
-          {"pixel.responsivity_A_per_W", K::Real, "A/W", 0, 2, true, "photodiode responsivity in the beam's band (scene radiometry)"},
+          {"pixel.responsivity_A_per_W", K::Real, "A_per_W", 0, 2, true, "photodiode responsivity in the beam's band (scene radiometry)"},
           // Beam spot on the focal plane (eq. 3.6).
           {"spot.fwhm_px", K::Real, "px", 0, 100, true, "FWHM of the Gaussian sheet-beam profile across a row"},
           {"spot.sigma_per_fwhm", K::Real, "", 0, 1, true, "sigma / FWHM (exact Gaussian 0.4247; thesis writes 0.45)"},

@@ -1,5 +1,5 @@
 // rangesim simulate for tof-spad: the clock-level model (systemc/tof_spad/, bare kernels or the
-// sc_module) on a tof-spad scene (scenes/tof-spad-*.toml, read here), the golden estimator on the
+// sc_module) on a tof-spad scene (scenes/tof-spad-*.toml, read by scene/scene.h, checked here against the preset), the golden estimator on the
 // measured histograms, the range error against the scene's ground truth and the measured frame
 // timing beside golden::frame_timing_tof_spad. docs/tof-spad-clock.md.
 //

@@ -228,7 +228,10 @@ TEST(SimulatePresetKeys, TofSpadReadoutWordRateSetsTheReadoutPhaseInGoldenAndKer
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
   const auto j = nlohmann::json::parse(sim.out);
   EXPECT_TRUE(j["timing_matches_golden"].get<bool>());
-  for (const auto& p : j["phases"])
-    if (p["name"] == "histogram_readout") EXPECT_EQ(p["cycles"].get<long long>(), rs);
+  for (const auto& p : j["phases"]) {
+    if (p["name"] == "histogram_readout") {
+      EXPECT_EQ(p["cycles"].get<long long>(), rs);
+    }
+  }
   fs::remove_all(dir);
 }
