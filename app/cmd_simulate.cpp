@@ -10,12 +10,15 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/output_dir.h"
 #include "app/simulate/simulate_output.h"
+#include "app/simulate/simulate_report.h"
+#include "app/simulate/trace_output.h"
 #include "core/ls_conventional_config.h"
 #include "core/preset.h"
 #include "core/user_error.h"
@@ -34,20 +37,27 @@ namespace rangesim::app {
 namespace {
 
 namespace fs = std::filesystem;
+
+// SystemC displays its reports on stdout, which must stay clean JSON under --json: display them
+// on stderr instead (logging, stopping and throwing are left to the default handler).
+void report_to_stderr(const sc_core::sc_report& rep, const sc_core::sc_actions& actions) {
+  if (actions & sc_core::SC_DISPLAY) std::cerr << sc_core::sc_report_compose_message(rep) << std::endl;
+  sc_core::sc_report_handler::default_handler(rep, actions & ~sc_core::SC_DISPLAY);
+}
 using Clock = std::chrono::steady_clock;
 
 struct Metrics {
   long long visible = 0, detected = 0, missed = 0, false_detections = 0;
-  double sum_sq_m = 0, sum_sq_px = 0, sum_m = 0, max_abs_m = 0;
-  double rms_m() const { return detected ? std::sqrt(sum_sq_m / detected) : NAN; }
-  double rms_px() const { return detected ? std::sqrt(sum_sq_px / detected) : NAN; }
-  double mean_m() const { return detected ? sum_m / detected : NAN; }
 };
 
 }  // namespace
 
 int run_simulate(const SimulateOptions& opt) {
   const auto t_start = Clock::now();
+  // SystemC's informational reports (trace timescale, "stopped by user") are noise here; its
+  // warnings and errors go to stderr (stdout carries --json).
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+  sc_core::sc_report_handler::set_handler(report_to_stderr);
   ParamSet params = load_modelled_preset(opt.sensor, "simulate");
   if (params.sensor_id() == "ls-demodulation") return run_simulate_ls_demodulation(opt, params);
   if (params.sensor_id() == "tof-lockin") return run_simulate_tof_lockin(opt, params);
@@ -61,15 +71,7 @@ int run_simulate(const SimulateOptions& opt) {
   if (frames < 1 || frames > 1000000)
     throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 1000000 (frame accesses; a range map is {})", frames,
                                 cfg.timing.beam_positions));
-  if (!opt.trace.empty()) {
-    if (opt.kernel_only)
-      throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
-    if (opt.trace.size() < 5 || opt.trace.substr(opt.trace.size() - 4) != ".vcd")
-      throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd", opt.trace));
-    const fs::path parent = fs::absolute(opt.trace).parent_path();
-    if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
-      throw UserError(fmt::format("--trace {}: directory {} does not exist or is not writable", opt.trace, parent.string()));
-  }
+  TraceOutput trace(opt.trace, opt.kernel_only);
   if (opt.tick && !opt.kernel_only)
     throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
 
@@ -84,38 +86,23 @@ int run_simulate(const SimulateOptions& opt) {
   if (opt.noise_free) kopt.pixel.noise = systemc::PixelNoiseConfig::none();
   systemc::SensorRunOptions run;
   run.frames = frames;
-  // Waveform: written beside the target under a temporary name, renamed when the run succeeded.
-  const std::string vcd_tmp_base = opt.trace.empty() ? "" : fmt::format("{}.partial-{}", opt.trace, ::getpid());
-  run.vcd_base = vcd_tmp_base;
+  run.vcd_base = trace.vcd_base();
   for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
-  auto last_report = Clock::now();
-  run.progress = [&](long long done) {
-    const auto now = Clock::now();
-    const double elapsed = std::chrono::duration<double>(now - t_start).count();
-    if (elapsed > 2.0 && (std::chrono::duration<double>(now - last_report).count() > 1.0 || done == frames)) {
-      fmt::print(stderr, "simulate: frame access {}/{} ({:.0f}%), {:.1f} s\n", done, frames, 100.0 * done / frames, elapsed);
-      last_report = now;
-    }
-  };
+  Progress progress("frame access", frames, t_start);
+  run.progress = [&progress](long long done) { progress(done); };
   const systemc::StimulusSource source = [&optics](std::uint64_t f, systemc::FrameStimulus& s) { optics.stimulus(f, s); };
-  systemc::SensorRunResult res;
-  try {
-    res = opt.kernel_only ? systemc::run_sensor_kernel(cfg, kopt, source, run) : systemc::run_sensor_systemc(cfg, kopt, source, run);
-  } catch (...) {
-    if (!vcd_tmp_base.empty()) std::remove((vcd_tmp_base + ".vcd").c_str());
-    throw;
-  }
-  if (!res.errors.empty() || res.sc_errors > 0) {
-    if (!vcd_tmp_base.empty()) std::remove((vcd_tmp_base + ".vcd").c_str());
+  const systemc::SensorRunResult res =
+      opt.kernel_only ? systemc::run_sensor_kernel(cfg, kopt, source, run) : systemc::run_sensor_systemc(cfg, kopt, source, run);
+  if (!res.errors.empty() || res.sc_errors > 0)
     throw std::runtime_error(fmt::format("the model reported {} error(s): {}", res.errors.size() + res.sc_errors,
                                          res.errors.empty() ? "see the SystemC messages above" : res.errors.front()));
-  }
 
   // ---- Range map and its error against the ground truth ----
   const golden::FrameTiming gt = golden::frame_timing(cfg.timing, cfg.multisampling.samplings);
   const int rows = cfg.pixel.rows;
   std::vector<std::vector<double>> map(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
   Metrics m;
+  RangeErrorStats err;
   std::string points = "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
   std::string frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   bool timing_matches = true;
@@ -142,10 +129,7 @@ int run_simulate(const SimulateOptions& opt) {
           ++m.detected;
           err_px = p.centre_px() - t.centre_px;
           err_m = range - t.range_m;
-          m.sum_sq_px += err_px * err_px;
-          m.sum_sq_m += err_m * err_m;
-          m.sum_m += err_m;
-          m.max_abs_m = std::max(m.max_abs_m, std::fabs(err_m));
+          err.add(err_m, err_px);
         } else {
           ++m.missed;
         }
@@ -203,10 +187,6 @@ int run_simulate(const SimulateOptions& opt) {
         {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
         {"range_maps_per_s", gt.range_maps_per_s}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", json_number(m.rms_m())},
-      {"range_error_rms_px", json_number(m.rms_px())},
-      {"range_error_mean_m", json_number(m.mean_m())},
-      {"range_error_max_abs_m", m.detected ? nlohmann::json(m.max_abs_m) : nlohmann::json(nullptr)},
       {"points_visible", m.visible},
       {"points_detected", m.detected},
       {"points_missed", m.missed},
@@ -218,6 +198,7 @@ int run_simulate(const SimulateOptions& opt) {
       {"sc_errors", res.sc_errors},
   };
 
+  err.to_json(j, true);
   out.write("range_map.csv", range_csv);
   out.write("points.csv", points);
   out.write("frames.csv", frames_csv);
@@ -225,36 +206,24 @@ int run_simulate(const SimulateOptions& opt) {
   if (!opt.no_plots)
     warning = render_range_map(out, map, fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size()),
                                "beam position (frame access)");
-  if (!warning.empty()) j["warnings"] = {warning};
-  out.write("summary.json", j.dump(2) + "\n");
-  const std::vector<std::string> written = out.commit();
-  if (!vcd_tmp_base.empty()) fs::rename(vcd_tmp_base + ".vcd", opt.trace);
-
-  if (opt.json) {
-    fmt::print("{}\n", j.dump(2));
-    return kExitOk;
-  }
-  if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
-  fmt::print("{} on scene '{}' ({}): {} frame access{}, {}, {}\n\n", params.sensor_id(), sc.name, scene::shape_name(sc.shape),
-             res.frames.size(), res.frames.size() == 1 ? "" : "es", opt.kernel_only ? "bare kernels" : "SystemC",
-             opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
-  fmt::print("  {:<16} {:>8} {:>8} {:>11}\n", "phase", "cycles", "golden", "time");
-  for (const auto& p : phases)
-    fmt::print("  {:<16} {:>8} {:>8} {:>8.2f} ns\n", p["name"].get<std::string>(), p["cycles"].get<long long>(),
-               p["golden_cycles"].get<long long>(), p["time_s"].get<double>() * 1e9);
-  fmt::print("  {:<16} {:>8} {:>8}\n\n", "frame access", first.cycles, gt.frame_cycles);
-  fmt::print("  frame time       {:>12.2f} ns measured, {:.2f} ns golden{}\n", frame_time_s * 1e9, gt.frame_time_s * 1e9,
-             timing_matches ? "" : "  (MISMATCH)");
-  fmt::print("  frame rate       {:>12.3f} kHz measured, {:.3f} kHz golden\n", frame_rate_Hz / 1e3, gt.frame_access_rate_Hz / 1e3);
-  fmt::print("  range maps       {:>12.2f} /s\n\n", frame_rate_Hz / cfg.timing.beam_positions);
-  fmt::print("  points visible {}, detected {}, missed {}, false {}\n", m.visible, m.detected, m.missed, m.false_detections);
-  if (m.detected)
-    fmt::print("  range error      rms {:.3f} mm ({:.4f} px), mean {:+.3f} mm, max |e| {:.3f} mm\n", m.rms_m() * 1e3, m.rms_px(),
-               m.mean_m() * 1e3, m.max_abs_m * 1e3);
-  fmt::print("  wall time        {:.2f} s, {:.3g} simulated cycles/s\n\n", wall_s, res.cycles / res.wall_time_s);
-  for (const auto& w : written) fmt::print("  wrote {}\n", w);
-  if (!opt.trace.empty()) fmt::print("  wrote {}\n", opt.trace);
-  return kExitOk;
+  SimulateSummary report;
+  report.headline = fmt::format("{} on scene '{}' ({}): {} frame access{}, {}, {}", params.sensor_id(), sc.name,
+                             scene::shape_name(sc.shape), res.frames.size(), res.frames.size() == 1 ? "" : "es",
+                             opt.kernel_only ? "bare kernels" : "SystemC",
+                             opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
+  report.phases = phases;
+  report.frame_label = "frame access";
+  report.frame_cycles = first.cycles, report.golden_frame_cycles = gt.frame_cycles;
+  report.frame_time_s = frame_time_s, report.golden_frame_time_s = gt.frame_time_s;
+  report.frame_rate_Hz = frame_rate_Hz, report.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
+  report.timing_matches = timing_matches;
+  report.range_maps_per_s = frame_rate_Hz / cfg.timing.beam_positions, report.frames_per_range_map = cfg.timing.beam_positions;
+  report.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", m.visible, m.detected, m.missed,
+                                m.false_detections);
+  report.error = err, report.error_in_px = true;
+  report.wall_time_s = wall_s;
+  report.wall_note = fmt::format("{:.3g} simulated cycles/s", res.cycles / res.wall_time_s);
+  return finish_simulate(opt, out, trace, j, warning, report);
 }
 
 }  // namespace rangesim::app

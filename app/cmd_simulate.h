@@ -13,7 +13,7 @@ struct SimulateOptions {
   std::string scene;                // --scene FILE.toml (required)
   std::optional<long long> frames;  // --frames N: frame accesses (default: one range map = beam_positions)
   std::uint64_t seed = 1;           // --seed S: key of the noise streams
-  std::string trace;                // --trace FILE.vcd ("" = no waveform); SystemC only
+  std::string trace;                // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
   std::string out;                  // --out DIR ("" -> rangesim-out/simulate/<scene name>)
   bool json = false;                // --json: summary.json to stdout instead of the table
   bool kernel_only = false;         // --kernel-only: bare C++ kernels, no SystemC elaboration

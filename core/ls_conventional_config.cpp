@@ -18,6 +18,8 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.pixel.columns = static_cast<int>(p.integer("pixel.columns"));
   c.pixel.rows = static_cast<int>(p.integer("pixel.rows"));
   c.pixel.pitch_m = p.real("pixel.pitch_m");
+  c.pixel.fill_factor = p.real("pixel.fill_factor");
+  c.pixel.responsivity_A_per_W = p.real("pixel.responsivity_A_per_W");
 
   c.spot.fwhm_px = p.real("spot.fwhm_px");
   c.spot.sigma_per_fwhm = p.real("spot.sigma_per_fwhm");
@@ -47,6 +49,7 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.optics.focal_length_m = p.real("optics.focal_length_m");
   c.optics.baseline_m = p.real("optics.baseline_m");
   c.optics.distance_m = p.real("optics.distance_m");
+  c.optics.f_number = p.real("optics.f_number");
 
   c.grid.signal_min_V = p.real("evaluation.signal_min_V");
   c.grid.signal_max_V = p.real("evaluation.signal_max_V");

@@ -18,6 +18,8 @@ struct PixelConfig {
   int columns = 375;                     // pixels per row
   int rows = 365;                        // rows searched in parallel
   double pitch_m = 11.25e-6;             // pixel pitch
+  double fill_factor = 0.5;              // photosensitive area / pixel area (scene radiometry only)
+  double responsivity_A_per_W = 0.4;     // photodiode responsivity (scene radiometry only)
 };
 
 // Gaussian sheet-beam profile across a row (eq. 3.6).
@@ -66,6 +68,7 @@ struct OpticsConfig {
   double focal_length_m = 10e-3;
   double baseline_m = 73.6e-3;
   double distance_m = 1.1;
+  double f_number = 1.4;       // lens F# (scene radiometry only)
 };
 
 // Log-spaced evaluation grid over signal x background.

@@ -19,6 +19,8 @@ const ParamSchema& ls_conventional_schema() {
           {"pixel.columns", K::Integer, "", 1, 4096, false, "pixels per row (search direction)"},
           {"pixel.rows", K::Integer, "", 1, 4096, false, "rows (searched in parallel)"},
           {"pixel.pitch_m", K::Real, "m", 0, 1e-3, true, "pixel pitch"},
+          {"pixel.fill_factor", K::Real, "", 0, 1, true, "photosensitive area / pixel area (scene radiometry, rangesim simulate)"},
+          {"pixel.responsivity_A_per_W", K::Real, "A_per_W", 0, 2, true, "photodiode responsivity in the beam's band (scene radiometry)"},
           // Beam spot on the focal plane (eq. 3.6).
           {"spot.fwhm_px", K::Real, "px", 0, 100, true, "FWHM of the Gaussian sheet-beam profile across a row"},
           {"spot.sigma_per_fwhm", K::Real, "", 0, 1, true, "sigma / FWHM (exact Gaussian 0.4247; thesis writes 0.45)"},
@@ -43,6 +45,7 @@ const ParamSchema& ls_conventional_schema() {
           {"optics.focal_length_m", K::Real, "m", 0, 10, true, "lens focal length f"},
           {"optics.baseline_m", K::Real, "m", 0, 100, true, "baseline d between beam projector and lens"},
           {"optics.distance_m", K::Real, "m", 0, 1e4, true, "target distance l for the range-accuracy figures"},
+          {"optics.f_number", K::Real, "", 0.5, 64, false, "lens f-number F# (scene radiometry: lens area, camera equation)"},
           // Default evaluation grid (thesis Fig. 3.3-3.4).
           {"evaluation.signal_min_V", K::Real, "V", 0, 100, true, "lowest signal voltage V_sig of the grid"},
           {"evaluation.signal_max_V", K::Real, "V", 0, 100, true, "highest signal voltage of the grid"},

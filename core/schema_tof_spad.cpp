@@ -44,6 +44,7 @@ const ParamSchema& tof_spad_schema() {
           {"histogram.peak_window_bins", K::Integer, "", 1, 1e6, false, "peak window PW around the histogram maximum for the centroid, in TDC bins"},
           {"histogram.coates_correction", K::Boolean, "", 0, 0, false, "true: correct first-photon pile-up (Coates) before the centroid"},
           {"histogram.subtract_background", K::Boolean, "", 0, 0, false, "true: subtract the mean background per bin before the centroid"},
+          {"histogram.readout_word_rate_Hz", K::Real, "Hz", 0, 10e9, true, "histogram words read out per second per output lane (one lane per TDC); sets the histogram_readout phase"},
           // Default evaluation grid (count rates, thesis 4.2.2).
           {"evaluation.signal_min_Hz", K::Real, "Hz", 0, 1e10, true, "lowest signal count rate (PDE-weighted, before dead-time losses)"},
           {"evaluation.signal_max_Hz", K::Real, "Hz", 0, 1e10, true, "highest signal count rate"},

@@ -47,6 +47,7 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   c.histogram.peak_window_bins = static_cast<int>(p.integer("histogram.peak_window_bins"));
   c.histogram.coates_correction = p.boolean("histogram.coates_correction");
   c.histogram.subtract_background = p.boolean("histogram.subtract_background");
+  c.histogram.readout_word_rate_Hz = p.real("histogram.readout_word_rate_Hz");
 
   auto& e = c.evaluation;
   e.signal_min_Hz = p.real("evaluation.signal_min_Hz");

@@ -44,6 +44,7 @@ struct SpadHistogramConfig {
   int peak_window_bins = 7;                  // PW: bins around the peak used by the centroid
   bool coates_correction = true;             // pile-up correction before the centroid
   bool subtract_background = true;           // subtract the per-bin background estimated outside PW
+  double readout_word_rate_Hz = 100e6;       // histogram words read out per second per output lane
 };
 
 // Evaluation grid and the criteria that make a point "detectable".

@@ -1,5 +1,6 @@
 #include "scene/optics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -16,15 +17,20 @@ constexpr double kPi = 3.14159265358979323846;
 SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene) : config_(config), scene_(scene) {
   const PixelConfig& px = config.pixel;
   const double f = config.optics.focal_length_m;
-  const double lens_area = kPi * std::pow(f / (2 * scene.f_number), 2);
+  // The camera's radiometry: the preset's, unless the scene's [camera] overrides it.
+  const double f_number = scene.has("camera.f_number") ? scene.f_number : config.optics.f_number;
+  const double fill_factor = scene.has("camera.fill_factor") ? scene.fill_factor : px.fill_factor;
+  const double responsivity = scene.has("camera.responsivity_A_per_W") ? scene.responsivity_A_per_W : px.responsivity_A_per_W;
+  const double lens_area = kPi * std::pow(f / (2 * f_number), 2);
   const double sigma_px = golden::spot_sigma_px(config.spot);
   // rho (P / rows) A_lens / pi -> current at the spot peak -> swing; divided by z^2 later.
   const double collected_z2 = scene.reflectance * (scene.beam_power_W / px.rows) * lens_area / kPi;
-  const double peak_current_z2 = scene.responsivity_A_per_W * scene.fill_factor * collected_z2 / (sigma_px * std::sqrt(2 * kPi));
+  const double peak_current_z2 = responsivity * fill_factor * collected_z2 / (sigma_px * std::sqrt(2 * kPi));
   signal_per_inv_z2_V_ = golden::voltage_from_current_V(peak_current_z2, px.integration_time_s, px.pd_capacitance_F);
-  const double bg_current = scene.responsivity_A_per_W * scene.fill_factor * px.pitch_m * px.pitch_m * scene.reflectance *
-                            scene.background_irradiance_W_per_m2 / (4 * scene.f_number * scene.f_number);
+  const double bg_current = responsivity * fill_factor * px.pitch_m * px.pitch_m * scene.reflectance *
+                            scene.background_irradiance_W_per_m2 / (4 * f_number * f_number);
   background_V_ = golden::voltage_from_current_V(bg_current, px.integration_time_s, px.pd_capacitance_F);
+  if (scene.shape == TargetShape::DepthMap) depth_grid_m_ = scene.depth_map->resample(px.rows, px.columns);
   // The beam must actually sweep: every position must leave the projector in front (0 < a_p < pi)
   // — always true for cot finite — and not run parallel to a tilted target.
   for (int b = 0; b < beam_positions(); ++b) {
@@ -63,6 +69,9 @@ RowTruth SceneOptics::truth(int b, int row) const {
     case TargetShape::Step:
       z = scene_.near_distance_m * y_e / f > scene_.step_y_m ? scene_.near_distance_m : scene_.distance_m;
       break;
+    case TargetShape::DepthMap:
+      z = depth_map_z(b, row);
+      break;
   }
   RowTruth t;
   t.background_V = background_V_;
@@ -74,6 +83,38 @@ RowTruth SceneOptics::truth(int b, int row) const {
   t.visible = t.centre_px >= 0 && t.centre_px <= columns() - 1;
   t.signal_V = signal_per_inv_z2_V_ / (z * z);
   return t;
+}
+
+double SceneOptics::depth_map_z(int b, int row) const {
+  // The lit point is where the row's depth profile D(c) (bilinear between pixel centres) meets
+  // the beam: g(c) = c - centre(D(c)) = 0. Scan the columns for the first sign change, then
+  // bisect on the linear piece. No crossing: the beam misses the map on this row.
+  const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m, p = config_.pixel.pitch_m;
+  const double cot = cot_beam(b);
+  const int n = columns();
+  auto depth = [&](double c) {
+    const int c0 = std::max(0, std::min(n - 1, static_cast<int>(std::floor(c))));
+    const int c1 = std::min(n - 1, c0 + 1);
+    const double t = std::max(0.0, std::min(1.0, c - c0));
+    const double* z = depth_grid_m_.data() + static_cast<std::size_t>(row) * n;
+    return (1 - t) * z[c0] + t * z[c1];
+  };
+  auto g = [&](double c) { return c - ((f * d / depth(c) - f * cot) / p + principal_column_px()); };
+  double prev = g(0);
+  if (prev == 0) return depth(0);
+  for (int c = 1; c < n; ++c) {
+    const double cur = g(c);
+    if ((prev < 0) != (cur < 0) || cur == 0) {
+      double lo = c - 1, hi = c;
+      for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if ((g(mid) < 0) == (prev < 0)) lo = mid; else hi = mid;
+      }
+      return depth(0.5 * (lo + hi));
+    }
+    prev = cur;
+  }
+  return -1;
 }
 
 void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) const {

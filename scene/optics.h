@@ -13,7 +13,10 @@
 // Beam angles: a_p(b) puts the stripe at column u_b = b columns / beam_positions + column_offset_px
 // on a plane at reference_distance_m. Target depth z along a row: plane z = distance; tilted
 // z = distance + x tan(tilt_x) + y tan(tilt_y), solved with the beam plane and the row's ray;
-// step: the near face (z = near_distance_m) where the row sees y > step_y_m there, else the wall.
+// step: the near face (z = near_distance_m) where the row sees y > step_y_m there, else the wall;
+// depth_map: the image resampled to the pixel grid gives the depth seen by each pixel, and the
+// lit point of a row is the first column (from the left) where the stripe of that depth lands on
+// that column (a bisection on the bilinear depth profile).
 //
 // Radiometry (Lambertian target, on-axis lens, no vignetting, no lens losses):
 //   sheet power per row           P / rows (the sheet spans the array's rows)
@@ -63,11 +66,13 @@ class SceneOptics {
 
  private:
   double cot_beam(int b) const;
+  double depth_map_z(int b, int row) const;  // depth_map: depth of the lit point on a row (< 0: none)
 
   LsConventionalConfig config_;
   Scene scene_;
   double signal_per_inv_z2_V_ = 0;  // spot-peak swing times z^2 (V m^2) at reflectance rho
   double background_V_ = 0;         // background swing
+  std::vector<double> depth_grid_m_;  // depth_map: the map resampled to the pixel grid, row-major
 };
 
 }  // namespace rangesim::scene

@@ -1,12 +1,15 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <toml++/toml.h>
+#include <vector>
 
 #include "core/user_error.h"
 
@@ -17,11 +20,14 @@ const char* shape_name(TargetShape s) {
     case TargetShape::Plane: return "plane";
     case TargetShape::Tilted: return "tilted";
     case TargetShape::Step: return "step";
+    case TargetShape::DepthMap: return "depth_map";
   }
   return "?";
 }
 
 namespace {
+
+namespace fs = std::filesystem;
 
 std::string where(const std::string& file, const toml::node& node) {
   const auto& src = node.source();
@@ -39,141 +45,259 @@ struct Range {
   }
 };
 
-// The keys a scene may have: section.key -> allowed range (numbers) or empty (strings).
+// Sensors as bits, in the order of kSceneSensors.
+enum : unsigned { LC = 1, LD = 2, TL = 4, TS = 8, ALL = 15 };
+
+enum class Kind { Number, Integer, Text };
+
 struct KeySpec {
-  bool number;
-  Range range;
+  Kind kind;
+  Range range;       // numbers and integers
+  unsigned sensors;  // which sensors' scenes have the key
 };
 
 const std::map<std::string, KeySpec>& key_specs() {
   static const std::map<std::string, KeySpec> specs = {
-      {"scene.name", {false, {}}},
-      {"scene.description", {false, {}}},
-      {"target.shape", {false, {}}},
-      {"target.distance_m", {true, {0.01, 1e4, false, false}}},
-      {"target.reflectance", {true, {0, 1, true, false}}},
-      {"target.tilt_x_rad", {true, {-1.5, 1.5, false, false}}},
-      {"target.tilt_y_rad", {true, {-1.5, 1.5, false, false}}},
-      {"target.near_distance_m", {true, {0.01, 1e4, false, false}}},
-      {"target.step_y_m", {true, {-1e3, 1e3, false, false}}},
-      {"beam.power_W", {true, {0, 100, true, false}}},
-      {"beam.reference_distance_m", {true, {0.01, 1e4, false, false}}},
-      {"beam.column_offset_px", {true, {-1, 1, false, false}}},
-      {"background.irradiance_W_per_m2", {true, {0, 1e4, false, false}}},
-      {"camera.f_number", {true, {0.5, 64, false, false}}},
-      {"camera.fill_factor", {true, {0, 1, true, false}}},
-      {"camera.responsivity_A_per_W", {true, {0, 2, true, false}}},
+      {"scene.name", {Kind::Text, {}, ALL}},
+      {"scene.description", {Kind::Text, {}, ALL}},
+      {"target.shape", {Kind::Text, {}, ALL}},
+      {"target.distance_m", {Kind::Number, {0.01, 1e4, false, false}, ALL}},
+      {"target.depth_map_file", {Kind::Text, {}, ALL}},
+      {"target.depth_near_m", {Kind::Number, {0.01, 1e4, false, false}, ALL}},
+      {"target.depth_far_m", {Kind::Number, {0.01, 1e4, false, false}, ALL}},
+      {"target.reflectance", {Kind::Number, {0, 1, true, false}, LC}},
+      {"target.tilt_x_rad", {Kind::Number, {-1.5, 1.5, false, false}, LC}},
+      {"target.tilt_y_rad", {Kind::Number, {-1.5, 1.5, false, false}, LC}},
+      {"target.near_distance_m", {Kind::Number, {0.01, 1e4, false, false}, LC | TL}},
+      {"target.step_y_m", {Kind::Number, {-1e3, 1e3, false, false}, LC}},
+      {"target.step_column_fraction", {Kind::Number, {0, 1, false, false}, TL}},
+      {"target.step_distance_m", {Kind::Number, {0.01, 1e4, false, false}, TS}},
+      {"target.step_column", {Kind::Integer, {0, 4096, false, false}, TS}},
+      {"target.tilt_m_per_row", {Kind::Number, {-0.01, 0.01, false, false}, LD}},
+      {"beam.power_W", {Kind::Number, {0, 100, true, false}, LC}},
+      {"beam.reference_distance_m", {Kind::Number, {0.01, 1e4, false, false}, LC}},
+      {"beam.column_offset_px", {Kind::Number, {-1, 1, false, false}, LC}},
+      {"beam.signal_A", {Kind::Number, {0, 1e-6, false, false}, LD}},
+      {"beam.first_column_px", {Kind::Number, {-1000, 4096, false, false}, LD}},
+      {"beam.columns_per_frame", {Kind::Number, {-10, 10, false, false}, LD}},
+      {"light.signal_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, TL}},
+      {"light.reference_distance_m", {Kind::Number, {0, 1000, true, false}, TL}},
+      {"light.background_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, TL}},
+      {"rates.signal_Hz", {Kind::Number, {0, 5e7, false, false}, TS}},
+      {"rates.reference_distance_m", {Kind::Number, {0.1, 1e3, false, false}, TS}},
+      {"rates.background_Hz", {Kind::Number, {0, 1e9, false, false}, TS}},
+      {"background.irradiance_W_per_m2", {Kind::Number, {0, 1e4, false, false}, LC}},
+      {"background.photocurrent_A", {Kind::Number, {0, 1e-5, false, false}, LD}},
+      {"camera.f_number", {Kind::Number, {0.5, 64, false, false}, LC}},
+      {"camera.fill_factor", {Kind::Number, {0, 1, true, false}, LC}},
+      {"camera.responsivity_A_per_W", {Kind::Number, {0, 2, true, false}, LC}},
+      {"window.first_row", {Kind::Integer, {0, 4096, false, false}, TS}},
+      {"window.rows", {Kind::Integer, {0, 4096, false, false}, TL | TS}},
+      {"window.first_column", {Kind::Integer, {0, 4096, false, false}, TS}},
+      {"window.columns", {Kind::Integer, {0, 4096, false, false}, TL | TS}},
   };
   return specs;
 }
 
-std::string allowed_in(const std::string& section) {
-  std::string s;
-  for (const auto& [k, _] : key_specs())
-    if (k.rfind(section + ".", 0) == 0) s += (s.empty() ? "" : ", ") + k;
-  return s.empty() ? "(no such section; sections: scene, target, beam, background, camera)" : s;
+// Per sensor: the target shapes it models and the keys it cannot do without (distance_m is
+// required unless the target is a depth map).
+struct SensorRules {
+  const char* id;
+  unsigned bit;
+  std::vector<std::string> shapes;
+  std::vector<std::string> required;
+};
+
+const std::vector<SensorRules>& sensor_rules() {
+  static const std::vector<SensorRules> rules = {
+      {"ls-conventional", LC, {"plane", "tilted", "step", "depth_map"},
+       {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m",
+        "background.irradiance_W_per_m2"}},
+      {"ls-demodulation", LD, {"plane", "depth_map"}, {"scene.name", "beam.signal_A", "background.photocurrent_A"}},
+      {"tof-lockin", TL, {"plane", "step", "depth_map"}, {"scene.name", "light.signal_photocurrent_A"}},
+      {"tof-spad", TS, {"plane", "step", "depth_map"}, {}},
+  };
+  return rules;
 }
 
-}  // namespace
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
 
-Scene load_scene(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw UserError(fmt::format("--scene {}: cannot read scene file (no such file)", path));
-  std::ifstream in(path);
-  if (!in) throw UserError(fmt::format("--scene {}: cannot read scene file", path));
-  toml::table root;
-  try {
-    root = toml::parse(in, path);
-  } catch (const toml::parse_error& e) {
-    throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line, e.source().begin.column,
-                                e.description()));
+std::string allowed_in(const std::string& section, unsigned bit) {
+  std::string s;
+  for (const auto& [k, spec] : key_specs())
+    if (k.rfind(section + ".", 0) == 0 && (spec.sensors & bit)) s += (s.empty() ? "" : ", ") + k;
+  return s.empty() ? "(none for this sensor)" : s;
+}
+
+std::string sections_of(unsigned bit) {
+  std::vector<std::string> v;
+  for (const auto& [k, spec] : key_specs()) {
+    const std::string sec = k.substr(0, k.find('.'));
+    if ((spec.sensors & bit) && (v.empty() || v.back() != sec)) v.push_back(sec);
   }
-  std::map<std::string, double> num;
+  return join(v);
+}
+
+Scene parse(const toml::table& root, const std::string& path, const SensorRules& rules) {
+  const unsigned bit = rules.bit;
   std::map<std::string, std::string> text;
+  Scene s;
+  s.file = path;
+  s.sensor = rules.id;
+  std::map<std::string, int> line_of;
   for (const auto& [section_key, section_node] : root) {
     const std::string section(section_key.str());
     const toml::table* t = section_node.as_table();
-    if (!t) throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections: scene, target, beam, background, camera",
-                                        where(path, section_node), section));
+    if (!t)
+      throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections of a {} scene: {}", where(path, section_node),
+                                  section, rules.id, sections_of(bit)));
     for (const auto& [k, node] : *t) {
       const std::string key = section + "." + std::string(k.str());
       const auto it = key_specs().find(key);
       if (it == key_specs().end())
-        throw UserError(fmt::format("{}: unknown key '{}'; allowed in [{}]: {}", where(path, node), key, section,
-                                    allowed_in(section)));
-      if (it->second.number) {
-        double v;
-        if (auto d = node.value_exact<double>()) v = *d;
-        else if (auto i = node.value_exact<int64_t>()) v = static_cast<double>(*i);
-        else throw UserError(fmt::format("{}: {} must be a number in {}", where(path, node), key, it->second.range.text()));
-        if (!it->second.range.contains(v))
-          throw UserError(fmt::format("{}: {} = {:g} is out of range; allowed: {}", where(path, node), key, v,
-                                      it->second.range.text()));
-        num[key] = v;
-      } else {
-        auto s = node.value_exact<std::string>();
-        if (!s) throw UserError(fmt::format("{}: {} must be a string", where(path, node), key));
-        text[key] = *s;
+        throw UserError(fmt::format("{}: unknown key '{}'; allowed in [{}] of a {} scene: {}", where(path, node), key, section,
+                                    rules.id, allowed_in(section, bit)));
+      if (!(it->second.sensors & bit))
+        throw UserError(fmt::format("{}: key '{}' is not a {} scene key (it belongs to another sensor's scenes); allowed in [{}]: {}",
+                                    where(path, node), key, rules.id, section, allowed_in(section, bit)));
+      const KeySpec& spec = it->second;
+      line_of[key] = static_cast<int>(node.source().begin.line);
+      if (spec.kind == Kind::Text) {
+        auto v = node.value_exact<std::string>();
+        if (!v) throw UserError(fmt::format("{}: {} must be a string", where(path, node), key));
+        text[key] = *v;
+        continue;
       }
+      double v;
+      if (auto i = node.value_exact<int64_t>()) v = static_cast<double>(*i);
+      else if (auto d = node.value_exact<double>(); d && spec.kind == Kind::Number) v = *d;
+      else
+        throw UserError(fmt::format("{}: {} must be {} in {}", where(path, node), key,
+                                    spec.kind == Kind::Integer ? "an integer" : "a number", spec.range.text()));
+      if (!spec.range.contains(v))
+        throw UserError(fmt::format("{}: {} = {:g} is out of range; allowed: {}", where(path, node), key, v, spec.range.text()));
+      s.values[key] = v;
     }
   }
   auto need = [&](const std::string& key, const std::string& why) {
-    if (!num.count(key) && !text.count(key))
+    if (!s.values.count(key) && !text.count(key)) {
+      const KeySpec& spec = key_specs().at(key);
       throw UserError(fmt::format("{}: missing key '{}' ({}{})", path, key, why,
-                                  key_specs().at(key).number ? "; allowed: " + key_specs().at(key).range.text() : ""));
+                                  spec.kind == Kind::Text ? "" : "; allowed: " + spec.range.text()));
+    }
   };
-  auto forbid = [&](const std::string& key, const std::string& shape) {
-    if (num.count(key))
+  for (const auto& k : rules.required) need(k, "required in a " + std::string(rules.id) + " scene");
+  s.name = text.count("scene.name") ? text["scene.name"] : fs::path(path).stem().string();
+  if (s.name.empty()) throw UserError(fmt::format("{}: scene.name must not be empty", path));
+  if (s.name.find_first_of("/\\") != std::string::npos || s.name == "." || s.name == "..")
+    throw UserError(fmt::format("{}: scene.name = \"{}\"; allowed: a name without '/' or '\\' (it names the output folder)", path,
+                                s.name));
+  s.description = text.count("scene.description") ? text["scene.description"] : "";
+  const std::string shape = text.count("target.shape") ? text["target.shape"] : "plane";
+  bool known_shape = false;
+  for (const auto& sh : rules.shapes) known_shape = known_shape || sh == shape;
+  if (!known_shape)
+    throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed for {}; allowed: {}", path, shape, rules.id, join(rules.shapes)));
+  s.shape = shape == "tilted" ? TargetShape::Tilted : shape == "step" ? TargetShape::Step
+          : shape == "depth_map" ? TargetShape::DepthMap : TargetShape::Plane;
+  auto forbid = [&](const std::string& key) {
+    if (s.values.count(key) || text.count(key))
       throw UserError(fmt::format("{}: key '{}' does not apply to target.shape = \"{}\"", path, key, shape));
   };
-  Scene s;
-  s.file = path;
-  need("scene.name", "a name for the outputs");
-  s.name = text["scene.name"];
-  if (s.name.empty()) throw UserError(fmt::format("{}: scene.name must not be empty", path));
-  s.description = text.count("scene.description") ? text["scene.description"] : "";
-  need("target.shape", "plane, tilted or step");
-  const std::string shape = text["target.shape"];
-  if (shape == "plane") s.shape = TargetShape::Plane;
-  else if (shape == "tilted") s.shape = TargetShape::Tilted;
-  else if (shape == "step") s.shape = TargetShape::Step;
-  else throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed; allowed: plane, tilted, step", path, shape));
-  for (const char* k : {"target.distance_m", "target.reflectance", "beam.power_W", "beam.reference_distance_m",
-                        "background.irradiance_W_per_m2", "camera.f_number", "camera.fill_factor",
-                        "camera.responsivity_A_per_W"})
-    need(k, "required");
-  s.distance_m = num["target.distance_m"];
-  s.reflectance = num["target.reflectance"];
-  s.beam_power_W = num["beam.power_W"];
-  s.reference_distance_m = num["beam.reference_distance_m"];
-  s.column_offset_px = num.count("beam.column_offset_px") ? num["beam.column_offset_px"] : 0.0;
-  s.background_irradiance_W_per_m2 = num["background.irradiance_W_per_m2"];
-  s.f_number = num["camera.f_number"];
-  s.fill_factor = num["camera.fill_factor"];
-  s.responsivity_A_per_W = num["camera.responsivity_A_per_W"];
-  switch (s.shape) {
-    case TargetShape::Plane:
-      for (const char* k : {"target.tilt_x_rad", "target.tilt_y_rad", "target.near_distance_m", "target.step_y_m"})
-        forbid(k, shape);
-      break;
-    case TargetShape::Tilted:
-      for (const char* k : {"target.near_distance_m", "target.step_y_m"}) forbid(k, shape);
-      need("target.tilt_x_rad", "tilted: rotation about the vertical axis");
-      need("target.tilt_y_rad", "tilted: rotation about the horizontal axis");
-      s.tilt_x_rad = num["target.tilt_x_rad"];
-      s.tilt_y_rad = num["target.tilt_y_rad"];
-      break;
-    case TargetShape::Step:
-      for (const char* k : {"target.tilt_x_rad", "target.tilt_y_rad"}) forbid(k, shape);
-      need("target.near_distance_m", "step: depth of the near face");
+  if (s.shape == TargetShape::DepthMap) {
+    forbid("target.distance_m");
+    need("target.depth_map_file", "depth_map: the image, PGM or PFM");
+    fs::path img = text["target.depth_map_file"];
+    if (img.is_relative()) img = fs::path(path).parent_path() / img;  // relative to the scene file
+    const bool pfm = img.extension() == ".pfm" || img.extension() == ".PFM";
+    if (pfm) {
+      forbid("target.depth_near_m"), forbid("target.depth_far_m");
+    } else {
+      need("target.depth_near_m", "depth_map PGM: distance of gray level 0");
+      need("target.depth_far_m", "depth_map PGM: distance of gray level maxval");
+    }
+    const std::string key = fmt::format("{}:{}: target.depth_map_file", path, line_of["target.depth_map_file"]);
+    s.depth_map = std::make_shared<DepthMap>(load_depth_map(img.lexically_normal().string(), key, s.get("target.depth_near_m", 0),
+                                                            s.get("target.depth_far_m", 0), 0.01, 1e4));
+    s.distance_m = *std::min_element(s.depth_map->depth_m.begin(), s.depth_map->depth_m.end());
+  } else {
+    for (const char* k : {"target.depth_map_file", "target.depth_near_m", "target.depth_far_m"}) forbid(k);
+    need("target.distance_m", "required unless target.shape = \"depth_map\"");
+    s.distance_m = s.values["target.distance_m"];
+  }
+  // The ls-conventional radiometry and geometry (the other sensors read s.values).
+  s.reflectance = s.get("target.reflectance", s.reflectance);
+  s.beam_power_W = s.get("beam.power_W", s.beam_power_W);
+  s.reference_distance_m = s.get("beam.reference_distance_m", s.reference_distance_m);
+  s.column_offset_px = s.get("beam.column_offset_px", 0.0);
+  s.background_irradiance_W_per_m2 = s.get("background.irradiance_W_per_m2", 0.0);
+  s.f_number = s.get("camera.f_number", s.f_number);
+  s.fill_factor = s.get("camera.fill_factor", s.fill_factor);
+  s.responsivity_A_per_W = s.get("camera.responsivity_A_per_W", s.responsivity_A_per_W);
+  if (s.shape != TargetShape::Tilted)
+    for (const char* k : {"target.tilt_x_rad", "target.tilt_y_rad"}) forbid(k);
+  if (s.shape != TargetShape::Step)
+    for (const char* k : {"target.near_distance_m", "target.step_y_m", "target.step_column_fraction", "target.step_distance_m",
+                          "target.step_column"})
+      forbid(k);
+  if (s.shape == TargetShape::Tilted) {
+    need("target.tilt_x_rad", "tilted: rotation about the vertical axis");
+    need("target.tilt_y_rad", "tilted: rotation about the horizontal axis");
+    s.tilt_x_rad = s.values["target.tilt_x_rad"];
+    s.tilt_y_rad = s.values["target.tilt_y_rad"];
+  }
+  if (s.shape == TargetShape::Step && (bit & (LC | TL))) {
+    need("target.near_distance_m", "step: depth of the near face");
+    s.near_distance_m = s.values["target.near_distance_m"];
+    if (bit == LC) {
       need("target.step_y_m", "step: the near face covers y > step_y_m");
-      s.near_distance_m = num["target.near_distance_m"];
-      s.step_y_m = num["target.step_y_m"];
+      s.step_y_m = s.values["target.step_y_m"];
       if (!(s.near_distance_m < s.distance_m))
-        throw UserError(fmt::format("{}: target.near_distance_m = {:g} must be < target.distance_m = {:g} (the far wall)",
-                                    path, s.near_distance_m, s.distance_m));
-      break;
+        throw UserError(fmt::format("{}: target.near_distance_m = {:g} must be < target.distance_m = {:g} (the far wall)", path,
+                                    s.near_distance_m, s.distance_m));
+    }
   }
   return s;
+}
+
+const SensorRules& rules_for(const std::string& sensor) {
+  for (const auto& r : sensor_rules())
+    if (sensor == r.id) return r;
+  throw UserError(fmt::format("scene for sensor '{}': allowed ls-conventional, ls-demodulation, tof-lockin, tof-spad", sensor));
+}
+
+}  // namespace
+
+Scene load_scene_text(std::string_view text, const std::string& origin, const std::string& sensor) {
+  const SensorRules& rules = rules_for(sensor);
+  toml::table root;
+  try {
+    root = toml::parse(text, origin);
+  } catch (const toml::parse_error& e) {
+    throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", origin, e.source().begin.line, e.source().begin.column,
+                                e.description()));
+  }
+  try {
+    return parse(root, origin, rules);
+  } catch (const UserError&) {
+    throw;
+  } catch (const std::exception& e) {  // e.g. a file-system error while resolving the image path
+    throw UserError(fmt::format("{}: {}", origin, e.what()));
+  }
+}
+
+Scene load_scene(const std::string& path, const std::string& sensor) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw UserError(fmt::format("--scene {}: cannot read scene file (no such file)", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UserError(fmt::format("--scene {}: cannot read scene file", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return load_scene_text(ss.str(), path, sensor);
 }
 
 }  // namespace rangesim::scene

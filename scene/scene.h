@@ -1,28 +1,42 @@
 #pragma once
-// A scene for the clock-level simulation (`rangesim simulate --scene FILE`): the target, the
-// sheet-beam light source, the background light and the camera's radiometry. TOML with SI units
-// in the key names; scenes/*.toml are examples, docs/simulate.md the reference.
+// The one scene reader of `rangesim simulate --scene FILE`, for every sensor: the target, the
+// light source, the background light and the camera's radiometry. TOML with SI units in the key
+// names; scenes/*.toml are examples, docs/simulate.md the reference. One key table (scene.cpp)
+// says which keys exist, their type and range, and which sensors use them:
 //
-//   [scene]      name (string), description (string, optional)
-//   [target]     shape = "plane" | "tilted" | "step"; distance_m; reflectance;
-//                tilted: tilt_x_rad, tilt_y_rad (depth z = distance + x tan(tilt_x) + y tan(tilt_y));
-//                step: near_distance_m, step_y_m (a near face at near_distance_m covers y > step_y_m
-//                in front of the wall at distance_m)
-//   [beam]       power_W (sheet-beam optical power, spread evenly over the rows);
-//                reference_distance_m (beam positions are the angles that put the stripe on
-//                column b + column_offset_px of a plane at this depth); column_offset_px (optional, 0)
-//   [background] irradiance_W_per_m2 (in the sensor's spectral band, on the target)
-//   [camera]     f_number, fill_factor, responsivity_A_per_W
+//   [scene]      name, description                                                all sensors
+//   [target]     shape = "plane" | "tilted" | "step" | "depth_map"; distance_m        all sensors
+//                depth_map: depth_map_file (PGM P2/P5 8/16-bit or PFM, relative to the scene
+//                file), depth_near_m / depth_far_m (PGM: gray 0 -> near, maxval -> far)
+//                ls-conventional: reflectance; tilted: tilt_x_rad, tilt_y_rad; step:
+//                  near_distance_m, step_y_m (the near face covers y > step_y_m)
+//                ls-demodulation: tilt_m_per_row
+//                tof-lockin step: near_distance_m, step_column_fraction
+//                tof-spad step: step_distance_m, step_column
+//   [beam]       ls-conventional: power_W, reference_distance_m, column_offset_px
+//                ls-demodulation: signal_A, first_column_px, columns_per_frame
+//   [light]      tof-lockin: signal_photocurrent_A, reference_distance_m, background_photocurrent_A
+//   [rates]      tof-spad: signal_Hz, reference_distance_m, background_Hz
+//   [background] ls-conventional: irradiance_W_per_m2; ls-demodulation: photocurrent_A
+//   [camera]     ls-conventional, optional: f_number, fill_factor, responsivity_A_per_W override the
+//                preset's optics.f_number, pixel.fill_factor, pixel.responsivity_A_per_W
+//   [window]     tof-lockin: rows, columns; tof-spad: first_row, rows, first_column, columns
 // Focal length, baseline, pixel pitch, array size, integration time and capacitance come from
 // the sensor preset.
+#include <map>
+#include <memory>
 #include <string>
+#include <string_view>
+
+#include "scene/depth_map.h"
 
 namespace rangesim::scene {
 
-enum class TargetShape { Plane, Tilted, Step };
+enum class TargetShape { Plane, Tilted, Step, DepthMap };
 
 struct Scene {
   std::string file;         // where it was loaded from (for messages)
+  std::string sensor;       // the sensor the scene was checked for
   std::string name;         // [scene] name
   std::string description;  // [scene] description
   // [target]
@@ -33,22 +47,43 @@ struct Scene {
   double tilt_y_rad = 0;         // tilted: dz/dy = tan(tilt_y)
   double near_distance_m = 0;    // step: depth of the near face
   double step_y_m = 0;           // step: the near face covers y > step_y_m
+  std::shared_ptr<const DepthMap> depth_map;  // depth_map: the image, in metres
   // [beam]
   double beam_power_W = 0.5e-3;
   double reference_distance_m = 1.1;
   double column_offset_px = 0;
   // [background]
   double background_irradiance_W_per_m2 = 0;
-  // [camera]
+  // [camera] (when the file sets them: has("camera.f_number") etc.; else the preset's values)
   double f_number = 1.4;
   double fill_factor = 0.5;
   double responsivity_A_per_W = 0.4;
+  // Every number the file set, by "section.key" (the other sensors' keys are read from here).
+  std::map<std::string, double> values;
+
+  bool has(const std::string& key) const { return values.count(key) > 0; }
+  double get(const std::string& key, double fallback) const {
+    const auto it = values.find(key);
+    return it == values.end() ? fallback : it->second;
+  }
+  // Depth of the depth map at pixel (row, column) of a rows x columns array (bilinear).
+  double map_depth_m(int row, int column, int rows, int columns) const {
+    return depth_map->sample(row, column, rows, columns);
+  }
 };
 
 const char* shape_name(TargetShape s);
 
-// Loads and validates a scene file. Throws UserError naming the file (and line), the key and the
-// allowed range on any problem: syntax, unknown section or key, missing key, wrong type, range.
-Scene load_scene(const std::string& path);
+// The sensors a scene can be checked for.
+inline constexpr const char* kSceneSensors[] = {"ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"};
+
+// Parses and validates scene text for `sensor` (a preset id above). `origin` names the text in
+// messages and anchors relative paths (depth_map_file is resolved against its directory).
+// Throws UserError naming the origin (and line), the key and the allowed range on any problem:
+// syntax, unknown section or key, a key of another sensor, missing key, wrong type, range, image.
+// Never throws anything else for any text (fuzz/ calls it).
+Scene load_scene_text(std::string_view text, const std::string& origin, const std::string& sensor = "ls-conventional");
+// The same for a file (a missing or unreadable file is a UserError naming --scene).
+Scene load_scene(const std::string& path, const std::string& sensor = "ls-conventional");
 
 }  // namespace rangesim::scene

@@ -7,7 +7,7 @@ packages=(
   cmake ninja-build g++ pkg-config ccache
   libsystemc-dev verilator iverilog
   libgtest-dev libfmt-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libpcg-cpp-dev
-  gnuplot-nox
+  gnuplot-nox gtkwave
   librapidcheck-dev clang libclang-rt-14-dev
 )
 

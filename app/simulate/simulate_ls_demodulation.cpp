@@ -11,17 +11,20 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
-#include <toml++/toml.h>
+#include <algorithm>
 
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
 #include "app/output_dir.h"
 #include "app/simulate/simulate_output.h"
+#include "app/simulate/simulate_report.h"
+#include "app/simulate/trace_output.h"
 #include "core/ls_demodulation_config.h"
 #include "core/params.h"
 #include "core/user_error.h"
 #include "golden/evaluate_sensor.h"
 #include "golden/frame_timing.h"
+#include "scene/scene.h"
 #include "systemc/ls_demodulation/demod_sensor.h"
 
 namespace rangesim::app {
@@ -42,48 +45,37 @@ struct DemodScene {
   double first_column_px = 5.0;    // [beam].first_column_px: spot column of frame 0 at the preset's optics.distance_m
   double columns_per_frame = 1.0;  // [beam].columns_per_frame: beam step per frame, in pixels
   double background_A = 1e-7;      // [background].photocurrent_A: per pixel
+  std::string shape = "plane";     // "plane" (tilted row by row) or "depth_map"
+  std::vector<double> depth_map_m; // depth_map: depth of every pixel, row-major
+  int map_columns = 0;             // depth_map: array columns
 };
 
-double read_key(const std::string& file, const toml::table& root, const std::string& table, const std::string& key,
-                double def, double lo, double hi, bool required) {
-  const std::string where = fmt::format("{}: [{}].{}", file, table, key);
-  const toml::node* n = root.at_path(table + "." + key).node();
-  if (!n) {
-    if (required) throw UserError(fmt::format("{} is missing; allowed {:g} <= value <= {:g}", where, lo, hi));
-    return def;
-  }
-  const auto v = n->value<double>();
-  if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
-    throw UserError(fmt::format("{} must be a number with {:g} <= value <= {:g}", where, lo, hi));
-  return *v;
-}
-
 DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg) {
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw UserError(fmt::format("{}: not a readable TOML scene: {}", path, e.description()));
-  }
+  const scene::Scene in = scene::load_scene(path, "ls-demodulation");
   DemodScene s;
   s.file = path;
-  const auto name = root.at_path("scene.name").value<std::string>();
-  if (!name || name->empty() || name->find_first_of("/\\") != std::string::npos)
-    throw UserError(fmt::format("{}: [scene].name is missing or not a plain name (a string without '/')", path));
-  s.name = *name;
-  s.description = root.at_path("scene.description").value_or(std::string{});
-  const auto shape = root.at_path("target.shape").value_or(std::string("plane"));
-  if (shape != "plane") throw UserError(fmt::format("{}: [target].shape = \"{}\": allowed \"plane\"", path, shape));
-  s.distance_m = read_key(path, root, "target", "distance_m", 1.0, 0.05, 100.0, true);
-  s.tilt_m_per_row = read_key(path, root, "target", "tilt_m_per_row", 0.0, -0.01, 0.01, false);
-  s.signal_A = read_key(path, root, "beam", "signal_A", 0, 0.0, 1e-6, true);
-  s.first_column_px = read_key(path, root, "beam", "first_column_px", 0.0, -1000.0, cfg.pixel.columns - 1.0, false);
-  s.columns_per_frame = read_key(path, root, "beam", "columns_per_frame", 1.0, -10.0, 10.0, false);
-  s.background_A = read_key(path, root, "background", "photocurrent_A", 0, 0.0, 1e-5, true);
+  s.name = in.name;
+  s.description = in.description;
+  s.shape = scene::shape_name(in.shape);
+  s.distance_m = in.distance_m;
+  if (in.shape != scene::TargetShape::DepthMap && (s.distance_m < 0.05 || s.distance_m > 100))
+    throw UserError(fmt::format("{}: target.distance_m = {:g}: allowed 0.05 <= value <= 100 m (ls-demodulation)", path, s.distance_m));
+  s.tilt_m_per_row = in.get("target.tilt_m_per_row", 0.0);
+  s.signal_A = in.get("beam.signal_A", 0.0);
+  s.first_column_px = in.get("beam.first_column_px", 0.0);
+  if (s.first_column_px > cfg.pixel.columns - 1.0)
+    throw UserError(fmt::format("{}: beam.first_column_px = {:g}: allowed -1000 <= value <= {} (pixel.columns - 1)", path,
+                                s.first_column_px, cfg.pixel.columns - 1));
+  s.columns_per_frame = in.get("beam.columns_per_frame", 1.0);
+  s.background_A = in.get("background.photocurrent_A", 0.0);
   const double z_last = s.distance_m + s.tilt_m_per_row * (cfg.pixel.rows - 1);
   if (z_last < 0.05)
-    throw UserError(fmt::format("{}: [target].tilt_m_per_row = {:g} puts the last row at {:g} m; allowed: every row >= 0.05 m",
+    throw UserError(fmt::format("{}: target.tilt_m_per_row = {:g} puts the last row at {:g} m; allowed: every row >= 0.05 m",
                                 path, s.tilt_m_per_row, z_last));
+  if (in.shape == scene::TargetShape::DepthMap) {
+    s.map_columns = cfg.pixel.columns;
+    s.depth_map_m = in.depth_map->resample(cfg.pixel.rows, cfg.pixel.columns);
+  }
   return s;
 }
 
@@ -95,9 +87,38 @@ struct DemodOptics {
   const DemodScene& sc;
   double disparity_px(double z) const { return cfg.optics.focal_length_m * cfg.optics.baseline_m / (cfg.pixel.pitch_m * z); }
   double beam_column(long long b) const { return sc.first_column_px + sc.columns_per_frame * static_cast<double>(b); }
-  double range_m(int row) const { return sc.distance_m + sc.tilt_m_per_row * row; }
+  // Depth of the lit point on a row. Plane: the row's depth. Depth map: the first column (from
+  // the left) where the stripe of the pixel's own depth lands on that pixel (bisection on the
+  // bilinear depth profile); -1 when the beam misses the map on this row.
+  double range_m(long long b, int row) const {
+    if (sc.depth_map_m.empty()) return sc.distance_m + sc.tilt_m_per_row * row;
+    const int n = cfg.pixel.columns;
+    auto depth = [&](double c) {
+      const int c0 = std::max(0, std::min(n - 1, static_cast<int>(std::floor(c)))), c1 = std::min(n - 1, c0 + 1);
+      const double t = std::max(0.0, std::min(1.0, c - c0));
+      const std::size_t base = static_cast<std::size_t>(row) * sc.map_columns;
+      return (1 - t) * sc.depth_map_m[base + c0] + t * sc.depth_map_m[base + c1];
+    };
+    auto g = [&](double c) { return c - (beam_column(b) + disparity_px(depth(c)) - disparity_px(cfg.optics.distance_m)); };
+    double prev = g(0);
+    if (prev == 0) return depth(0);
+    for (int c = 1; c < n; ++c) {
+      const double cur = g(c);
+      if ((prev < 0) != (cur < 0) || cur == 0) {
+        double lo = c - 1, hi = c;
+        for (int i = 0; i < 60; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          if ((g(mid) < 0) == (prev < 0)) lo = mid; else hi = mid;
+        }
+        return depth(0.5 * (lo + hi));
+      }
+      prev = cur;
+    }
+    return -1;
+  }
   double centre_px(long long b, int row) const {
-    return beam_column(b) + disparity_px(range_m(row)) - disparity_px(cfg.optics.distance_m);
+    const double z = range_m(b, row);
+    return z > 0 ? beam_column(b) + disparity_px(z) - disparity_px(cfg.optics.distance_m) : NAN;  // NaN: the beam misses
   }
   bool visible(long long b, int row) const {
     const double x = centre_px(b, row);
@@ -114,6 +135,7 @@ struct DemodOptics {
     s.background_A.assign(s.beam_A.size(), sc.background_A);
     for (int r = 0; r < R; ++r) {
       const double x0 = centre_px(static_cast<long long>(f), r);
+      if (!std::isfinite(x0)) continue;  // no lit point on this row
       for (int c = 0; c < C; ++c)
         s.beam_A[static_cast<std::size_t>(r) * C + c] = sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
     }
@@ -129,8 +151,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
     throw UserError(fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
                                 params.origin(), cfg.comparator.adc_bits));
   if (opt.scene.empty()) throw UserError("--scene is required: a scene file, e.g. scenes/ls-demodulation-plane.toml");
-  if (!opt.trace.empty())
-    throw UserError("--trace: ls-demodulation has no waveform output yet; drop --trace");
+  TraceOutput trace(opt.trace, opt.kernel_only);
   const golden::FrameTiming gt = golden::frame_timing_ls_demodulation(params);
   const long long frames = opt.frames ? *opt.frames : gt.frames_per_range_map;
   if (frames < 1 || frames > 100000)
@@ -145,10 +166,12 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   kopt.seed = opt.seed;
   if (opt.noise_free) kopt.noise = systemc::DemodNoiseSwitches::none();
   const systemc::DemodStimulusSource source = [&optics](std::uint64_t f, systemc::DemodStimulus& s) { optics.stimulus(f, s); };
+  Progress progress("frame", frames, t_start);
+  const systemc::DemodProgress on_frame = [&progress](long long done) { progress(done); };
   systemc::DemodRunResult res;
   try {
-    res = opt.kernel_only ? systemc::run_demod_kernel(cfg, kopt, source, frames)
-                          : systemc::run_demod_systemc(cfg, kopt, source, frames);
+    res = opt.kernel_only ? systemc::run_demod_kernel(cfg, kopt, source, frames, on_frame)
+                          : systemc::run_demod_systemc(cfg, kopt, source, frames, trace.vcd_base(), on_frame);
   } catch (const std::invalid_argument& e) {
     throw UserError(fmt::format("{}: {}", params.origin(), e.what()));
   }
@@ -160,7 +183,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   const int rows = cfg.pixel.rows;
   std::vector<std::vector<double>> map(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
   long long visible = 0, detected = 0, missed = 0, false_det = 0;
-  double sum_sq_m = 0, sum_sq_px = 0, sum_m = 0, max_abs_m = 0;
+  RangeErrorStats err;
   std::string points = "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
   std::string frames_csv = "frame,cycles,end_cycle";
   for (const auto& p : gt.phases) frames_csv += "," + p.name;
@@ -179,7 +202,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
     for (int r = 0; r < rows; ++r) {
       const auto& rr = fr.rows[static_cast<std::size_t>(r)];
       const bool vis = optics.visible(b, r);
-      const double truth_x = optics.centre_px(b, r), truth_z = optics.range_m(r);
+      const double truth_x = optics.centre_px(b, r), truth_z = optics.visible(b, r) || optics.range_m(b, r) > 0 ? optics.range_m(b, r) : NAN;
       double range = NAN, err_px = NAN, err_m = NAN;
       if (rr.valid()) {
         range = optics.range_from_centre_m(b, rr.centre_px());
@@ -191,10 +214,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
           ++detected;
           err_px = rr.centre_px() - truth_x;
           err_m = range - truth_z;
-          sum_sq_px += err_px * err_px;
-          sum_sq_m += err_m * err_m;
-          sum_m += err_m;
-          max_abs_m = std::max(max_abs_m, std::fabs(err_m));
+          err.add(err_m, err_px);
         } else {
           ++missed;
         }
@@ -206,8 +226,6 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
                               rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
     }
   }
-  const double rms_m = detected ? std::sqrt(sum_sq_m / detected) : NAN;
-  const double rms_px = detected ? std::sqrt(sum_sq_px / detected) : NAN;
   std::vector<std::string> beams;
   for (const auto& fr : res.frames) beams.push_back(fmt::format("b{}", fr.frame));
   const std::string range_csv = range_map_csv(map, beams);
@@ -228,6 +246,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
       {"preset", params.origin()},
       {"scene", sc.name},
       {"scene_file", sc.file},
+      {"target_shape", sc.shape},
       {"harness", opt.kernel_only ? "kernel" : "systemc"},
       {"event_skipping", !opt.tick},
       {"noise", !opt.noise_free},
@@ -247,10 +266,6 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
         {"frames_per_range_map", gt.frames_per_range_map},
         {"range_maps_per_s", gt.range_maps_per_s}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", json_number(rms_m)},
-      {"range_error_rms_px", json_number(rms_px)},
-      {"range_error_mean_m", json_number(detected ? sum_m / detected : NAN)},
-      {"range_error_max_abs_m", detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr)},
       {"points_visible", visible},
       {"points_detected", detected},
       {"points_missed", missed},
@@ -260,41 +275,31 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
       {"simulated_cycles_per_s", res.cycles / res.wall_time_s},
       {"sc_errors", res.sc_errors},
   };
+  err.to_json(j, true);
   out.write("range_map.csv", range_csv);
   out.write("points.csv", points);
   out.write("frames.csv", frames_csv);
   std::string warning;
   if (!opt.no_plots) warning = render_range_map(out, map, fmt::format("{} — {} ({} frames)", sc.name, params.sensor_id(), res.frames.size()),
                                                    "beam position (frame)");
-  if (!warning.empty()) j["warnings"] = {warning};
-  out.write("summary.json", j.dump(2) + "\n");
-  const std::vector<std::string> written = out.commit();
-
-  if (opt.json) {
-    fmt::print("{}\n", j.dump(2));
-    return kExitOk;
-  }
-  if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
-  fmt::print("{} on scene '{}': {} frame{}, {}{}, {}\n\n", params.sensor_id(), sc.name, res.frames.size(),
-             res.frames.size() == 1 ? "" : "s", opt.kernel_only ? "bare kernels" : "SystemC",
-             opt.tick ? " (ticking)" : " (event skipping)", opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
-  fmt::print("  {:<16} {:>8} {:>8} {:>11}\n", "phase", "cycles", "golden", "time");
-  for (const auto& p : phases)
-    fmt::print("  {:<16} {:>8} {:>8} {:>8.2f} us\n", p["name"].get<std::string>(), p["cycles"].get<long long>(),
-               p["golden_cycles"].get<long long>(), p["time_s"].get<double>() * 1e6);
-  fmt::print("  {:<16} {:>8} {:>8}\n\n", "frame", first.cycles, gt.frame_cycles);
-  fmt::print("  frame time       {:>12.3f} us measured, {:.3f} us golden{}\n", frame_time_s * 1e6, gt.frame_time_s * 1e6,
-             timing_matches ? "" : "  (MISMATCH)");
-  fmt::print("  frame rate       {:>12.2f} fps measured, {:.2f} fps golden\n", frame_rate_Hz, gt.frame_access_rate_Hz);
-  fmt::print("  range maps       {:>12.3f} /s ({} frames each)\n\n", frame_rate_Hz / static_cast<double>(gt.frames_per_range_map),
-             gt.frames_per_range_map);
-  fmt::print("  points visible {}, detected {}, missed {}, false {}\n", visible, detected, missed, false_det);
-  if (detected)
-    fmt::print("  range error      rms {:.3f} mm ({:.4f} px), mean {:+.3f} mm, max |e| {:.3f} mm\n", rms_m * 1e3, rms_px,
-               sum_m / detected * 1e3, max_abs_m * 1e3);
-  fmt::print("  wall time        {:.2f} s, {:.3g} simulated cycles/s\n\n", wall_s, res.cycles / res.wall_time_s);
-  for (const auto& w : written) fmt::print("  wrote {}\n", w);
-  return kExitOk;
+  SimulateSummary report;
+  report.headline = fmt::format("{} on scene '{}' ({}): {} frame{}, {}{}, {}", params.sensor_id(), sc.name, sc.shape, res.frames.size(),
+                             res.frames.size() == 1 ? "" : "s", opt.kernel_only ? "bare kernels" : "SystemC",
+                             opt.tick ? " (ticking)" : " (event skipping)",
+                             opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
+  report.phases = phases;
+  report.frame_label = "frame";
+  report.frame_cycles = first.cycles, report.golden_frame_cycles = gt.frame_cycles;
+  report.frame_time_s = frame_time_s, report.golden_frame_time_s = gt.frame_time_s;
+  report.frame_rate_Hz = frame_rate_Hz, report.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
+  report.timing_matches = timing_matches;
+  report.range_maps_per_s = frame_rate_Hz / static_cast<double>(gt.frames_per_range_map);
+  report.frames_per_range_map = gt.frames_per_range_map;
+  report.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", visible, detected, missed, false_det);
+  report.error = err, report.error_in_px = true;
+  report.wall_time_s = wall_s;
+  report.wall_note = fmt::format("{:.3g} simulated cycles/s", res.cycles / res.wall_time_s);
+  return finish_simulate(opt, out, trace, j, warning, report);
 }
 
 }  // namespace rangesim::app

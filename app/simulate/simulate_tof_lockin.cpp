@@ -18,11 +18,15 @@
 #include "app/cmd_simulate.h"
 #include "app/output_dir.h"
 #include "app/simulate/simulate_output.h"
+#include "app/simulate/simulate_report.h"
+#include "app/simulate/trace_output.h"
 #include "core/params.h"
 #include "core/tof_lockin_config.h"
 #include "core/user_error.h"
 #include "golden/evaluate_sensor.h"
 #include "golden/tof_lockin/lockin_point.h"
+#include "scene/scene.h"
+#include "scene/sensor_scenes.h"
 #include "systemc/tof_lockin/lockin_scene.h"
 #include "systemc/tof_lockin/tof_lockin_sensor.h"
 
@@ -49,24 +53,12 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
     throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 100000 (sensor "
                                 "frames; a range map is {})",
                                 frames, gt.frames_per_range_map));
-  if (!opt.trace.empty()) {
-    if (opt.kernel_only)
-      throw UserError("--trace needs the SystemC model; drop --kernel-only "
-                      "(the bare kernels have no waveform)");
-    if (opt.trace.size() < 5 ||
-        opt.trace.substr(opt.trace.size() - 4) != ".vcd")
-      throw UserError(fmt::format(
-          "--trace {}: the waveform file name must end in .vcd", opt.trace));
-    const fs::path parent = fs::absolute(opt.trace).parent_path();
-    if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
-      throw UserError(fmt::format(
-          "--trace {}: directory {} does not exist or is not writable",
-          opt.trace, parent.string()));
-  }
+  TraceOutput trace(opt.trace, opt.kernel_only);
   if (opt.tick && !opt.kernel_only)
     throw UserError("--tick selects the kernel's cycle-by-cycle path; use it "
                     "with --kernel-only");
-  const lk::LockinScene sc = lk::load_lockin_scene(opt.scene);
+  const lk::LockinScene sc =
+      scene::to_lockin_scene(scene::load_scene(opt.scene, "tof-lockin"), cfg);
   {
     lk::LockinGateKernel check(cfg);
   } // T_rep on the gate-clock grid, or UserError before anything is written
@@ -87,52 +79,29 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   const lk::TofLockinSensorKernel *k = nullptr;
   double sim_time_s = 0;
   long long sc_errors = 0;
-  const std::string vcd_tmp_base =
-      opt.trace.empty() ? ""
-                        : fmt::format("{}.partial-{}", opt.trace, ::getpid());
   if (opt.kernel_only) {
     owned = std::make_unique<lk::TofLockinSensorKernel>(
         cfg, kopt, R, C, sc.stimulus(cfg), frames);
-    auto last = Clock::now();
+    Progress progress("frame", frames, t_start);
     long long reported = 0;
-    while (owned->step()) {
-      if (owned->frame() != reported) {
-        reported = owned->frame();
-        const auto now = Clock::now();
-        const double el = std::chrono::duration<double>(now - t_start).count();
-        if (el > 2.0 &&
-            std::chrono::duration<double>(now - last).count() > 1.0) {
-          fmt::print(stderr, "simulate: frame {}/{} ({:.0f}%), {:.1f} s\n",
-                     reported, frames, 100.0 * reported / frames, el);
-          last = now;
-        }
-      }
-    }
+    while (owned->step())
+      if (owned->frame() != reported)
+        progress(reported = owned->frame());
     sim_time_s = owned->time_s();
     k = owned.get();
   } else {
     lk::TofLockinSensor *mod = nullptr;
-    lk::LockinScRun r;
-    try {
-      r = lk::run_tof_lockin_systemc(
-          mod, cfg, kopt, R, C, sc.stimulus(cfg), frames,
-          1.01 * gt.frame_time_s * static_cast<double>(frames) + 1e-6,
-          vcd_tmp_base.empty() ? "" : vcd_tmp_base + ".vcd");
-    } catch (...) {
-      if (!vcd_tmp_base.empty())
-        std::remove((vcd_tmp_base + ".vcd").c_str());
-      throw;
-    }
+    const lk::LockinScRun r = lk::run_tof_lockin_systemc(
+        mod, cfg, kopt, R, C, sc.stimulus(cfg), frames,
+        1.01 * gt.frame_time_s * static_cast<double>(frames) + 1e-6,
+        trace.enabled() ? trace.vcd_base() + ".vcd" : "");
     sc_errors = r.sc_errors;
     sim_time_s = r.end_time_s;
     k = &mod->kernel();
-    if (!r.finished || sc_errors > 0) {
-      if (!vcd_tmp_base.empty())
-        std::remove((vcd_tmp_base + ".vcd").c_str());
+    if (!r.finished || sc_errors > 0)
       throw std::runtime_error(
           fmt::format("the SystemC model reported {} error(s) (finished: {})",
                       sc_errors, r.finished));
-    }
   }
   const double sim_wall_s =
       std::chrono::duration<double>(Clock::now() - t_sim).count();
@@ -141,7 +110,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   const long long maps = k->range_maps();
   std::vector<double> avg(static_cast<std::size_t>(R) * C, NAN);
   long long visible = 0, detected = 0, missed = 0;
-  double sum_sq = 0, sum = 0, max_abs = 0;
+  RangeErrorStats err_stats;
   for (int r = 0; r < R; ++r)
     for (int c = 0; c < C; ++c) {
       const double truth = sc.distance_at(r, c, C);
@@ -156,13 +125,11 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
         }
         ++detected, ++n, acc += L;
         const double e = L - truth;
-        sum_sq += e * e, sum += e, max_abs = std::max(max_abs, std::fabs(e));
+        err_stats.add(e);
       }
       if (n)
         avg[static_cast<std::size_t>(r) * C + c] = acc / n;
     }
-  const double rms = detected ? std::sqrt(sum_sq / detected) : NAN;
-  const double mean_err = detected ? sum / detected : NAN;
   // Golden expectation at each distinct scene distance (one range map).
   std::map<double, int> distances;
   for (int c = 0; c < C; ++c)
@@ -276,10 +243,6 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
         {"accuracy_rms_m", json_number(golden_rms)},
         {"points", golden_points}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", json_number(rms)},
-      {"range_error_mean_m", json_number(mean_err)},
-      {"range_error_max_abs_m",
-       detected ? nlohmann::json(max_abs) : nlohmann::json(nullptr)},
       {"points_visible", visible},
       {"points_detected", detected},
       {"points_missed", missed},
@@ -290,6 +253,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
       {"sc_errors", sc_errors},
   };
 
+  err_stats.to_json(j, false);
   out.write("range_map.csv", range_csv);
   out.write("frames.csv", frames_csv);
   std::string warning;
@@ -303,55 +267,25 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
                                            maps == 1 ? "" : "s"),
                                "column");
   }
-  if (!warning.empty())
-    j["warnings"] = {warning};
-  out.write("summary.json", j.dump(2) + "\n");
-  const std::vector<std::string> written = out.commit();
-  if (!vcd_tmp_base.empty())
-    fs::rename(vcd_tmp_base + ".vcd", opt.trace);
-
-  if (opt.json) {
-    fmt::print("{}\n", j.dump(2));
-    return kExitOk;
-  }
-  if (!warning.empty())
-    fmt::print(stderr, "rangesim: warning: {}\n", warning);
-  fmt::print("{} on scene '{}' ({}): {} frame{} ({} range map{}), {} x {} "
-             "pixels, {}, {}\n\n",
-             params.sensor_id(), sc.name, lk::shape_name(sc.shape), frames,
-             frames == 1 ? "" : "s", maps, maps == 1 ? "" : "s", R, C,
-             opt.kernel_only ? "bare kernels" : "SystemC",
-             opt.noise_free ? "noise-free"
-                            : fmt::format("noise seed {}", opt.seed));
-  fmt::print("  {:<16} {:>10} {:>10} {:>14}\n", "phase", "cycles", "golden",
-             "time");
-  for (const auto &p : phases)
-    fmt::print("  {:<16} {:>10} {:>10} {:>11.3f} us\n",
-               p["name"].get<std::string>(), p["cycles"].get<long long>(),
-               p["golden_cycles"].get<long long>(),
-               p["time_s"].get<double>() * 1e6);
-  fmt::print("  {:<16} {:>10} {:>10}\n\n", "frame",
-             frame_cycles.front().get<long long>(), gt.frame_cycles);
-  fmt::print("  frame time       {:>12.6f} ms measured, {:.6f} ms golden{}\n",
-             frame_time_s * 1e3, gt.frame_time_s * 1e3,
-             timing_matches ? "" : "  (MISMATCH)");
-  fmt::print("  frame rate       {:>12.4f} Hz measured, {:.4f} Hz golden\n",
-             frame_rate_Hz, gt.frame_access_rate_Hz);
-  fmt::print("  range maps       {:>12.4f} /s ({} frames each)\n\n",
-             frame_rate_Hz / gt.frames_per_range_map, gt.frames_per_range_map);
-  fmt::print("  pixel values {}, detected {}, missed {}\n", visible, detected,
-             missed);
-  if (detected)
-    fmt::print("  range error      rms {:.3f} mm, mean {:+.3f} mm, max |e| "
-               "{:.3f} mm (golden accuracy {:.3f} mm)\n",
-               rms * 1e3, mean_err * 1e3, max_abs * 1e3, golden_rms * 1e3);
-  fmt::print("  wall time        {:.2f} s ({:.2f} s simulating, {} events)\n\n",
-             wall_s, sim_wall_s, k->events());
-  for (const auto &w : written)
-    fmt::print("  wrote {}\n", w);
-  if (!opt.trace.empty())
-    fmt::print("  wrote {}\n", opt.trace);
-  return kExitOk;
+  SimulateSummary report;
+  report.headline = fmt::format("{} on scene '{}' ({}): {} frame{} ({} range map{}), {} x {} pixels, {}, {}",
+                             params.sensor_id(), sc.name, lk::shape_name(sc.shape), frames, frames == 1 ? "" : "s", maps,
+                             maps == 1 ? "" : "s", R, C, opt.kernel_only ? "bare kernels" : "SystemC",
+                             opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
+  report.phases = phases;
+  report.frame_label = "frame";
+  report.frame_cycles = frame_cycles.front().get<long long>(), report.golden_frame_cycles = gt.frame_cycles;
+  report.frame_time_s = frame_time_s, report.golden_frame_time_s = gt.frame_time_s;
+  report.frame_rate_Hz = frame_rate_Hz, report.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
+  report.timing_matches = timing_matches;
+  report.range_maps_per_s = frame_rate_Hz / static_cast<double>(gt.frames_per_range_map);
+  report.frames_per_range_map = gt.frames_per_range_map;
+  report.points_line = fmt::format("pixel values {}, detected {}, missed {}", visible, detected, missed);
+  report.error = err_stats;
+  report.error_note = fmt::format("(golden accuracy {:.3f} mm)", golden_rms * 1e3);
+  report.wall_time_s = wall_s;
+  report.wall_note = fmt::format("{:.2f} s simulating, {} events", sim_wall_s, k->events());
+  return finish_simulate(opt, out, trace, j, warning, report);
 }
 
 } // namespace rangesim::app

@@ -1,5 +1,5 @@
 // rangesim simulate for tof-spad: the clock-level model (systemc/tof_spad/, bare kernels or the
-// sc_module) on a tof-spad scene (scenes/tof-spad-*.toml, read here), the golden estimator on the
+// sc_module) on a tof-spad scene (scenes/tof-spad-*.toml, read by scene/scene.h, checked here against the preset), the golden estimator on the
 // measured histograms, the range error against the scene's ground truth and the measured frame
 // timing beside golden::frame_timing_tof_spad. docs/tof-spad-clock.md.
 //
@@ -16,18 +16,20 @@
 #include <fmt/ranges.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 #include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
 #include "app/output_dir.h"
 #include "app/simulate/simulate_output.h"
+#include "app/simulate/simulate_report.h"
+#include "app/simulate/trace_output.h"
 #include "core/params.h"
 #include "core/physics.h"
 #include "core/tof_spad_config.h"
 #include "core/user_error.h"
 #include "golden/evaluate_sensor.h"
+#include "scene/scene.h"
 #include "systemc/tof_spad/tof_spad_sensor.h"
 
 namespace rangesim::app {
@@ -49,87 +51,67 @@ struct SpadScene {
   double background_Hz = 1e5;         // ambient count rate per pixel
   int first_row = 62, rows = 4, first_column = 56, columns = 16;  // default simulated window
 
-  double distance_at(int column) const { return shape == "step" && column >= step_column ? step_distance_m : distance_m; }
-  PixelRates rates(int, int column) const {
-    const double d = distance_at(column);
+  std::vector<double> depth_map_m;  // depth_map: depth of every pixel of the array, row-major
+  int map_columns = 0;               // depth_map: array columns
+
+  double distance_at(int row, int column) const {
+    if (shape == "depth_map") return depth_map_m[static_cast<size_t>(row) * map_columns + column];
+    return shape == "step" && column >= step_column ? step_distance_m : distance_m;
+  }
+  PixelRates rates(int row, int column) const {
+    const double d = distance_at(row, column);
     const double r = reference_distance_m / d;
     return {signal_Hz * r * r, background_Hz, 2 * d / phys::kSpeedOfLight_m_per_s};
   }
 };
 
-double get_real(const toml::table& t, const std::string& file, const std::string& key, double def, double lo, double hi,
-                const std::string& unit) {
-  const auto node = t.at_path(key);
-  if (!node) return def;
-  const auto v = node.value<double>();
-  if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
-    throw UserError(fmt::format("{}: {} = {}: allowed {:g} <= value <= {:g}{}", file, key,
-                                v ? fmt::format("{:g}", *v) : "(not a number)", lo, hi, unit.empty() ? "" : " " + unit));
-  return *v;
-}
-
-int get_int(const toml::table& t, const std::string& file, const std::string& key, int def, int lo, int hi) {
-  const auto node = t.at_path(key);
-  if (!node) return def;
-  const auto v = node.value<long long>();
-  if (!v || !node.is_integer() || *v < lo || *v > hi)
-    throw UserError(fmt::format("{}: {}: allowed an integer {} <= value <= {}", file, key, lo, hi));
-  return static_cast<int>(*v);
+// A scene key that is checked against the preset here (the scene reader checks the generic range).
+void check_range(const scene::Scene& s, const std::string& key, double lo, double hi, const std::string& unit) {
+  if (!s.has(key)) return;
+  const double v = s.get(key, 0);
+  if (v < lo || v > hi)
+    throw UserError(fmt::format("{}: {} = {:g}: allowed {:g} <= value <= {:g}{}", s.file, key, v, lo, hi, unit.empty() ? "" : " " + unit));
 }
 
 SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int array_rows, int array_columns) {
-  toml::table t;
-  try {
-    t = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw UserError(fmt::format("{}: not a valid scene file: {}", path, e.description()));
-  } catch (const std::exception& e) {
-    throw UserError(fmt::format("--scene {}: cannot read: {}", path, e.what()));
-  }
-  // Only the keys of a tof-spad scene (an ls-conventional scene is refused, not misread).
-  static const std::vector<std::pair<std::string, std::vector<std::string>>> allowed = {
-      {"scene", {"name", "description"}},
-      {"target", {"shape", "distance_m", "step_distance_m", "step_column"}},
-      {"rates", {"signal_Hz", "reference_distance_m", "background_Hz"}},
-      {"window", {"first_row", "rows", "first_column", "columns"}}};
-  for (const auto& [table, node] : t) {
-    const auto it = std::find_if(allowed.begin(), allowed.end(), [&](const auto& a) { return a.first == table.str(); });
-    if (it == allowed.end() || !node.is_table())
-      throw UserError(fmt::format("{}: [{}] is not a tof-spad scene table; allowed: [scene], [target], [rates], [window] "
-                                  "(see scenes/tof-spad-plane.toml)", path, table.str()));
-    for (const auto& [key, value] : *node.as_table()) {
-      (void)value;
-      if (std::find(it->second.begin(), it->second.end(), std::string(key.str())) == it->second.end())
-        throw UserError(fmt::format("{}: {}.{} is not a tof-spad scene key; allowed in [{}]: {}", path, table.str(), key.str(),
-                                    table.str(), fmt::join(it->second, ", ")));
-    }
-  }
+  const scene::Scene in = scene::load_scene(path, "tof-spad");
   SpadScene s;
   s.file = path;
-  s.name = t.at_path("scene.name").value_or(fs::path(path).stem().string());
-  s.description = t.at_path("scene.description").value_or(std::string{});
-  if (!t.at_path("target.distance_m"))
-    throw UserError(fmt::format("{}: target.distance_m is required (tof-spad scene; see scenes/tof-spad-plane.toml)", path));
-  s.shape = t.at_path("target.shape").value_or(std::string("plane"));
-  if (s.shape != "plane" && s.shape != "step")
-    throw UserError(fmt::format("{}: target.shape = \"{}\": allowed \"plane\", \"step\"", path, s.shape));
+  s.name = in.name;
+  s.description = in.description;
+  s.shape = scene::shape_name(in.shape);
   // Echo (with +-6 sigma of the pulse) inside the TDC range and the laser period.
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
   const double max_m = 0.5 * phys::kSpeedOfLight_m_per_s * (std::min(period_s, cfg.tdc.full_range_s) - 2e-9);
-  s.distance_m = get_real(t, path, "target.distance_m", s.distance_m, 0.3, max_m, "m");
-  s.step_distance_m = get_real(t, path, "target.step_distance_m", s.distance_m, 0.3, max_m, "m");
-  s.step_column = get_int(t, path, "target.step_column", array_columns / 2, 0, array_columns);
-  s.signal_Hz = get_real(t, path, "rates.signal_Hz", s.signal_Hz, 0, 5e7, "counts/s");
-  s.reference_distance_m = get_real(t, path, "rates.reference_distance_m", s.distance_m, 0.1, 1e3, "m");
-  s.background_Hz = get_real(t, path, "rates.background_Hz", s.background_Hz, 0, 1e9, "counts/s");
+  check_range(in, "target.distance_m", 0.3, max_m, "m");
+  check_range(in, "target.step_distance_m", 0.3, max_m, "m");
+  check_range(in, "target.step_column", 0, array_columns, "");
+  s.distance_m = in.distance_m;
+  s.step_distance_m = in.get("target.step_distance_m", s.distance_m);
+  s.step_column = static_cast<int>(in.get("target.step_column", array_columns / 2));
+  if (in.shape == scene::TargetShape::DepthMap) {
+    s.map_columns = array_columns;
+    s.depth_map_m = in.depth_map->resample(array_rows, array_columns);
+    for (double z : s.depth_map_m)
+      if (z < 0.3 || z > max_m)
+        throw UserError(fmt::format("{}: target.depth_map_file: distance {:g} m; allowed 0.3 <= distance <= {:g} m (laser period and "
+                                    "TDC range)", path, z, max_m));
+  }
+  s.signal_Hz = in.get("rates.signal_Hz", s.signal_Hz);
+  s.reference_distance_m = in.get("rates.reference_distance_m", s.distance_m);
+  s.background_Hz = in.get("rates.background_Hz", s.background_Hz);
+  auto get_int = [&](const std::string& key, int def, int lo, int hi) {
+    check_range(in, key, lo, hi, "");
+    return static_cast<int>(in.get(key, def));
+  };
   const int cpt = cfg.tdc.columns_per_tdc;
-  s.rows = get_int(t, path, "window.rows", std::min(4, array_rows), 1, array_rows);
-  s.first_row = get_int(t, path, "window.first_row", (array_rows - s.rows) / 2, 0, array_rows - s.rows);
-  s.columns = get_int(t, path, "window.columns", std::min(16, array_columns), cpt, array_columns);
+  s.rows = get_int("window.rows", std::min(4, array_rows), 1, array_rows);
+  s.first_row = get_int("window.first_row", (array_rows - s.rows) / 2, 0, array_rows - s.rows);
+  s.columns = get_int("window.columns", std::min(16, array_columns), cpt, array_columns);
   if (s.columns % cpt != 0)
     throw UserError(fmt::format("{}: window.columns = {}: allowed a multiple of tdc.columns_per_tdc = {}", path, s.columns, cpt));
   const int default_first = ((array_columns - s.columns) / 2) / cpt * cpt;
-  s.first_column = get_int(t, path, "window.first_column", default_first, 0, array_columns - s.columns);
+  s.first_column = get_int("window.first_column", default_first, 0, array_columns - s.columns);
   if (s.first_column % cpt != 0)
     throw UserError(fmt::format("{}: window.first_column = {}: allowed a multiple of tdc.columns_per_tdc = {} (TDC group edge)",
                                 path, s.first_column, cpt));
@@ -152,14 +134,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
     throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 10000 (tof-spad frames; a range map is {})", frames,
                                 cfg.evaluation.frames_averaged));
   if (opt.tick) throw UserError("--tick: the tof-spad kernels are event-driven only (no cycle-by-cycle path); drop --tick");
-  if (!opt.trace.empty()) {
-    if (opt.kernel_only) throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
-    if (opt.trace.size() < 5 || opt.trace.substr(opt.trace.size() - 4) != ".vcd")
-      throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd", opt.trace));
-    const fs::path parent = fs::absolute(opt.trace).parent_path();
-    if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
-      throw UserError(fmt::format("--trace {}: directory {} does not exist or is not writable", opt.trace, parent.string()));
-  }
+  TraceOutput trace(opt.trace, opt.kernel_only);
   SpadScene sc = load_spad_scene(opt.scene, cfg, array_rows, array_columns);
   if (opt.dense) sc.first_row = 0, sc.rows = array_rows, sc.first_column = 0, sc.columns = array_columns;
   OutputDir out(opt.out.empty() ? "rangesim-out/simulate/" + sc.name : opt.out, "--out");
@@ -174,28 +149,20 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   sel.groups = sc.columns / cfg.tdc.columns_per_tdc;
   const systemc::spad::RateSource rates = [&sc](int r, int c) { return sc.rates(r, c); };
 
-  const std::string vcd_tmp_base = opt.trace.empty() ? "" : fmt::format("{}.partial-{}", opt.trace, ::getpid());
   const auto t_sim = Clock::now();
-  systemc::spad::SystemcRun res;
-  try {
-    res = opt.kernel_only ? systemc::spad::run_tof_spad_kernel(kernel, sel, rates, frames)
-                          : systemc::spad::run_tof_spad_systemc(kernel, sel, rates, frames, vcd_tmp_base);
-  } catch (...) {
-    if (!vcd_tmp_base.empty()) std::remove((vcd_tmp_base + ".vcd").c_str());
-    throw;
-  }
+  const systemc::spad::SystemcRun res = opt.kernel_only
+                                            ? systemc::spad::run_tof_spad_kernel(kernel, sel, rates, frames)
+                                            : systemc::spad::run_tof_spad_systemc(kernel, sel, rates, frames, trace.vcd_base());
   const double sim_wall_s = std::chrono::duration<double>(Clock::now() - t_sim).count();
-  if (res.sc_errors > 0) {
-    if (!vcd_tmp_base.empty()) std::remove((vcd_tmp_base + ".vcd").c_str());
+  if (res.sc_errors > 0)
     throw std::runtime_error(fmt::format("the model reported {} SystemC error(s): see the messages above", res.sc_errors));
-  }
 
   // ---- Range map and error against the ground truth ----
   const golden::FrameTiming gt = golden::frame_timing_tof_spad(params);
   std::vector<std::vector<double>> sum(static_cast<size_t>(sc.rows), std::vector<double>(static_cast<size_t>(sc.columns), 0.0));
   std::vector<std::vector<int>> cnt(static_cast<size_t>(sc.rows), std::vector<int>(static_cast<size_t>(sc.columns), 0));
   long long points_total = 0, detected = 0, photons = 0, avalanches = 0;
-  double sum_sq = 0, sum_err = 0, max_abs = 0;
+  RangeErrorStats err_stats;
   bool timing_matches = true;
   std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events\n";
   std::string frames_csv = "frame,cycles,laser_cycles,histogram_readout,avalanches,photons\n";
@@ -205,7 +172,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
                      f.phase_cycles[1] == gt.phases[1].cycles;
     photons += f.photons, avalanches += f.avalanches;
     for (const auto& p : f.pixels) {
-      const double truth = sc.distance_at(p.column);
+      const double truth = sc.distance_at(p.row, p.column);
       long long ev = 0;
       for (long long e : p.events) ev += e;
       ++points_total;
@@ -213,7 +180,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
       if (p.time_s) {
         ++detected;
         err = p.range_m - truth;
-        sum_sq += err * err, sum_err += err, max_abs = std::max(max_abs, std::fabs(err));
+        err_stats.add(err);
         const auto r = static_cast<size_t>(p.row - sc.first_row), c = static_cast<size_t>(p.column - sc.first_column);
         sum[r][c] += p.range_m, ++cnt[r][c];
       }
@@ -234,7 +201,6 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
     }
     range_csv += "\n";
   }
-  const double rms = detected ? std::sqrt(sum_sq / detected) : NAN, mean_err = detected ? sum_err / detected : NAN;
 
   // ---- Timing: measured from simulated time, beside the clock schedule ----
   const double frame_time_s = res.simulated_time_s / static_cast<double>(res.frames.size());
@@ -273,9 +239,6 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
         {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
         {"range_maps_per_s", gt.range_maps_per_s}}},
       {"timing_matches_golden", timing_matches},
-      {"range_error_rms_m", json_number(rms)},
-      {"range_error_mean_m", json_number(mean_err)},
-      {"range_error_max_abs_m", detected ? nlohmann::json(max_abs) : nlohmann::json(nullptr)},
       {"points", points_total},
       {"points_detected", detected},
       {"pixels_simulated", sc.rows * sc.columns},
@@ -286,40 +249,30 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
       {"photons_per_s", static_cast<double>(photons) / sim_wall_s},
       {"sc_errors", res.sc_errors},
   };
+  err_stats.to_json(j, false);
   out.write("range_map.csv", range_csv);
   out.write("points.csv", points);
   out.write("frames.csv", frames_csv);
   std::string warning;
   if (!opt.no_plots) warning = render_range_map(out, map, fmt::format("{} — tof-spad ({} frame{})", sc.name, res.frames.size(), res.frames.size() == 1 ? "" : "s"),
                                                    "column in window", "row in window");
-  if (!warning.empty()) j["warnings"] = {warning};
-  out.write("summary.json", j.dump(2) + "\n");
-  const std::vector<std::string> written = out.commit();
-  if (!vcd_tmp_base.empty()) fs::rename(vcd_tmp_base + ".vcd", opt.trace);
-
-  if (opt.json) {
-    fmt::print("{}\n", j.dump(2));
-    return kExitOk;
-  }
-  if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
-  fmt::print("tof-spad on scene '{}' ({}): {} frame{}, {}, {}, window {} rows x {} columns\n\n", sc.name, sc.shape,
-             res.frames.size(), res.frames.size() == 1 ? "" : "s", opt.kernel_only ? "bare kernels" : "SystemC",
-             opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed), sc.rows, sc.columns);
-  fmt::print("  {:<18} {:>14} {:>14} {:>12}\n", "phase", "cycles", "golden", "time");
-  for (const auto& p : phases)
-    fmt::print("  {:<18} {:>14} {:>14} {:>9.3f} ms\n", p["name"].get<std::string>(), p["cycles"].get<long long>(),
-               p["golden_cycles"].get<long long>(), p["time_s"].get<double>() * 1e3);
-  fmt::print("  {:<18} {:>14} {:>14}\n\n", "frame", first.cycles, gt.frame_cycles);
-  fmt::print("  frame time    {:>10.4f} s measured, {:.4f} s golden{}\n", frame_time_s, gt.frame_time_s,
-             timing_matches ? "" : "  (MISMATCH)");
-  fmt::print("  frame rate    {:>10.4f} Hz measured, {:.4f} Hz golden\n\n", frame_rate_Hz, gt.frame_access_rate_Hz);
-  fmt::print("  pixels {} x {} frames, detected {}\n", sc.rows * sc.columns, res.frames.size(), detected);
-  if (detected)
-    fmt::print("  range error   rms {:.3f} mm, mean {:+.3f} mm, max |e| {:.3f} mm\n", rms * 1e3, mean_err * 1e3, max_abs * 1e3);
-  fmt::print("  wall time     {:.2f} s, {:.3g} photons/s simulated\n\n", wall_s, static_cast<double>(photons) / sim_wall_s);
-  for (const auto& w : written) fmt::print("  wrote {}\n", w);
-  if (!opt.trace.empty()) fmt::print("  wrote {}\n", opt.trace);
-  return kExitOk;
+  SimulateSummary report;
+  report.headline = fmt::format("tof-spad on scene '{}' ({}): {} frame{}, {}, {}, window {} rows x {} columns", sc.name, sc.shape,
+                             res.frames.size(), res.frames.size() == 1 ? "" : "s", opt.kernel_only ? "bare kernels" : "SystemC",
+                             opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed), sc.rows, sc.columns);
+  report.phases = phases;
+  report.frame_label = "frame";
+  report.frame_cycles = first.cycles, report.golden_frame_cycles = gt.frame_cycles;
+  report.frame_time_s = frame_time_s, report.golden_frame_time_s = gt.frame_time_s;
+  report.frame_rate_Hz = frame_rate_Hz, report.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
+  report.timing_matches = timing_matches;
+  report.range_maps_per_s = frame_rate_Hz / static_cast<double>(gt.frames_per_range_map);
+  report.frames_per_range_map = gt.frames_per_range_map;
+  report.points_line = fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), detected);
+  report.error = err_stats;
+  report.wall_time_s = wall_s;
+  report.wall_note = fmt::format("{:.3g} photons/s simulated", static_cast<double>(photons) / sim_wall_s);
+  return finish_simulate(opt, out, trace, j, warning, report);
 }
 
 }  // namespace rangesim::app

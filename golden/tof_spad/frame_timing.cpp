@@ -8,13 +8,11 @@
 //      periods of Np cycles each, the row's pixels integrating their histograms;
 //   2. "histogram_readout": the row's histograms (codes words per pixel) read out, one output
 //      lane per TDC (columns / columns_per_tdc lanes in parallel), so a lane reads
-//      columns_per_tdc x codes words at kReadoutWordRate_Hz, W = ceil(clock_Hz / word rate)
+//      columns_per_tdc x codes words at histogram.readout_word_rate_Hz, W = ceil(clock_Hz / word rate)
 //      clock cycles per word.
 //   frame_cycles = rows x (L x Np + columns_per_tdc x codes x W)
 // Phases are listed in schedule order, each summed over the rows.
 // A range map is evaluation.frames_averaged frames (the golden model's accumulated histograms).
-// The preset has no readout key: kReadoutWordRate_Hz = 100 MHz is a documented assumption
-// (key to add: histogram.readout_word_rate_Hz).
 #include <cmath>
 
 #include "core/tof_spad_config.h"
@@ -23,10 +21,6 @@
 
 namespace rangesim::golden {
 
-namespace {
-constexpr double kReadoutWordRate_Hz = 100e6;  // assumed: histogram words per second per lane
-}
-
 FrameTiming frame_timing_tof_spad(const ParamSet& params) {
   const TofSpadConfig cfg = tof_spad_from_params(params);
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
@@ -34,7 +28,7 @@ FrameTiming frame_timing_tof_spad(const ParamSet& params) {
   const double clock_Hz = 1.0 / cfg.tdc.lsb_s;
   const long long laser_cycles = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
   const long long rows = params.integer("array.rows");
-  const long long cycles_per_word = static_cast<long long>(std::ceil(clock_Hz / kReadoutWordRate_Hz - 1e-9));
+  const long long cycles_per_word = static_cast<long long>(std::ceil(clock_Hz / cfg.histogram.readout_word_rate_Hz - 1e-9));
   const long long words_per_lane = static_cast<long long>(cfg.tdc.columns_per_tdc) * bins.codes;
 
   FrameTiming t;

@@ -216,8 +216,18 @@ DemodFrameResult DemodSensorKernel::run_frame(std::uint64_t frame, const DemodSt
   return finish_frame();
 }
 
+bool DemodSensorKernel::mpy_plus() const {
+  if (phase_ != DemodPhase::Integration) return false;
+  int c = phase_cycle_ % sched_.period_cycles;
+  for (std::size_t i = 0; i < sched_.segment_cycles.size(); ++i) {
+    if (c < sched_.segment_cycles[i]) return sched_.segment_branch[i] > 0;
+    c -= sched_.segment_cycles[i];
+  }
+  return false;
+}
+
 DemodRunResult run_demod_kernel(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt,
-                                const DemodStimulusSource& source, long long frames) {
+                                const DemodStimulusSource& source, long long frames, const DemodProgress& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   DemodSensorKernel k(cfg, opt);
   DemodRunResult out;
@@ -225,6 +235,7 @@ DemodRunResult run_demod_kernel(const LsDemodulationConfig& cfg, const DemodKern
   for (long long f = 0; f < frames; ++f) {
     source(static_cast<std::uint64_t>(f), s);
     out.frames.push_back(k.run_frame(static_cast<std::uint64_t>(f), s));
+    if (progress) progress(f + 1);
   }
   out.cycles = k.cycle();
   out.simulated_time_s = static_cast<double>(out.cycles) / cfg.readout.clock_Hz;

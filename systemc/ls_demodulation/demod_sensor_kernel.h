@@ -98,6 +98,12 @@ class DemodSensorKernel {
   long long cycle() const { return cycle_; }       // edges since construction
   const DemodFrameResult& result() const { return res_; }
 
+  // Read-only views for waveforms (DemodSensor::trace); they do not change the state.
+  int decision() const { return decision_; }        // decision index within the frame
+  int phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
+  AddressSearchPins search_pins() const { return search_.pins(); }  // the row search's pins
+  bool mpy_plus() const;                            // integration: MPY+ (C1) selected at this cycle
+
   const LsDemodulationConfig& config() const { return cfg_; }
   const DemodWindowSchedule& schedule() const { return sched_; }
   int search_cycles() const { return search_cycles_; }
@@ -137,7 +143,9 @@ struct DemodRunResult {
   double wall_time_s = 0;
   long long sc_errors = 0;      // SystemC harness only
 };
+// Called after each finished frame with the number of frames done (progress reports).
+using DemodProgress = std::function<void(long long frames_done)>;
 DemodRunResult run_demod_kernel(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt,
-                                const DemodStimulusSource& source, long long frames);
+                                const DemodStimulusSource& source, long long frames, const DemodProgress& progress = {});
 
 }  // namespace rangesim::systemc

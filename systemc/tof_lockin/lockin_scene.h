@@ -1,19 +1,7 @@
 #pragma once
-// Scene of the tof-lockin clock-level model (scenes/tof-lockin-*.toml;
-// docs/tof-lockin-clock.md). SI units in the key names:
-//   [scene]   name, description
-//   [target]  shape = "plane" | "step"; distance_m (plane, and the far part of
-//   the step);
-//             step: near_distance_m, step_column_fraction (columns c < fraction
-//             x columns are near)
-//   [light]   signal_photocurrent_A (pixel photocurrent during the received
-//   pulse at
-//             reference_distance_m, scaled by (reference / distance)^2),
-//             reference_distance_m, background_photocurrent_A (constant, every
-//             pixel)
-//   [window]  rows, columns (optional: simulate the top-left rows x columns
-//   pixels; 0 = whole array)
-// Bad input throws rangesim::UserError naming the file, key and allowed range.
+// Scene of the tof-lockin clock-level model, as the pixels see it: the target depth per pixel
+// and the light (docs/tof-lockin-clock.md). Read from a scene file by scene::load_scene and
+// scene::to_lockin_scene (scene/sensor_scenes.h); this struct only turns it into stimulus.
 #include <string>
 #include <vector>
 
@@ -23,7 +11,7 @@
 namespace rangesim::systemc::lockin {
 
 struct LockinScene {
-  enum class Shape { Plane, Step };
+  enum class Shape { Plane, Step, DepthMap };
   std::string file;             // where it was loaded from
   std::string name;             // [scene] name
   std::string description;      // [scene] description
@@ -37,6 +25,8 @@ struct LockinScene {
   double reference_distance_m = 1.0;    // distance of signal_photocurrent_A
   double background_photocurrent_A = 0; // background photocurrent, every pixel
   int rows = 0, columns = 0;            // simulated window (0 = whole array)
+  std::vector<double> depth_map_m;      // depth map: depth of every pixel of the whole array, row-major
+  int map_columns = 0;                  // depth map: columns of the array it was resampled to
 
   // Window actually simulated for an array of cfg's size.
   int window_rows(const TofLockinConfig &cfg) const {
@@ -53,6 +43,5 @@ struct LockinScene {
 };
 
 const char *shape_name(LockinScene::Shape s);
-LockinScene load_lockin_scene(const std::string &path);
 
 } // namespace rangesim::systemc::lockin

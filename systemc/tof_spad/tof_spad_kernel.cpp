@@ -23,7 +23,7 @@ TofSpadKernel::TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, co
   block_event_bins_ = in.block_event_bins;
   block_overflow_bins_ = in.block_overflow_bins;
   laser_cycles_ = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
-  cycles_per_word_ = static_cast<long long>(std::ceil(clock_Hz() / kReadoutWordRate_Hz - 1e-9));
+  cycles_per_word_ = static_cast<long long>(std::ceil(clock_Hz() / cfg.histogram.readout_word_rate_Hz - 1e-9));
 }
 
 int TofSpadKernel::phase_bin(double phase_s) const {

@@ -89,8 +89,6 @@ class TofSpadKernel {
   // TDC code of a phase in the laser period (coarse count + fine interpolation on the edges).
   int phase_bin(double phase_s) const;
 
-  static constexpr double kReadoutWordRate_Hz = 100e6;  // golden/tof_spad/frame_timing.cpp
-
  private:
   TofSpadConfig cfg_;
   int rows_, columns_;

@@ -82,8 +82,8 @@ TEST(Scene, BadInputNamesFileKeyAndRange) {
   EXPECT_NE(e.find(".toml:7"), std::string::npos) << e;  // file and line
   e = error_of(replace(kGood, "reflectance = 0.5", "reflectance = 0.5\ncolour = 3"));
   EXPECT_NE(e.find("unknown key 'target.colour'"), std::string::npos) << e;
-  e = error_of(replace(kGood, "f_number = 1.4\n", ""));
-  EXPECT_NE(e.find("missing key 'camera.f_number'"), std::string::npos) << e;
+  e = error_of(replace(kGood, "beam]\npower_W = 0.5\n", "beam]\n"));
+  EXPECT_NE(e.find("missing key 'beam.power_W'"), std::string::npos) << e;
   e = error_of(replace(kGood, "\"plane\"", "\"sphere\""));
   EXPECT_NE(e.find("allowed: plane, tilted, step"), std::string::npos) << e;
   e = error_of(replace(kGood, "distance_m = 1.0", "distance_m = \"far\""));

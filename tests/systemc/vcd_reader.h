@@ -105,6 +105,9 @@ inline VcdFile read_vcd(const std::string& path) {
         return f;
       }
       it->second.emplace_back(now, vcd_bits(tok.substr(1)));
+    } else if (tok[0] == 'r' || tok[0] == 'R') {  // real value: not kept (skip its identifier)
+      std::string id;
+      in >> id;
     } else if (tok[0] == '0' || tok[0] == '1' || tok[0] == 'x' || tok[0] == 'z') {
       const std::string id = tok.substr(1);
       auto it = f.changes.find(id);

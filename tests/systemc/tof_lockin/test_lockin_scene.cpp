@@ -7,10 +7,17 @@
 
 #include "core/user_error.h"
 #include "lockin_sc_test_util.h"
+#include "scene/scene.h"
+#include "scene/sensor_scenes.h"
 #include "systemc/tof_lockin/lockin_scene.h"
 
 namespace rangesim::systemc::lockin {
 namespace {
+
+// The tof-lockin scenes go through the one scene reader (scene/scene.h).
+LockinScene load_lockin_scene(const std::string &path) {
+  return scene::to_lockin_scene(scene::load_scene(path, "tof-lockin"), test::edited_config({}));
+}
 
 std::string write_scene(const std::string &text) {
   const std::string path = ::testing::TempDir() + "lockin_scene_test.toml";
@@ -63,10 +70,10 @@ TEST(LockinScene, BadInputNamesFileKeyAndRange) {
                {"target.distance_m", "allowed", "1000"});
   expect_error("[scene]\nname = \"x\"\n[target]\ndistance_m = "
                "1.0\n[light]\nsignal_photocurrent_A = 1e-9\nsignal_A = 2\n",
-               {"unknown key light.signal_A"});
+               {"unknown key 'light.signal_A'"});
   expect_error("[scene]\nname = \"x\"\n[target]\nshape = \"cube\"\ndistance_m "
                "= 1.0\n[light]\nsignal_photocurrent_A = 1e-9\n",
-               {"target.shape", "\"plane\", \"step\""});
+               {"target.shape", "allowed: plane, step, depth_map"});
   expect_error("[scene]\nname = \"x\"\n[target]\ndistance_m = 1.0\n",
                {"light.signal_photocurrent_A", "missing"});
   expect_error("[scene]\nname = \"x\"\n[target]\nshape = \"step\"\ndistance_m "
@@ -75,7 +82,7 @@ TEST(LockinScene, BadInputNamesFileKeyAndRange) {
   expect_error(
       "[scene]\nname = \"x\"\n[target]\ndistance_m = "
       "1.0\n[light]\nsignal_photocurrent_A = 1e-9\n[window]\nrows = 9999\n",
-      {"window.rows", "0 .. 4096"});
+      {"window.rows", "[0, 4096]"});
   expect_error("[scene\nname = 1", {":1:"});
 }
 

@@ -1,0 +1,110 @@
+#include "app/simulate/trace_output.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fcntl.h>
+#include <filesystem>
+#include <fmt/format.h>
+#include <spawn.h>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+#include "core/user_error.h"
+
+extern char** environ;
+
+namespace rangesim::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// Runs argv[0] (searched on PATH) with stdout/stderr sent to /dev/null; returns the exit status
+// or -1 when it could not be started.
+int run_quiet(const std::vector<std::string>& args) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool on_path(const std::string& tool) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = dirs.find(':', start);
+    const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (!dir.empty() && ::access((fs::path(dir) / tool).c_str(), X_OK) == 0) return true;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return false;
+}
+
+}  // namespace
+
+TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path) {
+  if (path_.empty()) return;
+  if (kernel_only) throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
+  if (!ends_with(path_, ".vcd") && !ends_with(path_, ".fst"))
+    throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd or .fst", path_));
+  const fs::path parent = fs::absolute(path_).parent_path();
+  if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
+    throw UserError(fmt::format("--trace {}: directory {} does not exist or is not writable", path_, parent.string()));
+  if (ends_with(path_, ".fst") && !on_path("vcd2fst"))
+    throw UserError(fmt::format("--trace {}: writing FST needs vcd2fst (Debian package gtkwave, scripts/install-deps.sh); "
+                                "or name the trace .vcd", path_));
+  vcd_base_ = fmt::format("{}.partial-{}", path_, ::getpid());
+}
+
+TraceOutput::~TraceOutput() {
+  if (committed_ || path_.empty()) return;
+  std::error_code ec;
+  fs::remove(vcd_base_ + ".vcd", ec);
+  if (!finished_.empty()) fs::remove(finished_, ec);
+}
+
+void TraceOutput::finish() {
+  if (path_.empty()) return;
+  const std::string vcd = vcd_base_ + ".vcd";
+  if (!fs::exists(vcd)) throw std::runtime_error(fmt::format("--trace {}: the model wrote no waveform", path_));
+  if (ends_with(path_, ".vcd")) {
+    finished_ = vcd;
+    return;
+  }
+  finished_ = vcd_base_ + ".fst";
+  const int rc = run_quiet({"vcd2fst", vcd, finished_});
+  std::error_code ec;
+  fs::remove(vcd, ec);
+  if (rc != 0 || !fs::exists(finished_)) {
+    fs::remove(finished_, ec);
+    throw std::runtime_error(fmt::format("--trace {}: vcd2fst failed (exit {}); nothing written", path_, rc));
+  }
+}
+
+std::string TraceOutput::commit() {
+  if (path_.empty()) return "";
+  if (finished_.empty()) throw std::logic_error("TraceOutput::commit before finish");
+  fs::rename(finished_, path_);
+  committed_ = true;
+  return path_;
+}
+
+}  // namespace rangesim::app

@@ -1,0 +1,36 @@
+#pragma once
+// `rangesim simulate --trace FILE.vcd|FILE.fst`, shared by every sensor. SystemC writes VCD only,
+// so the model always traces into a temporary VCD beside the target; for .fst that VCD is
+// converted with vcd2fst (Debian package gtkwave). Nothing appears under FILE until commit():
+// a failed run, a failed conversion or an exception leaves no trace file and no temporary.
+#include <string>
+
+namespace rangesim::app {
+
+class TraceOutput {
+ public:
+  // `path` = --trace ("" = tracing off: everything below is a no-op). Throws UserError (exit 2)
+  // when the name does not end in .vcd or .fst, the directory is missing or not writable, the
+  // harness is the bare kernels (no waveform), or vcd2fst is missing for .fst.
+  TraceOutput(const std::string& path, bool kernel_only);
+  ~TraceOutput();  // removes the temporaries unless committed
+  TraceOutput(const TraceOutput&) = delete;
+  TraceOutput& operator=(const TraceOutput&) = delete;
+
+  bool enabled() const { return !path_.empty(); }
+  // Base name for sc_create_vcd_trace_file (which appends ".vcd"); "" when tracing is off.
+  const std::string& vcd_base() const { return vcd_base_; }
+  // Converts the finished VCD to its final format under a temporary name (call before the
+  // output folder is committed, so a failure leaves nothing written). Throws std::runtime_error.
+  void finish();
+  // Renames the finished trace to FILE. After finish(); returns FILE ("" when off).
+  std::string commit();
+
+ private:
+  std::string path_;      // --trace
+  std::string vcd_base_;  // temporary VCD without ".vcd"
+  std::string finished_;  // temporary in the final format, ready to rename
+  bool committed_ = false;
+};
+
+}  // namespace rangesim::app

@@ -1,0 +1,237 @@
+// End-to-end through the rangesim binary, for every sensor: depth-map scenes (ground truth = the
+// map, range error small) and --trace FILE.fst read back with fst2vcd from the gtkwave package
+// (named signals present, values that move).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "run_command.h"
+#include "vcd_reader.h"
+
+namespace fs = std::filesystem;
+using rangesim::systemc::test::read_vcd;
+using rangesim::systemc::test::VcdFile;
+
+namespace {
+
+const std::string kDriver = SIMULATE_DRIVER_BIN;
+const std::string kScenes = RANGESIM_SCENE_DIR;
+
+CommandResult rangesim_cmd(const std::string& args) {
+  return run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 " + kDriver + " " + args);
+}
+
+// Column `name` of a CSV file as numbers (empty cells skipped).
+std::vector<double> csv_column(const std::string& path, const std::string& name) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> head;
+  std::stringstream hs(line);
+  for (std::string h; std::getline(hs, h, ',');) head.push_back(h);
+  const auto idx = static_cast<std::size_t>(std::find(head.begin(), head.end(), name) - head.begin());
+  std::vector<double> v;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::string cell;
+    for (std::size_t i = 0; std::getline(ls, cell, ','); ++i)
+      if (i == idx && !cell.empty()) v.push_back(std::stod(cell));
+  }
+  return v;
+}
+
+struct DepthCase {
+  const char* sensor;
+  const char* scene;
+  const char* args;    // frames, harness
+  double rms_max_m;    // bound on the range error against the map
+  double near_m, far_m;  // the scene's depth_near_m / depth_far_m
+  bool has_points;     // writes points.csv with truth_range_m
+  double min_span;     // the truth must span this fraction of [near, far] (the map is not flat there)
+};
+
+}  // namespace
+
+TEST(SimulateDepthMap, EverySensorRangesTheMap) {
+  const DepthCase cases[] = {
+      {"ls-conventional", "depth-map", "--frames 60 --kernel-only", 5e-3, 0.95, 1.15, true, 0.3},
+      {"ls-demodulation", "ls-demodulation-depth-map", "--frames 3 --kernel-only", 5e-3, 0.98, 1.06, true, 0.01},  // 3 frames: the stripe at the map's edge
+      {"tof-lockin", "tof-lockin-depth-map", "--kernel-only --noise-free", 20e-3, 2.0, 4.0, false, 0},
+      {"tof-spad", "tof-spad-depth-map", "--kernel-only", 15e-3, 1.5, 3.0, true, 0.3},
+  };
+  const std::string dir = make_temp_dir();
+  for (const DepthCase& c : cases) {
+    const std::string out = dir + "/" + c.sensor;
+    const CommandResult r = rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene + ".toml " +
+                                         c.args + " --json --no-plots --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << c.sensor << "\n" << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["target_shape"], "depth_map") << c.sensor;
+    EXPECT_TRUE(j["timing_matches_golden"].get<bool>()) << c.sensor;
+    EXPECT_GT(j["points_detected"].get<long long>(), 0) << c.sensor;
+    EXPECT_LT(j["range_error_rms_m"].get<double>(), c.rms_max_m) << c.sensor;
+    if (!c.has_points) continue;
+    // The ground truth comes from the map: inside [near, far] and spanning a good part of it.
+    const auto truth = csv_column(out + "/points.csv", "truth_range_m");
+    ASSERT_FALSE(truth.empty()) << c.sensor;
+    const auto [lo, hi] = std::minmax_element(truth.begin(), truth.end());
+    EXPECT_GE(*lo, c.near_m - 1e-9) << c.sensor;
+    EXPECT_LE(*hi, c.far_m + 1e-9) << c.sensor;
+    EXPECT_GT(*hi - *lo, c.min_span * (c.far_m - c.near_m)) << c.sensor;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(SimulateDepthMap, BadDepthMapExitsTwoNamingFileAndKey) {
+  const std::string dir = make_temp_dir();
+  std::ofstream(dir + "/s.toml") << "[scene]\nname = \"s\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"nope.pgm\"\n"
+                                    "depth_near_m = 1\ndepth_far_m = 2\n[rates]\nsignal_Hz = 1e4\n";
+  const CommandResult r = rangesim_cmd("simulate tof-spad --scene " + dir + "/s.toml --kernel-only --out " + dir + "/o");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(dir + "/s.toml:5: target.depth_map_file (" + dir + "/nope.pgm): cannot read"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/o"));
+  std::ofstream(dir + "/far.pgm") << "P2 1 1 1 1\n";
+  std::ofstream(dir + "/t.toml") << "[scene]\nname = \"t\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"far.pgm\"\n"
+                                    "depth_near_m = 1\ndepth_far_m = 50\n[rates]\nsignal_Hz = 1e4\n";
+  const CommandResult f = rangesim_cmd("simulate tof-spad --scene " + dir + "/t.toml --kernel-only --out " + dir + "/o");
+  EXPECT_EQ(f.exit_code, 2) << f.err;
+  EXPECT_NE(f.err.find("target.depth_map_file: distance 50 m; allowed 0.3 <= distance <="), std::string::npos) << f.err;
+  EXPECT_FALSE(fs::exists(dir + "/o"));
+  fs::remove_all(dir);
+}
+
+namespace {
+
+struct TraceCase {
+  const char* sensor;
+  const char* scene;
+  const char* args;
+  std::vector<std::string> signals;  // must be in the waveform
+  const char* moving;                // a signal that must change at least `changes` times
+  std::size_t changes;
+};
+
+// Test names and messages show the sensor, not the struct's bytes.
+void PrintTo(const TraceCase& c, std::ostream* os) { *os << c.sensor; }
+
+// fst2vcd the FST and read it back.
+VcdFile fst_to_vcd(const std::string& fst, const std::string& vcd) {
+  const CommandResult c = run_command("fst2vcd -f " + fst + " -o " + vcd);
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  return read_vcd(vcd);
+}
+
+}  // namespace
+
+class SimulateTraceFst : public ::testing::TestWithParam<TraceCase> {};
+
+TEST_P(SimulateTraceFst, ReadBackByFst2Vcd) {
+  const TraceCase& c = GetParam();
+  const std::string dir = make_temp_dir();
+  const CommandResult r = rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene + ".toml " +
+                                       c.args + " --json --no-plots --trace " + dir + "/w.fst --out " + dir + "/o");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["trace"], dir + "/w.fst");
+  ASSERT_TRUE(fs::exists(dir + "/w.fst"));
+  for (const auto& e : fs::directory_iterator(dir))  // no temporary VCD or FST left behind
+    EXPECT_EQ(e.path().string().find(".partial"), std::string::npos) << e.path();
+  std::ifstream fst(dir + "/w.fst", std::ios::binary);
+  std::string head(5, '\0');
+  fst.read(&head[0], 5);
+  EXPECT_EQ(head.find("$"), std::string::npos) << "an FST is binary, not VCD text";
+  const VcdFile v = fst_to_vcd(dir + "/w.fst", dir + "/w.vcd");
+  ASSERT_TRUE(v.ok) << v.error;
+  for (const auto& s : c.signals) EXPECT_TRUE(v.has(s)) << s;
+  ASSERT_TRUE(v.has(c.moving));
+  EXPECT_GE(v.of(c.moving).size(), c.changes) << c.moving;
+  EXPECT_GT(v.end_time, 0U);
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EverySensor, SimulateTraceFst,
+    ::testing::Values(
+        TraceCase{"ls-conventional", "plane", "--frames 2", {"clk", "rst", "latch", "search_start", "row0_addr_bit", "frame"}, "latch", 8},
+        TraceCase{"ls-demodulation", "ls-demodulation-plane", "--frames 1 --tick",
+                  {"clk", "phase", "decision", "phase_cycle", "mpy_plus", "row", "search_start", "addr_valid", "addr_bit", "frame_done"},
+                  "addr_valid", 1},
+        TraceCase{"tof-lockin", "tof-lockin-plane", "--frames 1", {"tx1", "tx2", "txd", "light", "phase", "row"}, "row", 100},  // gates aggregated: rows move
+        TraceCase{"tof-spad", "tof-spad-plane", "--frames 1", {"row", "phase", "word_valid", "word"}, "word_valid", 1}),
+    [](const ::testing::TestParamInfo<TraceCase>& i) {
+      std::string n = i.param.sensor;
+      std::replace(n.begin(), n.end(), '-', '_');
+      return n;
+    });
+
+TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
+  const std::string dir = make_temp_dir();
+  const std::string base = "simulate ls-demodulation --scene " + kScenes + "/ls-demodulation-plane.toml --frames 1 --json --no-plots";
+  const CommandResult a = rangesim_cmd(base + " --trace " + dir + "/a.vcd --out " + dir + "/a");
+  const CommandResult b = rangesim_cmd(base + " --trace " + dir + "/b.fst --out " + dir + "/b");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const VcdFile va = read_vcd(dir + "/a.vcd"), vb = fst_to_vcd(dir + "/b.fst", dir + "/b.vcd");
+  ASSERT_TRUE(va.ok && vb.ok) << va.error << vb.error;
+  for (const char* s : {"mpy_plus", "frame_done", "row_valid", "row", "decision"}) {
+    ASSERT_TRUE(va.has(s) && vb.has(s)) << s;
+    EXPECT_EQ(va.of(s), vb.of(s)) << s;  // the conversion keeps every change
+  }
+  EXPECT_GE(va.rising_edges("mpy_plus").size(), 4U);  // N = 5 correlation periods; event skipping shows the edges it stops at
+  // Bad --trace: exit 2, the message names the flag, nothing written.
+  struct Case {
+    std::string args, message;
+  };
+  const Case cases[] = {{" --trace " + dir + "/w.txt", "must end in .vcd or .fst"},
+                        {" --trace " + dir + "/w.fst --kernel-only", "--trace needs the SystemC model"},
+                        {" --trace " + dir + "/missing/w.fst", "does not exist or is not writable"}};
+  for (const Case& c : cases) {
+    const CommandResult r = rangesim_cmd(base + c.args + " --out " + dir + "/o");
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/o")) << c.args;
+    EXPECT_FALSE(fs::exists(dir + "/w.fst")) << c.args;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(SimulatePresetKeys, TofSpadReadoutWordRateSetsTheReadoutPhaseInGoldenAndKernel) {
+  const std::string dir = make_temp_dir();
+  std::ifstream in(std::string(RANGESIM_SOURCE_DIR) + "/presets/tof-spad.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const std::string key = "readout_word_rate_Hz = { value = 100e6,";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.replace(text.find(key), key.size(), "readout_word_rate_Hz = { value = 50e6,");
+  std::ofstream(dir + "/slow.toml") << text;
+  auto readout_cycles = [](const nlohmann::json& phases) {
+    for (const auto& p : phases)
+      if (p["name"] == "histogram_readout") return p.contains("golden_cycles") ? p["golden_cycles"].get<long long>() : p["cycles"].get<long long>();
+    return -1LL;
+  };
+  const CommandResult fast = rangesim_cmd("frame-rate tof-spad --json"), slow = rangesim_cmd("frame-rate " + dir + "/slow.toml --json");
+  ASSERT_EQ(fast.exit_code, 0) << fast.err;
+  ASSERT_EQ(slow.exit_code, 0) << slow.err;
+  const long long rf = readout_cycles(nlohmann::json::parse(fast.out)["phases"]);
+  const long long rs = readout_cycles(nlohmann::json::parse(slow.out)["phases"]);
+  // W = ceil(clock / word rate): 103 cycles per word at 100 MHz, 205 at 50 MHz (clock 10.24 GHz).
+  EXPECT_GT(rf, 0);
+  EXPECT_NEAR(static_cast<double>(rs) / static_cast<double>(rf), 2.0, 0.02);
+  const CommandResult sim = rangesim_cmd("simulate " + dir + "/slow.toml --scene " + kScenes +
+                                         "/tof-spad-plane.toml --kernel-only --json --no-plots --out " + dir + "/o");
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  const auto j = nlohmann::json::parse(sim.out);
+  EXPECT_TRUE(j["timing_matches_golden"].get<bool>());
+  for (const auto& p : j["phases"]) {
+    if (p["name"] == "histogram_readout") {
+      EXPECT_EQ(p["cycles"].get<long long>(), rs);
+    }
+  }
+  fs::remove_all(dir);
+}
