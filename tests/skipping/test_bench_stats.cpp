@@ -27,7 +27,7 @@ TEST(BenchStats, KolmogorovTailAtKnownPoints) {
 TEST(BenchStats, SameDistributionPassesShiftsFail) {
   const auto a = normal(4000, 10, 2, 1), b = normal(4000, 10, 2, 2);
   EXPECT_TRUE(compare_samples(a, b).indistinguishable());
-  const auto shifted = normal(4000, 10.3, 2, 3);  // 0.15 sigma
+  const auto shifted = normal(4000, 10.5, 2, 3);  // 0.25 sigma: expected 11 SE
   const TwoSampleComparison s = compare_samples(a, shifted);
   EXPECT_FALSE(s.indistinguishable());
   EXPECT_LT(s.mean_z, -5);
