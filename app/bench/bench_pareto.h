@@ -16,6 +16,7 @@ struct ParetoRow {
   std::vector<std::string> args;         // rangesim simulate arguments after the sensor
   long long frames = 0;                  // frames simulated
   double wall_s = 0;                     // wall time of the child process
+  double cpu_s = 0;                      // CPU time of the child process (the Pareto axis)
   double error_m = 0;                    // rms range error against the ground truth (NaN: none detected)
   long long points = 0;                  // points detected (error sample size)
   bool pareto = false;                   // not dominated within the sensor

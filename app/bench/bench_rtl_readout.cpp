@@ -197,10 +197,12 @@ RtlReadoutResult run_rtl_readout(const LsConventionalConfig& cfg, const ReadoutS
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
   const double elaboration_s = seconds_since(t0);
   const auto t1 = Clock::now();
+  const double c1 = cpu_now();
   const long long limit = kResetCycles + 4 + static_cast<long long>(stim.frames) * schedule(cfg).frame_cycles;
   sc_core::sc_start(period * static_cast<double>(limit));
   RtlReadoutResult r = top.result();
   r.wall_s = seconds_since(t1);
+  r.cpu_s = cpu_now() - c1;
   r.elaboration_s = elaboration_s;
   r.txns = top.ordered();
   r.assertion_failed = Verilated::defaultContextp()->gotError();

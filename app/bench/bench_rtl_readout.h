@@ -42,6 +42,7 @@ struct RtlReadoutResult {
   std::vector<ReadoutTxn> txns;  // ordered by (frame, sampling, row)
   long long cycles = 0;          // clock cycles simulated after reset release
   double wall_s = 0;             // sc_start of the frames (elaboration excluded)
+  double cpu_s = 0;              // CPU time of the same
   double elaboration_s = 0;      // building the 365 verilated instances
   long long sc_errors = 0;
   bool assertion_failed = false;  // a Verilog assertion fired

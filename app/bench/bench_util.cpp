@@ -1,7 +1,9 @@
 #include "app/bench/bench_util.h"
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -23,6 +25,19 @@ std::string shell_quote(const std::string& s) {
 }  // namespace
 
 void set_progress_start(Clock::time_point t0) { g_start = t0; }
+
+double cpu_now() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+double children_cpu_now() {
+  rusage u{};
+  ::getrusage(RUSAGE_CHILDREN, &u);
+  auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
 
 void progress(const std::string& what) {
   fmt::print(stderr, "bench [{:6.1f} s] {}\n", seconds_since(g_start), what);

@@ -14,6 +14,12 @@ using Clock = std::chrono::steady_clock;
 inline double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
+// CPU time of this process (user + system), s. The figures are ratios of CPU times: on a shared
+// machine the wall time depends on the other users' load, the CPU time of a single-threaded run
+// does not.
+double cpu_now();
+// CPU time of the waited-for child processes (getrusage RUSAGE_CHILDREN), s.
+double children_cpu_now();
 
 // Runs `job` in a forked child and returns the JSON it produced. The child's exceptions come back
 // as {"error": "..."}; a crash as {"error": "child ended with status N"}. Needed for every
