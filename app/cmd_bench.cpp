@@ -32,15 +32,15 @@ struct FigureSpec {
   const char* meaning;
 };
 const FigureSpec kFigures[] = {
-    {"sparse_vs_dense", ">= 20", "ls-conventional full map: dense time / sparse time, bit-identical output"},
-    {"model_vs_rtl", ">= 100", "RTL readout time / clock-level model time for the same map, identical addresses and cycles"},
+    {"sparse_vs_dense", ">= 20", "ls-conventional map: dense / sparse CPU time per frame access, bit-identical output"},
+    {"model_vs_rtl", ">= 100", "RTL readout CPU time / clock-level model CPU time per frame access, identical addresses and cycles"},
     {"touch_limit_ratio", "<= 4", "model time / a loop reading each lit pixel once per sampling"},
     {"systemc_vs_kernel", ">= 0.5", "bare kernel time / SystemC module time (both per clock)"},
     {"mc_vs_bare_rng", ">= 0.5", "Monte Carlo sweep variates per second / bare loop drawing them"},
     {"aggregated_vs_per_clock_lockin", ">= 1000", "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
     {"aggregated_vs_per_clock_spad", ">= 1000", "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
     {"threads2_vs_1", ">= 1.8", "Monte Carlo sweep time with 1 thread / with 2 threads"},
-    {"realtime_factor", "report (chip 1.0)", "simulated time / wall time of the ls-conventional map"},
+    {"realtime_factor", "report (chip 1.0)", "simulated time / CPU time of the ls-conventional map (full 375 frame accesses)"},
 };
 
 std::string value_text(const json& v) { return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "null"; }
