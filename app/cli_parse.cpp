@@ -89,9 +89,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)");
   sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");
   sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");
-  sim->add_flag("--tick", sim_opt.tick, "With --kernel-only: evaluate every clock cycle (no event skipping)");
+  sim->add_flag("--tick,--no-event-skip", sim_opt.tick, "With --kernel-only: evaluate every clock cycle (event skipping off)");
   sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
-  sim->add_flag("--dense", sim_opt.dense, "Simulate every pixel (no sparse window around the beam)");
+  sim->add_flag("--dense,--no-sparse", sim_opt.dense, "Simulate every pixel (sparse pixels off: no window around the beam)");
+  sim->add_flag("--no-aggregate", sim_opt.no_aggregate,
+                "tof-lockin: run the N_acc accumulation periods one by one instead of one draw of their sum");
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");
 
   TableOptions& tb_opt = c.table;
@@ -102,6 +104,20 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   tb->add_flag("--json", tb_opt.json, "Print JSON (table and published figures)");
   tb->add_flag("--published", tb_opt.published, "Also list the published figures on the terminal");
   tb->add_option("--out", tb_opt.out, "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
+
+  BenchOptions& bench_opt = c.bench;
+  auto* bench = app.add_subcommand(
+      "bench",
+      "Run time against error for each sensor (every fidelity setting of `simulate`: harness, event skipping,\n"
+      "sparse pixels, aggregation, noise, frames; plus the verilated RTL readout) as a table and a Pareto plot,\n"
+      "and the throughput ratios (sparse_vs_dense, model_vs_rtl, touch_limit_ratio, systemc_vs_kernel,\n"
+      "mc_vs_bare_rng, aggregated_vs_per_clock_lockin/_spad, threads2_vs_1, realtime_factor), each measured\n"
+      "in one run beside its target. Writes bench.json, figures.md, pareto.md/.csv/.png/.svg into --out.\n"
+      "Exit code 1 if an identity check inside the bench failed (speed targets are reported, not enforced).\n"
+      "docs/bench.md explains every figure.");
+  bench->add_flag("--quick", bench_opt.quick, "Fewer frames for the slow references: the same keys in under two minutes");
+  bench->add_flag("--json", bench_opt.json, "Print bench.json to stdout instead of the tables");
+  bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)");
 
   try {
     app.parse(argc, argv);
@@ -137,6 +153,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   else if (*fr) c.kind = CommandKind::FrameRate;
   else if (*tb) c.kind = CommandKind::Table;
   else if (*sim) c.kind = CommandKind::Simulate;
+  else if (*bench) c.kind = CommandKind::Bench;
   return result;
 }
 

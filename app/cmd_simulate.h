@@ -17,9 +17,10 @@ struct SimulateOptions {
   std::string out;                  // --out DIR ("" -> rangesim-out/simulate/<scene name>)
   bool json = false;                // --json: summary.json to stdout instead of the table
   bool kernel_only = false;         // --kernel-only: bare C++ kernels, no SystemC elaboration
-  bool tick = false;                // --tick: evaluate every clock cycle (no event skipping; kernel only)
+  bool tick = false;                // --tick / --no-event-skip: evaluate every clock cycle (no event skipping; kernel only)
   bool noise_free = false;          // --noise-free: all noise sources off
-  bool dense = false;               // --dense: simulate every pixel (no sparse window)
+  bool dense = false;               // --dense / --no-sparse: simulate every pixel (no sparse window)
+  bool no_aggregate = false;        // --no-aggregate: tof-lockin accumulation periods one by one
   bool no_plots = false;            // --no-plots: skip range_map.png
 };
 

@@ -55,4 +55,14 @@ struct TableOptions {
 };
 int run_table(const TableOptions& opt);
 
+// rangesim bench (app/cmd_bench.cpp, app/bench/, docs/bench.md).
+struct BenchOptions {
+  bool quick = false;  // --quick: the same keys in under two minutes (fewer frames for the references)
+  bool json = false;   // --json: bench.json to stdout instead of the tables
+  std::string out;     // --out DIR ("" -> rangesim-out/bench)
+};
+// 0 when every identity check inside the bench passed (speed targets are reported, not
+// enforced), 1 when one failed; throws UserError for an unusable --out.
+int run_bench(const BenchOptions& opt);
+
 }  // namespace rangesim::app

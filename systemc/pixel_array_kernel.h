@@ -73,6 +73,10 @@ class PixelArrayKernel {
   const FrameStimulus& stimulus() const { return stimulus_; }
   // Pixels simulated one by one since construction (sparse windows), for the speed report.
   long long pixels_simulated() const { return pixels_simulated_; }
+  // Simulated window [first, last] of row r in the current frame access (last < first: none).
+  int window_first(int r) const { return rows_[static_cast<std::size_t>(r)].first; }
+  int window_last(int r) const { return rows_[static_cast<std::size_t>(r)].last; }
+  double threshold_V(int r) const { return rows_[static_cast<std::size_t>(r)].threshold_V; }
 
  private:
   struct Pixel {

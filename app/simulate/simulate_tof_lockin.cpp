@@ -69,7 +69,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   lk::LockinSimOptions kopt;
   kopt.noise = !opt.noise_free;
   kopt.event_skipping = !opt.tick;
-  kopt.aggregate = !opt.tick; // N_acc identical periods as one event, Poisson
+  kopt.aggregate = !opt.tick && !opt.no_aggregate; // N_acc identical periods as one event, Poisson
                               // of the total mean
   kopt.seed = opt.seed;
 

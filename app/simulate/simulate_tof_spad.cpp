@@ -133,7 +133,8 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   if (frames < 1 || frames > 10000)
     throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 10000 (tof-spad frames; a range map is {})", frames,
                                 cfg.evaluation.frames_averaged));
-  if (opt.tick) throw UserError("--tick: the tof-spad kernels are event-driven only (no cycle-by-cycle path); drop --tick");
+  if (opt.tick && !opt.kernel_only)
+    throw UserError("--tick / --no-event-skip selects the kernel's cycle-by-cycle TDC path; use it with --kernel-only");
   TraceOutput trace(opt.trace, opt.kernel_only);
   SpadScene sc = load_spad_scene(opt.scene, cfg, array_rows, array_columns);
   if (opt.dense) sc.first_row = 0, sc.rows = array_rows, sc.first_column = 0, sc.columns = array_columns;
@@ -141,6 +142,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
 
   systemc::spad::TofSpadKernelOptions kopt;
   kopt.seed = opt.seed;
+  kopt.event_skipping = !opt.tick;  // per clock: every TDC cycle evaluated (identical histograms, tested)
   if (opt.noise_free) kopt.noise = systemc::spad::SpadNoise::none();
   const systemc::spad::TofSpadKernel kernel(cfg, array_rows, array_columns, kopt);
   systemc::spad::PixelSelection sel;
@@ -220,7 +222,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
       {"scene_file", sc.file},
       {"target_shape", sc.shape},
       {"harness", opt.kernel_only ? "kernel" : "systemc"},
-      {"event_skipping", true},
+      {"event_skipping", !opt.tick},
       {"sparse", !opt.dense},
       {"window", {{"first_row", sc.first_row}, {"rows", sc.rows}, {"first_column", sc.first_column}, {"columns", sc.columns}}},
       {"noise", !opt.noise_free},

@@ -38,6 +38,7 @@ int TofSpadKernel::phase_bin(double phase_s) const {
 }
 
 GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+  if (!opt_.event_skipping) return simulate_group_ticked(frame, row, group, rates);
   const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
   const double period_s = 1.0 / cfg_.laser.repetition_rate_Hz;
   std::vector<SpadPixelKernel> px;
@@ -62,6 +63,65 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
     tdc.hit(who, cycle, phase_bin(t - static_cast<double>(cycle) * period_s));
   }
   GroupHistogram g = tdc.finish();
+  for (const auto& p : px) g.avalanches += p.avalanches(), g.photons += p.photons();
+  return g;
+}
+
+GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+  const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
+  const double period_s = 1.0 / cfg_.laser.repetition_rate_Hz;
+  std::vector<SpadPixelKernel> px;
+  px.reserve(static_cast<size_t>(cpt));
+  for (int k = 0; k < cpt; ++k) {
+    const int col = group * cpt + k;
+    px.emplace_back(cfg_, rates(row, col), opt_.noise, laser_cycles_, opt_.seed, frame, static_cast<std::uint32_t>(row),
+                    static_cast<std::uint32_t>(col));
+  }
+  GroupHistogram g;
+  g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
+  g.armed.assign(static_cast<size_t>(nc), 0);
+  // Arbitration: the pixel with the earliest pending avalanche (-1: none left).
+  auto earliest = [&](double& t) {
+    int who = -1;
+    t = SpadPixelKernel::kNever;
+    for (int k = 0; k < cpt; ++k)
+      if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
+    return who;
+  };
+  // Absolute code (cycle * Np + phase bin) of an avalanche time.
+  auto abs_bin_of = [&](double t) {
+    const long long cycle = static_cast<long long>(t / period_s);
+    return cycle * np + phase_bin(t - static_cast<double>(cycle) * period_s);
+  };
+  double t = 0;
+  // Avalanches jittered before the first START find the TDC not yet running.
+  for (int who = earliest(t); who >= 0 && t < 0; who = earliest(t)) px[static_cast<size_t>(who)].pop(), ++g.lost_busy;
+  const long long end_bin = laser_cycles_ * np;
+  long long armed_from = 0;  // TDC armed in cycles >= armed_from (busy / stopped before)
+  for (long long c = 0; c < end_bin; ++c) {
+    const int phase = static_cast<int>(c % np);
+    const bool armed = c >= armed_from;  // state during this cycle, before its hits
+    for (int who = earliest(t); who >= 0; who = earliest(t)) {
+      if (static_cast<long long>(t / period_s) >= laser_cycles_) break;  // after the integration
+      const long long abs_bin = abs_bin_of(t);
+      if (abs_bin > c) break;  // a later cycle
+      px[static_cast<size_t>(who)].pop();
+      if (abs_bin < armed_from) { ++g.lost_busy; continue; }
+      long long rearm;
+      if (phase < nc) {
+        ++g.events[static_cast<size_t>(who)][static_cast<size_t>(phase)];
+        rearm = abs_bin + block_event_bins_;
+      } else {
+        ++g.overflows;
+        rearm = abs_bin + block_overflow_bins_;
+      }
+      armed_from = std::max(rearm, (c / np + 1) * np);  // a stopped TDC waits for the next START
+    }
+    if (armed && phase < nc) ++g.armed[static_cast<size_t>(phase)];
+  }
+  // The event-driven loop consumes the first avalanche past the integration before it stops.
+  if (const int who = earliest(t); who >= 0) px[static_cast<size_t>(who)].pop();
+  g.starts = laser_cycles_;
   for (const auto& p : px) g.avalanches += p.avalanches(), g.photons += p.photons();
   return g;
 }

@@ -18,8 +18,9 @@
 namespace rangesim::systemc::spad {
 
 struct TofSpadKernelOptions {
-  std::uint64_t seed = 1;  // key of the noise streams
-  SpadNoise noise;         // noise switches
+  std::uint64_t seed = 1;       // key of the noise streams
+  SpadNoise noise;              // noise switches
+  bool event_skipping = true;   // false: the TDC group is clocked every cycle (simulate_group_ticked)
 };
 
 // Histogram memory of one TDC group after one row integration.
@@ -65,8 +66,14 @@ class TofSpadKernel {
   // Throws std::invalid_argument for an inconsistent configuration.
   TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, const TofSpadKernelOptions& opt);
 
-  // One TDC group over one row integration (event driven).
+  // One TDC group over one row integration: event driven (jumps from avalanche to avalanche), or
+  // with event_skipping off simulate_group_ticked.
   GroupHistogram simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const;
+  // The same group clocked cycle by cycle (one TDC clock = one coarse phase bin): in every cycle
+  // the TDC's arm state is sampled and counted into the armed histogram, and the avalanches whose
+  // code falls in that cycle are arbitrated. Same streams, same draws: tests require a histogram
+  // identical to the event-driven one.
+  GroupHistogram simulate_group_ticked(std::uint64_t frame, int row, int group, const RateSource& rates) const;
   // Estimator of the golden model on one pixel's histogram.
   std::optional<double> estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const;
   PixelResult make_pixel(int row, int column, const GroupHistogram& g, int index) const;

@@ -1,0 +1,142 @@
+#include "app/bench/bench_pareto.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <algorithm>
+#include <map>
+
+#include "app/bench/bench_util.h"
+
+namespace rangesim::app::bench {
+
+namespace {
+
+struct Setting {
+  std::string sensor, scene, setting, harness;
+  std::vector<std::string> extra;
+};
+
+std::vector<Setting> settings(bool quick) {
+  const std::string lf = quick ? "25" : "75";  // ls-conventional frame accesses (a fifth of the map in the full run)
+  // Quick: the slow per-clock references of ls-demodulation and tof-lockin are left out (they
+  // take minutes); the full run has every row.
+  std::vector<Setting> s = {
+      {"ls-conventional", "plane.toml", "kernel, sparse, event skipping", "kernel", {"--kernel-only", "--frames", lf}},
+      {"ls-conventional", "plane.toml", "kernel, dense", "kernel", {"--kernel-only", "--no-sparse", "--frames", lf}},
+      {"ls-conventional", "plane.toml", "kernel, per clock", "kernel", {"--kernel-only", "--no-event-skip", "--frames", lf}},
+      {"ls-conventional", "plane.toml", "kernel, noise-free", "kernel", {"--kernel-only", "--noise-free", "--frames", lf}},
+      {"ls-conventional", "plane.toml", "SystemC module", "systemc", {"--frames", quick ? "10" : "60"}},
+      {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, event skipping, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},
+      {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, event skipping, 4 frames", "kernel", {"--kernel-only", "--frames", "4"}},
+      {"ls-demodulation", "ls-demodulation-plane.toml", "SystemC module, 1 frame", "systemc", {"--frames", "1"}},
+      {"tof-lockin", "tof-lockin-plane.toml", "kernel, aggregated", "kernel", {"--kernel-only"}},
+      {"tof-lockin", "tof-lockin-plane.toml", "SystemC module", "systemc", {}},
+      {"tof-spad", "tof-spad-plane.toml", "kernel, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},
+      {"tof-spad", "tof-spad-plane.toml", "kernel, 4 frames", "kernel", {"--kernel-only", "--frames", "4"}},
+      {"tof-spad", "tof-spad-plane.toml", "SystemC module, 1 frame", "systemc", {"--frames", "1"}},
+  };
+  if (!quick) {
+    s.push_back({"ls-demodulation", "ls-demodulation-plane.toml", "kernel, per clock, 1 frame", "kernel",
+                 {"--kernel-only", "--no-event-skip", "--frames", "1"}});
+    s.push_back({"tof-lockin", "tof-lockin-plane.toml", "kernel, no aggregation", "kernel", {"--kernel-only", "--no-aggregate"}});
+    s.push_back({"tof-spad", "tof-spad-plane.toml", "kernel, 16 frames", "kernel", {"--kernel-only", "--frames", "16"}});
+  }
+  std::stable_sort(s.begin(), s.end(), [](const Setting& a, const Setting& b) { return a.sensor < b.sensor; });
+  return s;
+}
+
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : ""; }
+
+}  // namespace
+
+std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir) {
+  std::vector<ParetoRow> rows;
+  int i = 0;
+  const auto all = settings(quick);
+  for (const Setting& s : all) {
+    ParetoRow r;
+    r.sensor = s.sensor, r.setting = s.setting, r.harness = s.harness;
+    r.args = {"--scene", scene_path(s.scene)};
+    r.args.insert(r.args.end(), s.extra.begin(), s.extra.end());
+    progress(fmt::format("pareto {}/{}: {} {}", ++i, all.size(), s.sensor, s.setting));
+    std::vector<std::string> argv = {"simulate", s.sensor};
+    argv.insert(argv.end(), r.args.begin(), r.args.end());
+    argv.insert(argv.end(), {"--json", "--no-plots", "--out", fmt::format("{}/run{}", scratch_dir, i)});
+    std::string text;
+    const auto t0 = Clock::now();
+    const double c0 = children_cpu_now();
+    const int code = run_self(argv, text);
+    r.wall_s = seconds_since(t0);
+    r.cpu_s = children_cpu_now() - c0;
+    if (code != 0) throw std::runtime_error(fmt::format("bench: rangesim simulate {} {} failed with exit code {}", s.sensor, s.setting, code));
+    const nlohmann::json j = nlohmann::json::parse(text);
+    r.frames = j.value("frames", 0LL);
+    const auto& e = j["range_error_rms_m"];
+    r.error_m = e.is_number() ? e.get<double>() : NAN;
+    for (const char* key : {"points_detected", "detected"})
+      if (j.contains(key) && j[key].is_number()) r.points = j[key].get<long long>();
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+void mark_pareto(std::vector<ParetoRow>& rows) {
+  for (auto& a : rows) {
+    a.pareto = std::isfinite(a.error_m);
+    for (const auto& b : rows)
+      if (&a != &b && a.pareto && b.sensor == a.sensor && std::isfinite(b.error_m) && b.cpu_s <= a.cpu_s &&
+          b.error_m <= a.error_m && (b.cpu_s < a.cpu_s || b.error_m < a.error_m))
+        a.pareto = false;
+  }
+}
+
+std::string pareto_markdown(const std::vector<ParetoRow>& rows) {
+  std::string s =
+      "| sensor | setting | harness | frames | CPU time (s) | wall time (s) | rms range error (m) | Pareto |\n"
+      "|---|---|---|---:|---:|---:|---:|:-:|\n";
+  for (const auto& r : rows)
+    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.sensor, r.setting, r.harness, r.frames, num(r.cpu_s), num(r.wall_s),
+                     std::isfinite(r.error_m) ? num(r.error_m) : "none detected", r.pareto ? "yes" : "");
+  return s;
+}
+
+std::string pareto_csv(const std::vector<ParetoRow>& rows) {
+  std::string s = "sensor,setting,harness,frames,cpu_s,wall_s,error_rms_m,pareto,note\n";
+  for (const auto& r : rows)
+    s += fmt::format("{},\"{}\",{},{},{},{},{},{},\"{}\"\n", r.sensor, r.setting, r.harness, r.frames, num(r.cpu_s), num(r.wall_s), num(r.error_m),
+                     r.pareto ? 1 : 0, r.note);
+  return s;
+}
+
+nlohmann::json pareto_json(const std::vector<ParetoRow>& rows) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& r : rows) {
+    nlohmann::json j{{"sensor", r.sensor}, {"setting", r.setting}, {"harness", r.harness}, {"frames", r.frames},
+                     {"cpu_s", r.cpu_s}, {"wall_s", r.wall_s}, {"pareto", r.pareto}};
+    j["error_rms_m"] = std::isfinite(r.error_m) ? nlohmann::json(r.error_m) : nlohmann::json(nullptr);
+    if (!r.note.empty()) j["note"] = r.note;
+    a.push_back(j);
+  }
+  return a;
+}
+
+std::string pareto_gnuplot_data(const std::vector<ParetoRow>& rows) {
+  // One gnuplot data block per sensor (index i), columns: wall_s error_m "label".
+  std::map<std::string, std::vector<const ParetoRow*>> by;
+  std::vector<std::string> order;
+  for (const auto& r : rows) {
+    if (!by.count(r.sensor)) order.push_back(r.sensor);
+    by[r.sensor].push_back(&r);
+  }
+  std::string s;
+  for (const auto& name : order) {
+    s += fmt::format("# {}\n", name);
+    for (const ParetoRow* r : by[name])
+      if (std::isfinite(r->error_m)) s += fmt::format("{:.6g} {:.6g} \"{}\"\n", r->cpu_s, r->error_m, r->setting);
+    s += "\n\n";
+  }
+  return s;
+}
+
+}  // namespace rangesim::app::bench

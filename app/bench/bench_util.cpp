@@ -1,0 +1,123 @@
+#include "app/bench/bench_util.h"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "core/user_error.h"
+
+namespace rangesim::app::bench {
+
+namespace {
+Clock::time_point g_start = Clock::now();
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+}  // namespace
+
+void set_progress_start(Clock::time_point t0) { g_start = t0; }
+
+double cpu_now() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+double children_cpu_now() {
+  rusage u{};
+  ::getrusage(RUSAGE_CHILDREN, &u);
+  auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
+
+void progress(const std::string& what) {
+  fmt::print(stderr, "bench [{:6.1f} s] {}\n", seconds_since(g_start), what);
+  std::fflush(stderr);
+}
+
+nlohmann::json run_in_child(const std::function<nlohmann::json()>& job) {
+  int fd[2];
+  if (::pipe(fd) != 0) throw std::runtime_error("bench: pipe() failed");
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("bench: fork() failed");
+  if (pid == 0) {
+    ::close(fd[0]);
+    ::dup2(2, 1);  // SystemC's own messages ("simulation stopped by user") must not reach our stdout (--json)
+    std::string text;
+    try {
+      text = job().dump();
+    } catch (const std::exception& e) {
+      text = nlohmann::json{{"error", e.what()}}.dump();
+    } catch (...) {
+      text = nlohmann::json{{"error", "unknown exception"}}.dump();
+    }
+    std::size_t done = 0;
+    while (done < text.size()) {
+      const ssize_t n = ::write(fd[1], text.data() + done, text.size() - done);
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    ::close(fd[1]);
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::_exit(0);  // no static destructors: SystemC's would run on a half-finished simulation
+  }
+  ::close(fd[1]);
+  std::string text;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd[0], buf, sizeof buf);
+    if (n <= 0) break;
+    text.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  if (text.empty()) return nlohmann::json{{"error", fmt::format("child ended with status {}", status)}};
+  return nlohmann::json::parse(text);
+}
+
+int run_self(const std::vector<std::string>& args, std::string& stdout_text) {
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw std::runtime_error("bench: cannot find the rangesim binary (/proc/self/exe)");
+  std::string cmd = shell_quote(exe.string());
+  for (const auto& a : args) cmd += " " + shell_quote(a);
+  cmd += " 2>/dev/null";
+  std::fflush(stdout);
+  FILE* p = ::popen(cmd.c_str(), "r");
+  if (!p) throw std::runtime_error("bench: popen failed for " + cmd);
+  stdout_text.clear();
+  char buf[65536];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) stdout_text.append(buf, n);
+  const int status = ::pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+std::string scene_path(const std::string& file) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> dirs;
+  if (const char* env = std::getenv("RANGESIM_SCENE_DIR"); env && *env) dirs.emplace_back(env);
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) dirs.push_back(exe.parent_path().parent_path() / "share/rangesim/scenes");
+  dirs.emplace_back(RANGESIM_SOURCE_SCENE_DIR);
+  for (const auto& d : dirs)
+    if (fs::is_regular_file(d / file)) return (d / file).string();
+  throw UserError(fmt::format("bench: scene file {} not found in $RANGESIM_SCENE_DIR, <prefix>/share/rangesim/scenes or {}",
+                              file, RANGESIM_SOURCE_SCENE_DIR));
+}
+
+}  // namespace rangesim::app::bench

@@ -1,0 +1,40 @@
+#pragma once
+// Helpers of `rangesim bench` (docs/bench.md): wall-clock timing, running a measurement in a
+// forked child (SystemC allows one elaboration per process, and the bench needs several), running
+// the rangesim binary itself for the Pareto rows, and progress lines on stderr.
+#include <chrono>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rangesim::app::bench {
+
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+// CPU time of this process (user + system), s. The figures are ratios of CPU times: on a shared
+// machine the wall time depends on the other users' load, the CPU time of a single-threaded run
+// does not.
+double cpu_now();
+// CPU time of the waited-for child processes (getrusage RUSAGE_CHILDREN), s.
+double children_cpu_now();
+
+// Runs `job` in a forked child and returns the JSON it produced. The child's exceptions come back
+// as {"error": "..."}; a crash as {"error": "child ended with status N"}. Needed for every
+// SystemC elaboration: each gets a fresh process.
+nlohmann::json run_in_child(const std::function<nlohmann::json()>& job);
+
+// Runs this rangesim binary with `args` (shell-quoted here), stdout captured; returns the exit
+// code. stderr is discarded (the child's progress lines are not ours to show).
+int run_self(const std::vector<std::string>& args, std::string& stdout_text);
+
+// "bench: <what>" on stderr with the elapsed time since the bench started.
+void progress(const std::string& what);
+void set_progress_start(Clock::time_point t0);
+
+// Directory of the example scenes (scenes/ in the source tree, or <prefix>/share/rangesim/scenes).
+std::string scene_path(const std::string& file);
+
+}  // namespace rangesim::app::bench

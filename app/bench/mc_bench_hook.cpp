@@ -1,0 +1,29 @@
+// The Monte Carlo figures come from the Monte Carlo evaluation's own measurement
+// (app/bench_mc.h), so the bench and `rangesim-bench-mc` report the same thing.
+#include "app/bench/mc_bench_hook.h"
+
+#include <exception>
+
+#include "app/bench_mc.h"
+
+namespace rangesim::app::bench {
+
+McBenchHookResult mc_bench_hook(bool quick) {
+  McBenchHookResult r;
+  try {
+    const McBenchFigures f = measure_mc_bench(quick);
+    r.mc_vs_bare_rng = f.mc_vs_bare_rng;
+    r.threads2_vs_1 = f.threads2_vs_1;
+    r.details = {{"mc_variates_per_s", f.mc_variates_per_s},
+                 {"bare_variates_per_s", f.bare_variates_per_s},
+                 {"sweep_1thread_s", f.sweep_1thread_s},
+                 {"sweep_2threads_s", f.sweep_2threads_s},
+                 {"threads_identical", true}};
+  } catch (const std::exception& e) {
+    // measure_mc_bench throws when the 1- and 2-thread sweeps differ: an identity failure.
+    r.note = e.what();
+  }
+  return r;
+}
+
+}  // namespace rangesim::app::bench

@@ -1,0 +1,160 @@
+// rangesim bench: the Pareto table of run time against error (every fidelity setting of every
+// sensor) and the throughput ratios, each measured in one run (docs/bench.md). Exit code 0 when
+// every identity check inside the bench passed; the speed targets are reported, not enforced.
+#include "app/commands.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/bench/bench_aggregation.h"
+#include "app/bench/bench_ls_conventional.h"
+#include "app/bench/bench_pareto.h"
+#include "app/bench/bench_util.h"
+#include "app/bench/mc_bench_hook.h"
+#include "app/output_dir.h"
+
+namespace rangesim::app {
+
+namespace {
+
+using nlohmann::json;
+using namespace rangesim::app::bench;
+
+// The figures in the order of the issue, with their targets.
+struct FigureSpec {
+  const char* key;
+  const char* target;
+  const char* meaning;
+};
+const FigureSpec kFigures[] = {
+    {"sparse_vs_dense", ">= 20", "ls-conventional map: dense / sparse CPU time per frame access, bit-identical output"},
+    {"model_vs_rtl", ">= 100", "RTL readout CPU time / clock-level model CPU time per frame access, identical addresses and cycles"},
+    {"touch_limit_ratio", "<= 4", "model time / a loop reading each lit pixel once per sampling"},
+    {"systemc_vs_kernel", ">= 0.5", "bare kernel time / SystemC module time (both per clock)"},
+    {"mc_vs_bare_rng", ">= 0.5", "Monte Carlo sweep variates per second / bare loop drawing them"},
+    {"aggregated_vs_per_clock_lockin", ">= 1000", "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
+    {"aggregated_vs_per_clock_spad", ">= 1000", "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
+    {"threads2_vs_1", ">= 1.8", "Monte Carlo sweep time with 1 thread / with 2 threads"},
+    {"realtime_factor", "report (chip 1.0)", "simulated time / CPU time of the ls-conventional map (full 375 frame accesses)"},
+};
+
+std::string value_text(const json& v) { return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "null"; }
+
+std::string pareto_script(const std::string& data, const std::string& ext, const std::string& path, int sensors) {
+  std::string s = fmt::format(
+      "reset\nset terminal {} size 900,650 font 'Sans,11'\nset output '{}'\n"
+      "set logscale xy\nset xlabel 'CPU time [s]'\nset ylabel 'rms range error [m]'\n"
+      "set title 'rangesim bench — run time against error (each point one fidelity setting)'\n"
+      "set key outside right top\nset grid\nplot ",
+      ext == "png" ? "pngcairo" : "svg", path);
+  const char* names[] = {"ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"};
+  for (int i = 0; i < sensors; ++i)
+    s += fmt::format("{}'{}' index {} using 1:2 with points pt {} ps 1.5 title '{}', '' index {} using 1:2:3 with labels "
+                     "font ',7' offset 0,0.8 notitle",
+                     i ? ", " : "", data, i, 5 + 2 * i, names[i], i);
+  return s + "\n";
+}
+
+// Stages pareto.{png,svg}; "" or a warning (the tables are complete without the plot).
+std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)
+    return "gnuplot not found: pareto plot skipped (scripts/install-deps.sh installs gnuplot-nox)";
+  const std::string data = out.scratch("pareto.dat");
+  std::ofstream(data) << pareto_gnuplot_data(rows);
+  std::string script;
+  for (const char* ext : {"png", "svg"}) script += pareto_script(data, ext, out.staged(fmt::format("pareto.{}", ext)), 4);
+  const std::string gp = out.scratch("pareto.gp");
+  std::ofstream(gp) << script;
+  if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0)
+    return "gnuplot failed: pareto plot skipped";
+  return "";
+}
+
+}  // namespace
+
+int run_bench(const BenchOptions& opt) {
+  const auto t0 = Clock::now();
+  set_progress_start(t0);
+  OutputDir out(opt.out.empty() ? "rangesim-out/bench" : opt.out, "--out");
+  progress(fmt::format("start ({} run); output into {}", opt.quick ? "quick" : "full", out.dir()));
+
+  std::vector<ParetoRow> pareto = run_pareto(opt.quick, out.scratch("runs"));
+  const json ls = bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0});
+  const json lockin = bench_aggregation_lockin(opt.quick);
+  progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
+  const McBenchHookResult mc = mc_bench_hook(opt.quick);
+
+  // The RTL readout as a Pareto point: the same addresses as the model, so the same error.
+  if (ls["model_vs_rtl"]["value"].is_number())
+    for (const auto& r : std::vector<ParetoRow>(pareto))
+      if (r.sensor == "ls-conventional" && r.setting == "kernel, sparse, event skipping") {
+        ParetoRow x = r;
+        x.setting = "verilated RTL readout";
+        x.harness = "rtl";
+        const double per_frame = ls["model_vs_rtl"]["rtl_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
+        const double wall_per_frame = ls["model_vs_rtl"]["rtl_wall_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
+        x.cpu_s = per_frame * static_cast<double>(r.frames);
+        x.wall_s = wall_per_frame * static_cast<double>(r.frames);
+        x.note = fmt::format("RTL time of {} frame accesses scaled to {}; error as the model (identical addresses)",
+                             ls["model_vs_rtl"]["rtl_frames"].get<long long>(), r.frames);
+        pareto.push_back(x);
+      }
+  mark_pareto(pareto);
+
+  json details, checks = ls["checks"];
+  for (const char* k : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "realtime_factor"})
+    details[k] = ls[k];
+  details["aggregated_vs_per_clock_lockin"] = lockin;
+  checks["lockin_aggregated_statistically_identical"] = lockin["statistically_identical"].get<bool>();
+  details["aggregated_vs_per_clock_spad"] = json{
+      {"value", nullptr},
+      {"note", "not measured: tof-spad has no aggregated laser-cycle path (dead time and afterpulses couple successive laser cycles; see docs/bench.md)"}};
+  details["mc_vs_bare_rng"] = json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
+  details["threads2_vs_1"] = json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
+  if (!mc.details.is_null()) details["monte_carlo"] = mc.details;
+  checks["mc_threads_bit_identical"] = mc.threads2_vs_1.has_value();
+
+  json j;
+  for (const auto& f : kFigures) j[f.key] = details[f.key]["value"];
+  json targets;
+  for (const auto& f : kFigures) targets[f.key] = f.target;
+  bool all_ok = true;
+  for (const auto& [k, v] : checks.items()) all_ok = all_ok && v.get<bool>();
+  j["targets"] = targets;
+  j["checks"] = checks;
+  j["checks_passed"] = all_ok;
+  j["quick"] = opt.quick;
+  j["details"] = details;
+  j["pareto"] = pareto_json(pareto);
+  j["wall_s"] = seconds_since(t0);
+
+  std::string figures_md = "| figure | value | target | meaning |\n|---|---:|---|---|\n";
+  for (const auto& f : kFigures) figures_md += fmt::format("| `{}` | {} | {} | {} |\n", f.key, value_text(j[f.key]), f.target, f.meaning);
+  std::string checks_md;
+  for (const auto& [k, v] : checks.items()) checks_md += fmt::format("- {}: {}\n", k, v.get<bool>() ? "passed" : "FAILED");
+
+  out.write("bench.json", j.dump(2) + "\n");
+  out.write("figures.md", figures_md);
+  out.write("pareto.md", pareto_markdown(pareto));
+  out.write("pareto.csv", pareto_csv(pareto));
+  const std::string warning = render_pareto(out, pareto);
+  out.commit();
+  progress(fmt::format("done in {:.1f} s", seconds_since(t0)));
+
+  if (opt.json) {
+    std::cout << j.dump(2) << "\n";
+  } else {
+    fmt::print("rangesim bench ({}), {:.1f} s; files in {}\n\n{}\nIdentity checks:\n{}\n{}", opt.quick ? "quick" : "full",
+               seconds_since(t0), out.dir(), figures_md, checks_md, pareto_markdown(pareto));
+  }
+  if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
+  if (!all_ok) fmt::print(stderr, "rangesim: bench: an identity check failed (see checks in bench.json)\n");
+  return all_ok ? 0 : 1;
+}
+
+}  // namespace rangesim::app
