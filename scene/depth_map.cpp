@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fmt/format.h>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -44,6 +45,7 @@ struct HeaderReader {
 };
 
 constexpr long long kMaxSide = 16384;  // image side limit: keeps a bad header from allocating gigabytes
+constexpr std::uintmax_t kMaxFileBytes = 4ull * kMaxSide * kMaxSide + 4096;  // the largest PFM plus a header
 
 }  // namespace
 
@@ -69,9 +71,28 @@ std::vector<double> DepthMap::resample(int rows, int columns) const {
 DepthMap load_depth_map(const std::string& path, const std::string& key, double near_m, double far_m, double min_m,
                         double max_m) {
   const std::string where = fmt::format("{} ({})", key, path);
+  // A regular file of bounded size only: /dev/zero, a FIFO or a directory would hang or exhaust
+  // memory before any header check could run.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw UserError(fmt::format("{}: cannot read the depth-map image (no such file or not readable)", where));
+  if (!std::filesystem::is_regular_file(status))
+    throw UserError(fmt::format("{}: the depth-map image is not a regular file", where));
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxFileBytes)
+    throw UserError(fmt::format("{}: the depth-map image has {} bytes; allowed at most {} ({} x {} floats and a header)", where,
+                                ec ? 0 : size, kMaxFileBytes, kMaxSide, kMaxSide));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(fmt::format("{}: cannot read the depth-map image (no such file or not readable)", where));
   const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return parse_depth_map(data, path, key, near_m, far_m, min_m, max_m);
+}
+
+DepthMap parse_depth_map(std::string_view bytes, const std::string& path, const std::string& key, double near_m,
+                         double far_m, double min_m, double max_m) {
+  const std::string where = fmt::format("{} ({})", key, path);
+  const std::string data(bytes);
   HeaderReader h{data};
   const std::string magic = h.token();
   DepthMap m;
@@ -81,6 +102,10 @@ DepthMap load_depth_map(const std::string& path, const std::string& key, double 
     m.height = static_cast<int>(h.number("height", where, 1, kMaxSide));
     const long long maxval = h.number("maxval", where, 1, 65535);
     const std::size_t n = static_cast<std::size_t>(m.width) * m.height;
+    // Allocate only what the data can hold (a header alone must not reserve gigabytes).
+    const std::size_t min_bytes = magic == "P2" ? 2 * n - 1 : n * (maxval > 255 ? 2 : 1);
+    if (data.size() < h.pos || data.size() - h.pos < min_bytes)
+      throw UserError(fmt::format("{}: PGM raster too short for {} x {} pixels", where, m.width, m.height));
     m.depth_m.resize(n);
     auto gray_to_m = [&](long long g) { return near_m + (far_m - near_m) * static_cast<double>(g) / static_cast<double>(maxval); };
     if (magic == "P2") {

@@ -6,6 +6,7 @@
 //     rows are stored bottom-to-top (the PFM convention) and flipped here.
 // Written here (no image library): both formats are a few lines of header and a raster.
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rangesim::scene {
@@ -27,5 +28,8 @@ struct DepthMap {
 // distance must lie in [min_m, max_m]. Throws UserError naming the file, the key and the range.
 DepthMap load_depth_map(const std::string& path, const std::string& key, double near_m, double far_m, double min_m,
                         double max_m);
+// The same for the image's bytes (`path` only names it in messages); the fuzzer's entry point.
+DepthMap parse_depth_map(std::string_view bytes, const std::string& path, const std::string& key, double near_m,
+                         double far_m, double min_m, double max_m);
 
 }  // namespace rangesim::scene

@@ -101,7 +101,6 @@ class DemodSensorKernel {
   // Read-only views for waveforms (DemodSensor::trace); they do not change the state.
   int decision() const { return decision_; }        // decision index within the frame
   int phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
-  AddressSearchPins search_pins() const { return search_.pins(); }  // the row search's pins
   bool mpy_plus() const;                            // integration: MPY+ (C1) selected at this cycle
 
   const LsDemodulationConfig& config() const { return cfg_; }

@@ -123,6 +123,15 @@ TEST(DepthMap, BadImagesNameFileKeyAndRange) {
   EXPECT_NE(e.find("distance 500 m at pixel (x 0, y 0) is out of range; allowed [0.01, 100] m"), std::string::npos) << e;
   e = error_of([&] { load("missing.pgm"); });
   EXPECT_NE(e.find("cannot read the depth-map image"), std::string::npos) << e;
+  // A header alone must not allocate the raster it announces (16384^2 doubles = 2 GiB).
+  write_bytes(d / "h.pgm", "P2 16384 16384 255\n0 1 2\n");
+  e = error_of([&] { load("h.pgm"); });
+  EXPECT_NE(e.find("raster too short for 16384 x 16384 pixels"), std::string::npos) << e;
+  // Not a regular file: reading /dev/zero or a directory would never end or fail late.
+  e = error_of([&] { sc::load_depth_map("/dev/zero", key, 1, 2, 0.01, 100); });
+  EXPECT_NE(e.find("not a regular file"), std::string::npos) << e;
+  e = error_of([&] { sc::load_depth_map(d.string(), key, 1, 2, 0.01, 100); });
+  EXPECT_NE(e.find("not a regular file"), std::string::npos) << e;
   fs::remove_all(d);
 }
 
