@@ -85,6 +85,22 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   tb->add_flag("--published", tb_opt.published, "Also list the published figures on the terminal");
   tb->add_option("--out", tb_opt.out, "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
 
+  CosimCommandOptions& co_opt = c.cosim;
+  auto* co = app.add_subcommand(
+      "cosim",
+      "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
+      "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
+      "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
+      "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input.");
+  co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), or 'all'");
+  co->add_option("--cycles", co_opt.cycles, "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
+  co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
+  co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
+  co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");
+  co->add_option("--inject-fault", co_opt.inject_fault, "Run with this named fault of the target (see --list); it must be reported");
+  co->add_flag("--json", co_opt.json, "Print JSON (keys cycles, transactions, mismatches, coverage_line, coverage_toggle, ...)");
+  co->add_flag("--list", co_opt.list, "List the targets and their faults");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -119,6 +135,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   else if (*fr) c.kind = CommandKind::FrameRate;
   else if (*tb) c.kind = CommandKind::Table;
   else if (*sim) c.kind = CommandKind::Simulate;
+  else if (*co) c.kind = CommandKind::Cosim;
   return result;
 }
 

@@ -9,7 +9,7 @@
 
 namespace rangesim::app {
 
-enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate };
+enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Cosim };
 
 // One parsed command line: which subcommand, and its options.
 struct ParsedCommand {
@@ -20,6 +20,7 @@ struct ParsedCommand {
   FrameRateOptions frame_rate;
   TableOptions table;
   SimulateOptions simulate;
+  CosimCommandOptions cosim;
 };
 
 struct CommandLine {

@@ -22,6 +22,7 @@ int run(const ParsedCommand& c) {
     case CommandKind::FrameRate: return run_frame_rate(c.frame_rate);
     case CommandKind::Table: return run_table(c.table);
     case CommandKind::Simulate: return run_simulate(c.simulate);
+    case CommandKind::Cosim: return run_cosim(c.cosim);
     case CommandKind::None: break;
   }
   return kExitInternal;
