@@ -279,9 +279,25 @@ int run_cosim(const CosimCommandOptions& opt) {
     o.seed = opt.seed;
     o.inject_fault = opt.inject_fault;
     o.trace_path = trace_file;
+    // SystemC's and Verilator's own messages ($error of a firing assertion, "simulation stopped")
+    // go to stdout; during the run stdout is sent to stderr so that --json output stays JSON.
+    std::fflush(stdout);
+    const int saved_stdout = dup(STDOUT_FILENO);
+    dup2(STDERR_FILENO, STDOUT_FILENO);
     const auto t0 = std::chrono::steady_clock::now();
-    tb::CosimReport r = target->run(o);
+    tb::CosimReport r;
+    try {
+      r = target->run(o);
+    } catch (...) {
+      std::fflush(stdout);
+      dup2(saved_stdout, STDOUT_FILENO);
+      close(saved_stdout);
+      throw;
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::fflush(stdout);
+    dup2(saved_stdout, STDOUT_FILENO);
+    close(saved_stdout);
     if (!opt.inject_fault.empty() && !r.fault_injected) {  // a fault that never went in proves nothing
       ++r.mismatches;
       r.first_mismatches.push_back({"fault", -1, -1, -1, r.cycles, opt.inject_fault + " applied", "not applied (run longer)"});

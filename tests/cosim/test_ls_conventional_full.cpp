@@ -1,5 +1,5 @@
 // One full-size ls-conventional frame access (375 x 365, four samplings) co-simulated: the
-// uninstrumented Vls_conventional_readout beside the clock-level model (label heavy if slow).
+// uninstrumented Vls_conventional_readout beside the clock-level model.
 #include <gtest/gtest.h>
 
 #include <cstdio>
