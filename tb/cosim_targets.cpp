@@ -36,8 +36,9 @@ CosimReport run_address_search(const CosimOptions& o) {
   ao.instance = AddressSearchInstance::Small;
   ao.seed = o.seed;
   ao.rows_per_frame = 100;
-  // Mean operation: latch + search + (mostly) 2B stream cycles + mean gap 1.
-  const long long per_frame = ao.rows_per_frame * (2 + p.search_cycles + 2 * p.address_bits);
+  // An operation takes 1 + S + 2B cycles (S if nothing found) plus a gap of 0..2: S + 2B is a
+  // lower bound of the mean, so the run covers at least the cycles asked for.
+  const long long per_frame = ao.rows_per_frame * (p.search_cycles + 2 * p.address_bits);  // low: rounds up
   ao.frames = static_cast<int>(std::max<long long>(1, (static_cast<long long>(o.cycles) + per_frame - 1) / per_frame));
   if (o.inject_fault == "address-bit-flip") {
     ao.fault_operation = ao.frames * ao.rows_per_frame / 2;
@@ -59,6 +60,9 @@ CosimReport run_address_search(const CosimOptions& o) {
   r.mismatches = static_cast<std::uint64_t>(a.mismatch_count) + (a.rtl_assertion_failed ? 1 : 0) + (a.finished ? 0 : 1);
   for (const std::string& m : a.mismatches) r.first_mismatches.push_back({"address_search", -1, -1, -1, 0, "", m});
   if (!a.finished) r.first_mismatches.push_back({"run", -1, -1, -1, 0, "all operations done", "stalled"});
+  if (a.rtl_assertion_failed)
+    r.first_mismatches.push_back({"rtl_assertion", -1, -1, -1, r.cycles, "no assertion fails",
+                                  "a Verilog assertion fired (its $error message names it)"});
   r.rtl_assertions_failed = a.rtl_assertion_failed ? 1 : 0;
   r.sc_errors = a.sc_errors;
   if (ao.fault_operation >= 0 && a.fault_frame >= 0) {

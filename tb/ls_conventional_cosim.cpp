@@ -448,7 +448,11 @@ LsConventionalCosimResult run(const LsConventionalCosimOptions& o, const rtl::Ls
                                            std::to_string(res.frames) + " within the cycle bound"});
   }
   res.report.rtl_assertions_failed = ctx->gotError() ? 1 : 0;
-  res.report.mismatches += static_cast<std::uint64_t>(res.report.rtl_assertions_failed);
+  if (res.report.rtl_assertions_failed) {
+    ++res.report.mismatches;
+    res.report.first_mismatches.push_back({"rtl_assertion", -1, -1, -1, res.report.cycles, "no assertion fails",
+                                           "a Verilog assertion fired (its $error message names it)"});
+  }
   res.report.sc_errors = static_cast<int>(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR));
   res.recorded_cycles = top.recorded_cycles();
   res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
