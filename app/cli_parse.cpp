@@ -14,8 +14,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Sensors (presets): ls-conventional, ls-demodulation, tof-lockin, tof-spad; a path to a\n"
       "preset .toml file works wherever a sensor is expected.\n"
       "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
-      "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out, 130 interrupted\n"
-      "(Ctrl-C); 4 and 130 keep the sweep journal and print the command that resumes.",
+      "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out or cosim found\n"
+      "mismatches, 130 interrupted (Ctrl-C); evaluate's 4 and 130 keep the sweep journal and print\n"
+      "the command that resumes.",
       "rangesim"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rangesim 0.1.0");
@@ -119,6 +120,22 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   bench->add_flag("--json", bench_opt.json, "Print bench.json to stdout instead of the tables");
   bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)");
 
+  CosimCommandOptions& co_opt = c.cosim;
+  auto* co = app.add_subcommand(
+      "cosim",
+      "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
+      "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
+      "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
+      "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input.");
+  co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), or 'all'");
+  co->add_option("--cycles", co_opt.cycles, "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
+  co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
+  co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
+  co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");
+  co->add_option("--inject-fault", co_opt.inject_fault, "Run with this named fault of the target (see --list); it must be reported");
+  co->add_flag("--json", co_opt.json, "Print JSON (keys cycles, transactions, mismatches, coverage_line, coverage_toggle, ...)");
+  co->add_flag("--list", co_opt.list, "List the targets and their faults");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -154,6 +171,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   else if (*tb) c.kind = CommandKind::Table;
   else if (*sim) c.kind = CommandKind::Simulate;
   else if (*bench) c.kind = CommandKind::Bench;
+  else if (*co) c.kind = CommandKind::Cosim;
   return result;
 }
 

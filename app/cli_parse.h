@@ -9,7 +9,7 @@
 
 namespace rangesim::app {
 
-enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Bench };
+enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Bench, Cosim };
 
 // One parsed command line: which subcommand, and its options.
 struct ParsedCommand {
@@ -21,6 +21,7 @@ struct ParsedCommand {
   TableOptions table;
   SimulateOptions simulate;
   BenchOptions bench;
+  CosimCommandOptions cosim;
 };
 
 struct CommandLine {

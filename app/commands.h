@@ -64,5 +64,18 @@ struct BenchOptions {
 // 0 when every identity check inside the bench passed (speed targets are reported, not
 // enforced), 1 when one failed; throws UserError for an unusable --out.
 int run_bench(const BenchOptions& opt);
+// `rangesim cosim` (app/cmd_cosim.cpp): RTL co-simulation targets of tb/cosim_targets.cpp.
+inline constexpr int kExitCosimMismatch = 4;  // the run completed and found mismatches
+struct CosimCommandOptions {
+  std::string target;                   // sensor id, block name or "all" ("" with --list)
+  std::optional<unsigned long long> cycles;  // clock cycles (default 100000)
+  unsigned long long seed = 1;
+  std::string trace;                    // RTL VCD file ("" = none)
+  std::string junit;                    // JUnit XML file ("" = none)
+  std::string inject_fault;             // a fault name of the target ("" = none)
+  bool json = false;
+  bool list = false;
+};
+int run_cosim(const CosimCommandOptions& opt);
 
 }  // namespace rangesim::app

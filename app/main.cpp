@@ -26,6 +26,7 @@ int run(const ParsedCommand& c) {
     case CommandKind::Table: return run_table(c.table);
     case CommandKind::Simulate: return run_simulate(c.simulate);
     case CommandKind::Bench: return run_bench(c.bench);
+    case CommandKind::Cosim: return run_cosim(c.cosim);
     case CommandKind::None: break;
   }
   return kExitInternal;

@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libfmt-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libpcg-cpp-dev
   gnuplot-nox gtkwave
   librapidcheck-dev clang libclang-rt-14-dev
+  python3  # tests/cosim: checks the JSON and JUnit XML of `rangesim cosim`
 )
 
 missing=()

@@ -1,0 +1,356 @@
+// `rangesim cosim`: runs the co-simulation targets of tb/cosim_targets.cpp and reports what their
+// scoreboards compared, the mismatches with their context and the RTL coverage.
+//
+// SystemC elaborates once per process, so `cosim all` runs each target in a child process (this
+// binary again, `cosim <target> --json`) and gathers the JSON; a single target runs in-process.
+#include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/output_dir.h"
+#include "core/user_error.h"
+#include "tb/cosim_coverage.h"
+#include "tb/cosim_target.h"
+
+namespace rangesim::app {
+namespace {
+
+using nlohmann::json;
+
+constexpr unsigned long long kDefaultCycles = 100000, kMaxCycles = 1000000000ULL;
+constexpr unsigned long long kAllFullCycles = 1000;  // ls-conventional-full in `all`: ten frame accesses
+
+std::string target_names() {
+  std::string s;
+  for (const auto& t : tb::cosim_targets()) s += (s.empty() ? "" : ", ") + std::string(t.name);
+  return s + ", all";
+}
+
+const tb::CosimTarget* find_target(const std::string& name) {
+  for (const auto& t : tb::cosim_targets())
+    if (name == t.name) return &t;
+  return nullptr;
+}
+
+// Directory and file name of a user-given output file, for OutputDir staging.
+std::pair<std::string, std::string> split_path(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  if (slash == std::string::npos) return {".", path};
+  return {slash == 0 ? "/" : path.substr(0, slash), path.substr(slash + 1)};
+}
+
+json coverage_json(const tb::RtlCoverage& c) {
+  json j;
+  j["available"] = c.available;
+  j["line_points"] = c.line_points;
+  j["line_hit"] = c.line_hit;
+  j["toggle_points"] = c.toggle_points;
+  j["toggle_hit"] = c.toggle_hit;
+  return j;
+}
+
+json percent_or_null(long long hit, long long points) {
+  return points > 0 ? json(100.0 * static_cast<double>(hit) / static_cast<double>(points)) : json(nullptr);
+}
+
+json report_json(const tb::CosimReport& r, const tb::RtlCoverage& cov, const std::string& fault, double wall_s) {
+  json j;
+  j["target"] = r.target;
+  j["cycles"] = r.cycles;
+  j["transactions"] = r.transactions;
+  j["mismatches"] = r.mismatches;
+  j["golden_checks"] = r.golden_checks;
+  j["rtl_assertions_failed"] = r.rtl_assertions_failed;
+  j["sc_errors"] = r.sc_errors;
+  j["coverage_line"] = percent_or_null(cov.line_hit, cov.line_points);
+  j["coverage_toggle"] = percent_or_null(cov.toggle_hit, cov.toggle_points);
+  j["coverage"] = coverage_json(cov);
+  j["fault"] = fault.empty() ? json(nullptr) : json{{"name", fault}, {"injected", r.fault_injected}, {"site", r.fault_site}};
+  json ms = json::array();
+  for (const auto& m : r.first_mismatches)
+    ms.push_back({{"check", m.check}, {"frame", m.frame}, {"row", m.row}, {"column", m.column}, {"cycle", m.cycle},
+                  {"expected", m.expected}, {"actual", m.actual}});
+  j["first_mismatches"] = ms;
+  j["wall_time_s"] = wall_s;
+  return j;
+}
+
+// A run passes when nothing mismatched and, with a fault requested, the fault went in.
+bool passed(const json& r) {
+  if (r.value("mismatches", 1ULL) != 0) return false;
+  return r["fault"].is_null();
+}
+
+std::string mismatch_line(const json& m) {
+  // Harnesses that report a whole sentence (address_search) leave `expected` empty.
+  if (m["expected"].get<std::string>().empty())
+    return fmt::format("[{}] {}", m["check"].get<std::string>(), m["actual"].get<std::string>());
+  std::string where;
+  auto part = [&](const char* key, const char* label) {
+    if (m[key].get<long long>() >= 0) where += fmt::format("{} {} ", label, m[key].get<long long>());
+  };
+  part("frame", "frame");
+  part("row", "row");
+  part("column", "column");
+  where += fmt::format("cycle {}", m["cycle"].get<unsigned long long>());
+  return fmt::format("[{}] {}: expected {}, actual {}", m["check"].get<std::string>(), where,
+                     m["expected"].get<std::string>(), m["actual"].get<std::string>());
+}
+
+void print_text(const json& r) {
+  auto pct = [](const json& v) { return v.is_null() ? std::string("n/a (uninstrumented)") : fmt::format("{:.1f} %", v.get<double>()); };
+  fmt::print("cosim {}: {}\n", r["target"].get<std::string>(), passed(r) ? "PASS" : "FAIL");
+  fmt::print("  cycles compared      {}\n", r["cycles"].get<unsigned long long>());
+  fmt::print("  transactions matched {} of {}\n",
+             r["transactions"].get<unsigned long long>() -
+                 std::min(r["transactions"].get<unsigned long long>(), r["mismatches"].get<unsigned long long>()),
+             r["transactions"].get<unsigned long long>());
+  fmt::print("  golden checks        {}\n", r["golden_checks"].get<unsigned long long>());
+  fmt::print("  mismatches           {}\n", r["mismatches"].get<unsigned long long>());
+  fmt::print("  RTL assertions fired {}\n", r["rtl_assertions_failed"].get<int>());
+  fmt::print("  coverage line        {}\n", pct(r["coverage_line"]));
+  fmt::print("  coverage toggle      {}\n", pct(r["coverage_toggle"]));
+  if (!r["fault"].is_null())
+    fmt::print("  injected fault       {}: {}\n", r["fault"]["name"].get<std::string>(),
+               r["fault"]["injected"].get<bool>() ? r["fault"]["site"].get<std::string>()
+                                                  : std::string("NOT applied (run longer)"));
+  for (const auto& m : r["first_mismatches"]) fmt::print("    {}\n", mismatch_line(m));
+  fmt::print("  wall time            {:.2f} s\n", r["wall_time_s"].get<double>());
+}
+
+std::string xml_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      default:
+        if (static_cast<unsigned char>(c) >= 0x20 || c == '\n' || c == '\t') o += c;
+    }
+  }
+  return o;
+}
+
+std::string junit_xml(const std::vector<json>& runs) {
+  int failures = 0;
+  double total = 0;
+  for (const auto& r : runs) {
+    failures += passed(r) ? 0 : 1;
+    total += r["wall_time_s"].get<double>();
+  }
+  std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", runs.size(), failures, total);
+  x += fmt::format("  <testsuite name=\"rangesim.cosim\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n", runs.size(),
+                   failures, total);
+  for (const auto& r : runs) {
+    x += fmt::format("    <testcase classname=\"rangesim.cosim\" name=\"{}\" time=\"{:.3f}\">\n",
+                     xml_escape(r["target"].get<std::string>()), r["wall_time_s"].get<double>());
+    if (!passed(r)) {
+      std::string body;
+      for (const auto& m : r["first_mismatches"]) body += mismatch_line(m) + "\n";
+      if (!r["fault"].is_null()) body += "injected fault " + r["fault"]["name"].get<std::string>() + ": " +
+                                         r["fault"]["site"].get<std::string>() + "\n";
+      x += fmt::format("      <failure message=\"{} mismatches\" type=\"mismatch\">{}</failure>\n",
+                       r["mismatches"].get<unsigned long long>(), xml_escape(body));
+    }
+    x += fmt::format("      <system-out>cycles {} transactions {} mismatches {} golden_checks {}</system-out>\n",
+                     r["cycles"].get<unsigned long long>(), r["transactions"].get<unsigned long long>(),
+                     r["mismatches"].get<unsigned long long>(), r["golden_checks"].get<unsigned long long>());
+    x += "    </testcase>\n";
+  }
+  x += "  </testsuite>\n</testsuites>\n";
+  return x;
+}
+
+// Runs `rangesim cosim <target> --json ...` as a child process and parses its JSON.
+json run_child(const std::string& target, const CosimCommandOptions& opt, unsigned long long cycles, const std::string& trace) {
+  std::vector<std::string> args{"rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed",
+                                std::to_string(opt.seed)};
+  if (!trace.empty()) args.insert(args.end(), {"--trace", trace});
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("cosim all: pipe failed");
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("cosim all: fork failed");
+  if (pid == 0) {
+    dup2(fds[1], STDOUT_FILENO);
+    close(fds[0]);
+    close(fds[1]);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv("/proc/self/exe", argv.data());
+    _exit(127);
+  }
+  close(fds[1]);
+  std::string out;
+  char buf[4096];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;) out.append(buf, static_cast<std::size_t>(n));
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  // The JSON is the last line that parses (Verilator's $error messages may precede it).
+  const std::size_t start = out.find("\n{");
+  const std::string text = out.rfind('{', 0) == 0 ? out : (start == std::string::npos ? "" : out.substr(start + 1));
+  json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object())
+    throw std::runtime_error("cosim all: target " + target + " exited with status " + std::to_string(WEXITSTATUS(status)) +
+                             " without a report");
+  return j;
+}
+
+}  // namespace
+
+int run_cosim(const CosimCommandOptions& opt) {
+  const auto& targets = tb::cosim_targets();
+  if (opt.list) {
+    if (opt.json) {
+      json j = json::array();
+      for (const auto& t : targets) j.push_back({{"name", t.name}, {"description", t.description}, {"faults", t.faults}});
+      std::cout << j.dump(2) << "\n";
+    } else {
+      for (const auto& t : targets) {
+        std::string faults;
+        for (const auto& f : t.faults) faults += (faults.empty() ? "" : ", ") + f;
+        fmt::print("{:<26} {}\n{:<26} faults: {}\n", t.name, t.description, "", faults.empty() ? "none" : faults);
+      }
+    }
+    return kExitOk;
+  }
+  if (opt.target.empty()) throw UserError("cosim: name a target (" + target_names() + ") or use --list");
+  const bool all = opt.target == "all";
+  const tb::CosimTarget* target = all ? nullptr : find_target(opt.target);
+  if (!all && !target) throw UserError("cosim: unknown target '" + opt.target + "'; allowed: " + target_names());
+  const unsigned long long cycles = opt.cycles.value_or(kDefaultCycles);
+  if (cycles < 1 || cycles > kMaxCycles)
+    throw UserError(fmt::format("cosim: --cycles {} out of range; allowed 1..{}", cycles, kMaxCycles));
+  if (!opt.inject_fault.empty()) {
+    if (all) throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
+    bool known = false;
+    std::string names;
+    for (const auto& f : target->faults) {
+      known = known || f == opt.inject_fault;
+      names += (names.empty() ? "" : ", ") + f;
+    }
+    if (!known)
+      throw UserError("cosim: --inject-fault '" + opt.inject_fault + "' is not a fault of " + opt.target + "; allowed: " +
+                      (names.empty() ? std::string("none") : names));
+  }
+  // Output files are staged next to their destination and appear only when complete.
+  std::unique_ptr<OutputDir> junit_dir, trace_dir;
+  std::string junit_name, trace_file;
+  if (!opt.junit.empty()) {
+    auto [d, n] = split_path(opt.junit);
+    if (n.empty()) throw UserError("cosim: --junit '" + opt.junit + "' names a directory; give a file");
+    junit_dir = std::make_unique<OutputDir>(d, "--junit");
+    junit_name = n;
+  }
+  if (!opt.trace.empty() && !all) {
+    auto [d, n] = split_path(opt.trace);
+    if (n.empty()) throw UserError("cosim: --trace '" + opt.trace + "' names a directory; give a file");
+    trace_dir = std::make_unique<OutputDir>(d, "--trace");
+    trace_file = trace_dir->staged(n);
+  }
+
+  std::vector<json> runs;
+  if (all) {
+    for (const auto& t : targets) {
+      std::string trace;
+      if (!opt.trace.empty()) {
+        std::string stem = opt.trace;
+        if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".vcd") == 0) stem.resize(stem.size() - 4);
+        trace = stem + "_" + t.name + ".vcd";
+      }
+      // The full-size readout costs milliseconds of wall time per cycle (375 x 365 pixels): in
+      // `all` it gets at most ten frame accesses, else a large N would run for hours. Run it
+      // alone for more.
+      const bool full = std::string(t.name) == "ls-conventional-full";
+      const unsigned long long n = full ? std::min(cycles, kAllFullCycles) : cycles;
+      fmt::print(stderr, "cosim: {} ({} cycles{})...\n", t.name, n, n < cycles ? ", capped in 'all'" : "");
+      runs.push_back(run_child(t.name, opt, n, trace));
+      fmt::print(stderr, "cosim: {} done: {} mismatches\n", t.name, runs.back()["mismatches"].get<unsigned long long>());
+    }
+  } else {
+    if (!opt.json) fmt::print(stderr, "cosim: {} ({} cycles, seed {})...\n", target->name, cycles, opt.seed);
+    tb::CosimOptions o;
+    o.cycles = cycles;
+    o.seed = opt.seed;
+    o.inject_fault = opt.inject_fault;
+    o.trace_path = trace_file;
+    // SystemC's and Verilator's own messages ($error of a firing assertion, "simulation stopped")
+    // go to stdout; during the run stdout is sent to stderr so that --json output stays JSON.
+    std::fflush(stdout);
+    const int saved_stdout = dup(STDOUT_FILENO);
+    dup2(STDERR_FILENO, STDOUT_FILENO);
+    const auto t0 = std::chrono::steady_clock::now();
+    tb::CosimReport r;
+    try {
+      r = target->run(o);
+    } catch (...) {
+      std::fflush(stdout);
+      dup2(saved_stdout, STDOUT_FILENO);
+      close(saved_stdout);
+      throw;
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::fflush(stdout);
+    dup2(saved_stdout, STDOUT_FILENO);
+    close(saved_stdout);
+    if (!opt.inject_fault.empty() && !r.fault_injected) {  // a fault that never went in proves nothing
+      ++r.mismatches;
+      r.first_mismatches.push_back({"fault", -1, -1, -1, r.cycles, opt.inject_fault + " applied", "not applied (run longer)"});
+    }
+    runs.push_back(report_json(r, tb::rtl_coverage(), opt.inject_fault, wall));
+  }
+
+  json out;
+  if (all) {
+    unsigned long long c = 0, t = 0, m = 0;
+    long long lp = 0, lh = 0, tp = 0, th = 0;
+    for (const auto& r : runs) {
+      c += r["cycles"].get<unsigned long long>();
+      t += r["transactions"].get<unsigned long long>();
+      m += r["mismatches"].get<unsigned long long>();
+      lp += r["coverage"]["line_points"].get<long long>();
+      lh += r["coverage"]["line_hit"].get<long long>();
+      tp += r["coverage"]["toggle_points"].get<long long>();
+      th += r["coverage"]["toggle_hit"].get<long long>();
+    }
+    out = {{"target", "all"}, {"cycles", c}, {"transactions", t}, {"mismatches", m},
+           {"coverage_line", percent_or_null(lh, lp)}, {"coverage_toggle", percent_or_null(th, tp)}, {"targets", runs}};
+  } else {
+    out = runs.front();
+  }
+  if (junit_dir) {
+    junit_dir->write(junit_name, junit_xml(runs));
+    junit_dir->commit();
+  }
+  if (trace_dir) trace_dir->commit();
+
+  if (opt.json) {
+    std::cout << out.dump(2) << "\n";
+  } else {
+    for (const auto& r : runs) print_text(r);
+    if (all)
+      fmt::print("all: {} targets, {} cycles, {} transactions, {} mismatches\n", runs.size(),
+                 out["cycles"].get<unsigned long long>(), out["transactions"].get<unsigned long long>(),
+                 out["mismatches"].get<unsigned long long>());
+  }
+  bool ok = true;
+  for (const auto& r : runs) ok = ok && passed(r);
+  return ok ? kExitOk : kExitCosimMismatch;
+}
+
+}  // namespace rangesim::app
