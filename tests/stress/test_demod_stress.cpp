@@ -189,6 +189,23 @@ TEST(DemodHazards, ClipPointKeepsShotNoiseFinite) {
   EXPECT_NEAR(o.shot_var_V2, n.shot_var_V2, 1e-6 * n.shot_var_V2);
 }
 
+// Hazard: ln(f / I_off) with f = I_off + alpha eps I next to I_off (a weak signal on the log
+// converter's offset current) was computed as log(f / I_off): 1e-24 A on 1e-9 A came out 20%
+// wrong (f itself is rounded to ulp(1e-9) = 2e-25). With c0 - I_off passed exactly, log1p.
+TEST(DemodHazards, LogOfRatioNearOne) {
+  const double ref = 1e-9, d0 = 1e-24, L = 1e-3, tau = 1e-2;
+  const LogIntegral li = log_integral(ref + d0, 0.0, tau, L, 1e-15, ref, d0);
+  EXPECT_NEAR(li.ln_s, L * 1e-15, 1e-12 * L * 1e-15);
+  // And through the chain: D of a constant current is linear in the mismatch at tiny currents.
+  LsDemodulationConfig cfg;
+  cfg.correlator.capacitance_minus_F = 2 * cfg.correlator.capacitance_plus_F;
+  cfg.suppression.mirror_mismatch = 0.01;
+  cfg.noise.dark_current_A = 0;
+  const double d1 = correlate_periodic(cfg, pixel_segments(cfg, 0.0, 1e-20), 5).diff_V;
+  const double d2 = correlate_periodic(cfg, pixel_segments(cfg, 0.0, 2e-20), 5).diff_V;
+  EXPECT_NEAR(d2 / d1, 2.0, 1e-6);  // the log's curvature is 1e-13 here
+}
+
 TEST(DemodHazards, BillionPeriodsAggregateExactly) {
   LsDemodulationConfig cfg;
   cfg.correlator.cycles = 1000000000;
