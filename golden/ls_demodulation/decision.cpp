@@ -1,5 +1,6 @@
 #include "golden/ls_demodulation/decision.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rangesim::golden {
@@ -63,6 +64,8 @@ Classification classify(const LsDemodulationConfig& cfg, double signal_A, double
     const Tail t = activation(c.background.out.diff_V + g.offset_V[i], vcmp, c.background.sigma_independent_V);
     c.row_false_activation += g.weight[i] * -std::expm1(M * std::log1p(-std::min(t.p, 1 - 1e-300)));
   }
+  // The Gauss-Hermite weights sum to 1 only to rounding: keep the probability in [0, 1].
+  c.row_false_activation = std::clamp(c.row_false_activation, 0.0, 1.0);
   if (c.background.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;
   else if (c.background.out.diff_V >= vcmp || c.row_false_activation > cfg.comparator.false_activation_max)

@@ -9,7 +9,7 @@ namespace rangesim::golden {
 namespace {
 
 // 8-point Gauss-Legendre on [-1, 1]: exact for polynomials of degree 15; ln(c0 + c1 e^{-s/tau})
-// over L << tau is that smooth (its nearest singularity lies ~pi tau off the real axis, or just
+// over a panel of <= 2 tau is that smooth (its nearest singularity lies ~pi tau off the real axis, or just
 // beyond a clip point, where the floor takes over).
 constexpr double kGlX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
 constexpr double kGlW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
@@ -21,35 +21,66 @@ double frac(double x) { return x - std::floor(x); }
 //  - ln f: if f has a real zero s_z (c1 / c0 < 0), f = c0 (1 - e^{-x}), x = (s - s_z) / tau, and
 //    ln f = ln|c0| + ln|x| + ln h(x), h(x) = (1 - e^{-x}) / x > 0: the log singularity next to a
 //    clip point is integrated exactly (x ln|x| - x) and Gauss-Legendre sees only the smooth ln h.
-void gauss_legendre(double c0, double c1, double tau, double u0, double u1, double ref, LogIntegral& r) {
+//  - ln(f / ref) as log1p((d0 + c1 e^{-s/tau}) / ref), d0 = c0 - ref given exactly by the caller:
+//    ln of a ratio next to 1 (a weak signal on the converter's offset current) otherwise keeps
+//    only ref / |f - ref| x 1e-16 of its value.
+//  - f at an end of the piece is at least the floor: an end at the clip point has f = floor
+//    exactly, where rounding of c0 + c1 e^{-s/tau} (a difference of two large terms) gave 0 or
+//    less and ln(f(u1) / f(u0)) an infinite or NaN shot-noise kernel.
+void gauss_legendre(double c0, double c1, double tau, double u0, double u1, double ref, double d0, double floor_A,
+                    LogIntegral& r) {
   if (!(u1 > u0)) return;
   auto f = [&](double s) { return c0 + c1 * std::exp(-s / tau); };
-  const double mid = 0.5 * (u0 + u1), half = 0.5 * (u1 - u0);
-  const bool zero = c0 != 0 && -c1 / c0 > 0;
-  const double sz = zero ? tau * std::log(-c1 / c0) : 0;
-  auto h = [](double x) { return x == 0 ? 1.0 : -std::expm1(-x) / x; };
-  double ln = 0, inv = 0;
-  for (int i = 0; i < 4; ++i)
-    for (double sgn : {-1.0, 1.0}) {
-      const double s = mid + sgn * half * kGlX[i];
-      ln += kGlW[i] * (zero ? std::log(std::fabs(c0) / ref) + std::log(h((s - sz) / tau)) : std::log(f(s) / ref));
-      inv += kGlW[i] / f(s);
+  // Past s_flat the exponential term is below e^{-41.5} ~ 1e-18 of c0: f = c0 to rounding. A
+  // piece of many tau (fast LPF, slow modulation) is a head of panels plus this flat tail:
+  // 8 nodes cannot resolve e^{-s/tau} over L >> tau, and the zero branch's x ln|x| and ln h
+  // terms would cancel to nothing there (the integral came out wrong by its own size).
+  if (c0 > 0 && c1 != 0) {
+    const double s_flat = tau * (std::log(std::fabs(c1) / c0) + 41.5);
+    if (s_flat < u1) {
+      const double from = std::max(u0, s_flat), len = u1 - from;
+      r.ln_s += len * std::log1p(d0 / ref);
+      r.inv_s_per_A += len / c0;
+      u1 = from;
+      if (!(u1 > u0)) return;
     }
+  }
+  // The exact x ln|x| split only where the log singularity is within a tau of the piece; farther
+  // away ln|x| + ln h(x) = ln(1 - e^{-x}) is a small difference of large terms (1e-7 errors seen
+  // between a segment and its clock ticks), and log1p below is smooth and exact.
+  const double sz = c0 != 0 && -c1 / c0 > 0 ? tau * std::log(-c1 / c0) : 0;
+  const bool zero = c0 != 0 && -c1 / c0 > 0 && (u0 - sz) / tau < 1;
+  auto h = [](double x) { return x == 0 ? 1.0 : -std::expm1(-x) / x; };
+  const double ln_c0 = c0 > 0 ? std::log1p(d0 / ref) : std::log(std::fabs(c0) / ref);
+  // Panels of at most 2 tau: the integrand's nearest complex singularity is >= ~pi tau away.
+  const int panels = static_cast<int>(std::clamp(std::ceil((u1 - u0) / (2 * tau)), 1.0, 64.0));
+  const double half = 0.5 * (u1 - u0) / panels;
+  double ln = 0, inv = 0;
+  for (int p = 0; p < panels; ++p) {
+    const double mid = u0 + (2 * p + 1) * half;
+    for (int i = 0; i < 4; ++i)
+      for (double sgn : {-1.0, 1.0}) {
+        const double s = mid + sgn * half * kGlX[i];
+        ln += kGlW[i] * (zero ? ln_c0 + std::log(h((s - sz) / tau)) : std::log1p((d0 + c1 * std::exp(-s / tau)) / ref));
+        inv += kGlW[i] / f(s);
+      }
+  }
   r.ln_s += half * ln;
   if (zero) {
     auto F = [](double x) { return x == 0 ? 0.0 : x * std::log(std::fabs(x)) - x; };
     r.ln_s += tau * (F((u1 - sz) / tau) - F((u0 - sz) / tau));
   }
   if (std::fabs(c0) > 1e-3 * std::fabs(c1))
-    r.inv_s_per_A += tau / c0 * ((u1 - u0) / tau + std::log(f(u1) / f(u0)));
+    r.inv_s_per_A += tau / c0 * ((u1 - u0) / tau + std::log(std::max(f(u1), floor_A) / std::max(f(u0), floor_A)));
   else
     r.inv_s_per_A += half * inv;
 }
 
 }  // namespace
 
-LogIntegral log_integral(double c0, double c1, double tau, double L, double floor_A, double ref) {
+LogIntegral log_integral(double c0, double c1, double tau, double L, double floor_A, double ref, double d0) {
   LogIntegral r;
+  if (std::isnan(d0)) d0 = c0 - ref;
   const double f0 = c0 + c1, fL = c0 + c1 * std::exp(-L / tau);
   const bool clip0 = f0 <= floor_A, clipL = fL <= floor_A;
   auto clipped = [&](double len) {
@@ -59,15 +90,15 @@ LogIntegral log_integral(double c0, double c1, double tau, double L, double floo
   if (clip0 && clipL) {  // f is monotone: clipped throughout
     clipped(L);
   } else if (!clip0 && !clipL) {
-    gauss_legendre(c0, c1, tau, 0, L, ref, r);
+    gauss_legendre(c0, c1, tau, 0, L, ref, d0, floor_A, r);
   } else {
     // f crosses the floor once, at c0 + c1 e^{-s/tau} = floor.
     const double s_star = std::clamp(-tau * std::log((floor_A - c0) / c1), 0.0, L);
     if (clip0) {
       clipped(s_star);
-      gauss_legendre(c0, c1, tau, s_star, L, ref, r);
+      gauss_legendre(c0, c1, tau, s_star, L, ref, d0, floor_A, r);
     } else {
-      gauss_legendre(c0, c1, tau, 0, s_star, ref, r);
+      gauss_legendre(c0, c1, tau, 0, s_star, ref, d0, floor_A, r);
       clipped(L - s_star);
     }
   }
@@ -120,7 +151,7 @@ double lpf_periodic_start_A(const LsDemodulationConfig& cfg, const std::vector<S
 namespace {
 
 CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods, double start_A,
-                     double past_mean_A, bool periodic) {
+                     double past_mean_A) {
   const auto& sup = cfg.suppression;
   const auto& lg = cfg.log_converter;
   const auto& co = cfg.correlator;
@@ -130,16 +161,12 @@ CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>
   std::vector<double> k(n);  // noise kernel per segment, V / (A s) per A of i_mod
   CorrelatorOutput out;
   double Iavg = start_A, T = 0;
-  // In the periodic steady state every period repeats the first exactly: its log integrals are
-  // computed once and reused (aggregation of identical cycles, exact).
-  std::vector<LogIntegral> memo(S);
   for (size_t j = 0; j < n; ++j) {
     const Segment& s = period[j % S];
     const double I = s.photocurrent_A, L = s.duration_s;
     const double c0 = lg.offset_current_A + alpha * eps * I;  // I_off + I_mod as t -> infinity
     const double c1 = -alpha * (Iavg - I);                    // the LPF's lag behind I_pd
-    if (!periodic || j < S) memo[j % S] = log_integral(c0, c1, tau, L, lg.leakage_current_A, lg.offset_current_A);
-    const LogIntegral& li = memo[j % S];
+    const LogIntegral li = log_integral(c0, c1, tau, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
     const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
     (s.branch > 0 ? out.plus_V : out.minus_V) += gain_V / C * li.ln_s;
     k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
@@ -169,6 +196,85 @@ CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>
   return out;
 }
 
+// Periodic steady state: every period repeats the first, so the window is aggregated exactly in
+// O(S log N) time and O(S) memory (correlator.cycles goes to 1e9: the segment-by-segment loop
+// needed 3N doubles and N x S steps). Means: N x one period. Shot noise: one period of the
+// backward recursion is an affine map of G (at the period's end -> at its start) and adds a
+// quadratic in G to the variance; N periods are that map composed N times (binary powering).
+struct PeriodMap {
+  double a = 0, c = 1;             // G_start = a + c G_end
+  double v0 = 0, v1 = 0, v2 = 0;  // variance added: v0 + v1 G_end + v2 G_end^2
+};
+// `later` (closer to the window end) first, then `earlier`.
+PeriodMap compose(const PeriodMap& later, const PeriodMap& earlier) {
+  PeriodMap m;
+  m.a = earlier.a + earlier.c * later.a;
+  m.c = earlier.c * later.c;
+  m.v0 = later.v0 + earlier.v0 + earlier.v1 * later.a + earlier.v2 * later.a * later.a;
+  m.v1 = later.v1 + earlier.v1 * later.c + 2 * earlier.v2 * later.a * later.c;
+  m.v2 = later.v2 + earlier.v2 * later.c * later.c;
+  return m;
+}
+
+CorrelatorOutput run_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
+                              double start_A, double past_mean_A) {
+  const auto& sup = cfg.suppression;
+  const auto& lg = cfg.log_converter;
+  const auto& co = cfg.correlator;
+  const double alpha = sup.mirror_gain, eps = sup.mirror_mismatch, tau = sup.lpf_time_constant_s;
+  const double gain_V = co.transconductance_S * lg.gain * lg.slope_V;
+  const size_t S = period.size();
+  const double N = std::max(periods, 0);
+  CorrelatorOutput out;
+  std::vector<double> k(S), dplus(S), dminus(S);
+  double Iavg = start_A, T = 0, plus = 0, minus = 0;
+  for (size_t j = 0; j < S; ++j) {
+    const Segment& s = period[j];
+    const double I = s.photocurrent_A, L = s.duration_s;
+    const LogIntegral li = log_integral(lg.offset_current_A + alpha * eps * I, -alpha * (Iavg - I), tau, L,
+                                        lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
+    const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
+    (s.branch > 0 ? plus : minus) += gain_V / C * li.ln_s;
+    dplus[j] = plus, dminus[j] = minus;  // swings at the end of segment j of the first period
+    k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
+    out.clipped_fraction += li.clipped_s;
+    Iavg = I + (Iavg - I) * std::exp(-L / tau);
+    T += L;
+  }
+  if (periods <= 0) return out;
+  out.plus_V = N * plus, out.minus_V = N * minus;
+  out.diff_V = out.plus_V - out.minus_V;
+  // |swing| is convex along the periods at a fixed segment: the first or the last period peaks.
+  for (size_t j = 0; j < S; ++j)
+    out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(dplus[j]), std::fabs(dminus[j]),
+                               std::fabs((N - 1) * plus + dplus[j]), std::fabs((N - 1) * minus + dminus[j])});
+  out.clipped_fraction = T > 0 ? out.clipped_fraction / T : 0;
+  out.lpf_end_A = Iavg;
+
+  // One period backwards, G_end -> G_start, with G_j = a_j + c_j G_end at each segment's end.
+  const double q = phys::kElementaryCharge_C;
+  PeriodMap one;
+  for (size_t jj = S; jj-- > 0;) {
+    const Segment& s = period[jj];
+    const double L = s.duration_s, e1 = -std::expm1(-L / tau), e2 = -std::expm1(-2 * L / tau);
+    const double A = alpha * eps * k[jj], b0 = alpha * (k[jj] - one.a), b1 = -alpha * one.c;  // B = b0 + b1 G_end
+    const double w = q * s.photocurrent_A;
+    one.v0 += w * (A * A * L + 2 * A * b0 * tau * e1 + b0 * b0 * 0.5 * tau * e2);
+    one.v1 += w * (2 * A * b1 * tau * e1 + b0 * b1 * tau * e2);
+    one.v2 += w * b1 * b1 * 0.5 * tau * e2;
+    one.a = k[jj] * e1 + one.a * (1 - e1);
+    one.c *= 1 - e1;
+  }
+  PeriodMap acc, pw = one;  // acc = identity
+  for (long long n = periods; n > 0; n >>= 1) {
+    if (n & 1) acc = compose(acc, pw);
+    pw = compose(pw, pw);
+  }
+  const double G = acc.a;  // G at the window start (G = 0 at its end)
+  out.shot_var_V2 = std::max(0.0, acc.v0) + q * past_mean_A * alpha * alpha * G * G * 0.5 * tau;
+  return out;
+}
+
 double mean_current_A(const std::vector<Segment>& period) {
   double q = 0, T = 0;
   for (const auto& s : period) q += s.photocurrent_A * s.duration_s, T += s.duration_s;
@@ -178,12 +284,12 @@ double mean_current_A(const std::vector<Segment>& period) {
 }  // namespace
 
 CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods) {
-  return run(cfg, period, periods, lpf_periodic_start_A(cfg, period), mean_current_A(period), true);
+  return run_periodic(cfg, period, periods, lpf_periodic_start_A(cfg, period), mean_current_A(period));
 }
 
 CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
                                 double lpf_start_A) {
-  return run(cfg, period, periods, lpf_start_A, lpf_start_A, false);
+  return run(cfg, period, periods, lpf_start_A, lpf_start_A);
 }
 
 double ktc_variance_V2(const LsDemodulationConfig& cfg) {

@@ -11,13 +11,15 @@
 //              currents: a current-mode stage cannot sink more than its bias, the swing clips)
 //   integrate  dV_+/dt = g_m V_mod / C1 while MPY+, dV_-/dt = g_m V_mod / C2 while MPY-  (eq. 2.13)
 // On a segment I_off + I_mod = c0 + c1 e^{-s/tau} exactly; its log is integrated by 8-point
-// Gauss-Legendre (smooth: L << tau), split exactly where the floor is crossed.
+// Gauss-Legendre (panels of <= 2 tau, a flat tail once e^{-s/tau} is gone), split exactly where
+// the floor is crossed.
 //
 // Shot noise (two-sided PSD q I_pd) passes the chain linearised about the mean: the output is
 // y = int K(u) i(u) du with K = alpha (1+eps) k(u) - alpha int_u^T k(t) e^{-(t-u)/tau} dt / tau,
 // k = +-g_m beta s / (C I_log) (0 where clipped). With k constant per segment (its segment mean:
 // first order in the LPF ripple L / tau) K is A + B e^{-(b-u)/tau} per segment and
 // Var = q sum I_j int K^2 du in closed form, plus the LPF's memory of noise before the window.
+#include <limits>
 #include <vector>
 
 #include "core/ls_demodulation_config.h"
@@ -60,11 +62,13 @@ struct CorrelatorOutput {
 };
 
 // The period repeated `periods` times with the LPF in its periodic steady state (the beam and
-// background have been on for many tau: eq. 2.9's I_avg = mean I_pd).
+// background have been on for many tau: eq. 2.9's I_avg = mean I_pd). Identical periods are
+// aggregated exactly: O(segments x log periods), so correlator.cycles up to 1e9 costs microseconds.
 CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods);
 
 // Same, with the LPF starting from `lpf_start_A` at the window start (transients, e.g. a
-// background step); noise from before the window is taken at the level lpf_start_A.
+// background step); noise from before the window is taken at the level lpf_start_A. Steps every
+// segment of the window: O(segments x periods) time and memory.
 CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
                                 double lpf_start_A);
 
@@ -78,7 +82,9 @@ struct LogIntegral {
   double inv_s_per_A = 0;  // int 1{f > floor} / f ds
   double clipped_s = 0;  // time with f <= floor
 };
-LogIntegral log_integral(double c0_A, double c1_A, double tau_s, double length_s, double floor_A, double ref_A);
+// c0_minus_ref_A: c0 - ref exactly (c0 = ref + alpha eps I here); NaN: computed as c0 - ref.
+LogIntegral log_integral(double c0_A, double c1_A, double tau_s, double length_s, double floor_A, double ref_A,
+                         double c0_minus_ref_A = std::numeric_limits<double>::quiet_NaN());
 
 // kTC variance of the difference: kT/C1 + kT/C2 (each integrator reset once per decision).
 double ktc_variance_V2(const LsDemodulationConfig& cfg);

@@ -95,10 +95,21 @@ EstimateMoments estimator_moments(const PileUpHistogram& h, const TdcBins& bins,
     double mean = 0, var = 0;
     if (cfg.coates) {
       const double armed = cycles * h.armed_prob[ui], q = h.hazard[ui];
-      if (armed >= 1 && q < 1) {
+      // coates_rates caps q at 1 - 1/(2A): a bin that stops (nearly) every armed cycle reads
+      // ln(2A)/s whatever the rate. Without the cap here a hazard that rounds to 1 (s r > 37,
+      // count rates far above 1/dead time) read as an empty bin and lost the echo.
+      const double q_cap = armed >= 1 ? 1 - 0.5 / armed : 0;
+      if (armed >= 1 && q >= q_cap) {
+        mean = std::log(2 * armed) / s;
+      } else if (armed >= 1) {
         const double var_q = s * q * (1 - q / s) / armed;  // binomial, s x our counts / armed
         var = var_q / (s * s * (1 - q) * (1 - q));
         mean = -std::log1p(-q) / s + 0.5 * s * var;
+        // The capped estimate lies in [0, ln(2A)/s]: its mean and variance cannot exceed that
+        // (the delta method's (1-q)^-2 blows up next to the cap).
+        const double top = std::log(2 * armed) / s;
+        mean = std::min(mean, top);
+        var = std::min(var, 0.25 * top * top);
       }
     } else {
       mean = cycles * h.event_prob[ui];
@@ -114,8 +125,10 @@ EstimateMoments estimator_moments(const PileUpHistogram& h, const TdcBins& bins,
   if (!(mu_d > 0)) return m;
   m.defined = true;
   const double ratio = mu_n / mu_d;
-  m.mean_s = k.origin_s + ratio + (ratio * vdd - vnd) / (mu_d * mu_d);
-  m.var_s2 = std::max(0.0, vnn - 2 * ratio * vnd + ratio * ratio * vdd) / (mu_d * mu_d);
+  // Divide twice: mu_d^2 underflows to 0 (inf) for window sums below 1e-154 (a TDC stopped
+  // before the echo in all but 1e-160 of the cycles).
+  m.mean_s = k.origin_s + ratio + (ratio * vdd - vnd) / mu_d / mu_d;
+  m.var_s2 = std::max(0.0, vnn - 2 * ratio * vnd + ratio * ratio * vdd) / mu_d / mu_d;
   return m;
 }
 

@@ -70,7 +70,7 @@ void DemodPixelKernel::reset(double beam_A, double background_A, pcg32& rng, con
     const auto& s = segments_[j];
     const double I = s.photocurrent_A, L = s.duration_s;
     const auto li = golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * (Iavg - I), tau, L,
-                                         lg.leakage_current_A, lg.offset_current_A);
+                                         lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
     const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
     k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
     Iavg = I + (Iavg - I) * std::exp(-L / tau);
@@ -106,7 +106,7 @@ void DemodPixelKernel::step(int cycles) {
   const bool whole = seg_cycle_ == 0 && cycles == left;
   const double L = whole ? s.duration_s : cycles / sched_.clock_Hz;
   const auto li = golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * (lpf_A_ - I), tau, L,
-                                       lg.leakage_current_A, lg.offset_current_A);
+                                       lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
   const double gain_V = cfg_.correlator.transconductance_S * lg.gain * lg.slope_V;
   if (s.branch > 0)
     plus_V_ += gain_V / cfg_.correlator.capacitance_plus_F * li.ln_s;

@@ -8,6 +8,22 @@ namespace rangesim::systemc::spad {
 namespace {
 constexpr std::uint64_t kSignalSalt = 0x5349474e414cULL, kUniformSalt = 0x554e49464fULL, kSpadSalt = 0x53504144ULL;
 double exp_gap(pcg32& rng) { return -std::log(uniform_open01(rng)); }
+// Largest mean drawn by one inversion: exp(-mean) stays far from underflow.
+constexpr double kInversionMaxMean = 64.0;
+// Poisson(mu) as the sum of ceil(mu / 64) independent Poisson(mu / pieces), each by inversion.
+long long poisson_by_pieces(pcg32& rng, double mu) {
+  const long long pieces = static_cast<long long>(std::ceil(mu / kInversionMaxMean));
+  const double m = mu / static_cast<double>(pieces), e = std::exp(-m);
+  long long total = 0;
+  for (long long i = 0; i < pieces; ++i) {
+    const double u = uniform_open01(rng);
+    double p = e, cum = p;
+    long long k = 0;
+    while (cum < u && k < 100000) p *= m / static_cast<double>(++k), cum += p;
+    total += k;
+  }
+  return total;
+}
 }  // namespace
 
 SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, const SpadNoise& n, long long laser_cycles,
@@ -44,12 +60,20 @@ void SpadPixelKernel::next_signal_cycle() {
   }
   signal_cycle_ = static_cast<long long>(cycle);
   // Photon count given at least one: zero-truncated Poisson by inversion.
-  const double mu = signal_per_cycle_, u = uniform_open01(signal_rng_) * -std::expm1(-mu);
-  double p = std::exp(-mu) * mu, cum = p;
-  int k = 1;
-  while (cum < u && k < 100000) p *= mu / ++k, cum += p;
+  const double mu = signal_per_cycle_;
+  long long k = 1;
+  if (mu <= kInversionMaxMean) {
+    const double u = uniform_open01(signal_rng_) * -std::expm1(-mu);
+    double p = std::exp(-mu) * mu, cum = p;
+    while (cum < u && k < 100000) p *= mu / static_cast<double>(++k), cum += p;
+  } else {
+    // Far above 1 / dead time: exp(-mu) underflows past mu ~ 745 and the inversion above would
+    // return its cap. A sum of Poisson(<= kInversionMaxMean) pieces is Poisson(mu) exactly; a sum
+    // of 0 (probability e^-mu) is drawn again.
+    do k = poisson_by_pieces(signal_rng_, mu); while (k == 0);
+  }
   const double t0 = static_cast<double>(signal_cycle_) * period_s_ + round_trip_s_;
-  for (int i = 0; i < k; ++i) signal_buf_.push_back(t0 + pulse_sigma_s_ * standard_normal(signal_rng_));
+  for (long long i = 0; i < k; ++i) signal_buf_.push_back(t0 + pulse_sigma_s_ * standard_normal(signal_rng_));
   std::sort(signal_buf_.begin(), signal_buf_.end(), std::greater<double>());
 }
 
