@@ -3,7 +3,7 @@
 # instead registers the ctest `fuzz` (label fuzz), which makes that build in a sub-directory at
 # test time and runs each target for RANGESIM_FUZZ_SECONDS; it skips when clang is absent.
 option(RANGESIM_FUZZ "Build the libFuzzer targets in fuzz/ (clang only)" OFF)
-set(RANGESIM_FUZZ_SECONDS 30 CACHE STRING "Seconds each fuzz target runs in the fuzz ctest")
+set(RANGESIM_FUZZ_SECONDS 20 CACHE STRING "Seconds each fuzz target runs in the fuzz ctest (three targets)")
 
 if(RANGESIM_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")

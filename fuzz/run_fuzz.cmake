@@ -1,9 +1,9 @@
 # ctest `fuzz`: builds the libFuzzer targets with clang in a sub-build and runs each for a
 # bounded time on a scratch copy of its seed corpus. Skips (prints FUZZ-SKIPPED, which the test's
 # SKIP_REGULAR_EXPRESSION turns into "skipped") when clang or its libFuzzer runtime is absent.
-#   cmake -DSOURCE_DIR=<repo> -DBINARY_DIR=<dir> [-DSECONDS=30] -P fuzz/run_fuzz.cmake
+#   cmake -DSOURCE_DIR=<repo> -DBINARY_DIR=<dir> [-DSECONDS=20] -P fuzz/run_fuzz.cmake
 if(NOT SECONDS)
-  set(SECONDS 30)
+  set(SECONDS 20)
 endif()
 find_program(CLANGXX NAMES clang++ clang++-14 clang++-15 clang++-16)
 if(NOT CLANGXX)
@@ -30,7 +30,7 @@ execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${build}" -G N
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fuzz: configuring the clang sub-build failed")
 endif()
-execute_process(COMMAND "${CMAKE_COMMAND}" --build "${build}" --target preset_fuzz cli_fuzz RESULT_VARIABLE rc)
+execute_process(COMMAND "${CMAKE_COMMAND}" --build "${build}" --target preset_fuzz scene_fuzz cli_fuzz RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "fuzz: building the fuzz targets failed")
 endif()
@@ -39,7 +39,7 @@ math(EXPR build_s "${t1} - ${t0}")
 message("fuzz: sub-build ready in ${build_s} s")
 
 set(failed "")
-foreach(target preset_fuzz cli_fuzz)
+foreach(target preset_fuzz scene_fuzz cli_fuzz)
   set(work "${BINARY_DIR}/corpus/${target}")
   file(REMOVE_RECURSE "${work}" "${BINARY_DIR}/artifacts/${target}")
   file(MAKE_DIRECTORY "${work}" "${BINARY_DIR}/artifacts/${target}")

@@ -2,7 +2,6 @@
 // mirror gain, runtime, input checks.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <set>
 #include <cmath>
 
@@ -14,11 +13,9 @@
 namespace rangesim::golden {
 namespace {
 
-TEST(DemodEvaluation, PresetGridIsFastAndComplete) {
-  const auto t0 = std::chrono::steady_clock::now();
+// Its speed is measured by `rangesim bench`/the docs, not asserted here (CI machines are noisy).
+TEST(DemodEvaluation, PresetGridIsComplete) {
   const EvalResult r = evaluate_ls_demodulation(test::demod_params(), nullptr);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_LT(wall_s, 60.0);  // ~5 s on two cores when the machine is idle (docs); loose for loaded CI
   EXPECT_EQ(r.sensor, "ls-demodulation");
   EXPECT_EQ(r.signal.unit, "A");
   EXPECT_EQ(r.points.size(), r.signal.values.size() * r.background.values.size());
