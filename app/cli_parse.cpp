@@ -126,7 +126,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
       "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
       "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
-      "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input.");
+      "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input,\n"
+      "130 interrupted (Ctrl-C; 'all' keeps its journal and prints the command that resumes).");
   co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), or 'all'");
   co->add_option("--cycles", co_opt.cycles, "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
   co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
@@ -135,6 +136,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   co->add_option("--inject-fault", co_opt.inject_fault, "Run with this named fault of the target (see --list); it must be reported");
   co->add_flag("--json", co_opt.json, "Print JSON (keys cycles, transactions, mismatches, coverage_line, coverage_toggle, ...)");
   co->add_flag("--list", co_opt.list, "List the targets and their faults");
+  co->add_option("--journal", co_opt.journal,
+                 "'all': journal of the finished targets (default: rangesim-out/cosim/all.journal; removed on completion)");
+  co->add_flag("--resume", co_opt.resume,
+               "'all': continue a killed or interrupted run from its journal (same options); the report equals an\n"
+               "uninterrupted run's apart from wall times");
 
   try {
     app.parse(argc, argv);

@@ -8,8 +8,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -19,6 +22,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "app/sweep_journal.h"
 #include "core/user_error.h"
 #include "tb/cosim_coverage.h"
 #include "tb/cosim_target.h"
@@ -175,6 +179,44 @@ std::string junit_xml(const std::vector<json>& runs) {
   return x;
 }
 
+constexpr int kExitInterrupted = 130;  // Ctrl-C; the journal of `all` is kept
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_sigint(int) { g_interrupted.store(true); }
+
+// SIGINT handler for the length of `all`; restores the previous one on destruction.
+class SigintGuard {
+ public:
+  SigintGuard() {
+    struct sigaction sa {};
+    sa.sa_handler = on_sigint;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_);
+  }
+  ~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  struct sigaction old_ {};
+};
+
+// What makes the results of `all` what they are: a journal from other options is refused.
+std::string all_fingerprint(const CosimCommandOptions& o, unsigned long long cycles, const std::vector<tb::CosimTarget>& targets) {
+  std::string f = fmt::format("rangesim cosim all\ncycles {}\nseed {}\ntrace {}\ntargets", cycles, o.seed, o.trace);
+  for (const auto& t : targets) f += std::string(" ") + t.name;
+  return f + "\n";
+}
+
+std::string resume_command(const CosimCommandOptions& o) {
+  std::string c = fmt::format("rangesim cosim all --seed {}", o.seed);
+  if (o.cycles) c += fmt::format(" --cycles {}", *o.cycles);
+  if (!o.trace.empty()) c += " --trace " + o.trace;
+  if (!o.junit.empty()) c += " --junit " + o.junit;
+  if (o.json) c += " --json";
+  return c + " --journal " + o.journal + " --resume";
+}
+
 // Runs `rangesim cosim <target> --json ...` as a child process and parses its JSON.
 json run_child(const std::string& target, const CosimCommandOptions& opt, unsigned long long cycles, const std::string& trace) {
   std::vector<std::string> args{"rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed",
@@ -236,6 +278,7 @@ int run_cosim(const CosimCommandOptions& opt) {
   const unsigned long long cycles = opt.cycles.value_or(kDefaultCycles);
   if (cycles < 1 || cycles > kMaxCycles)
     throw UserError(fmt::format("cosim: --cycles {} out of range; allowed 1..{}", cycles, kMaxCycles));
+  if (opt.resume && !all) throw UserError("cosim: --resume continues an interrupted 'all' run; a single target has no journal");
   if (!opt.inject_fault.empty()) {
     if (all) throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
     bool known = false;
@@ -265,8 +308,19 @@ int run_cosim(const CosimCommandOptions& opt) {
   }
 
   std::vector<json> runs;
+  std::unique_ptr<SweepJournal> journal;
   if (all) {
-    for (const auto& t : targets) {
+    journal = std::make_unique<SweepJournal>(opt.journal, all_fingerprint(opt, cycles, targets), opt.resume);
+    if (!journal->done().empty())
+      fmt::print(stderr, "cosim: resuming: {} of {} targets from {}\n", journal->done().size(), targets.size(), journal->path());
+    SigintGuard sigint;  // children die of Ctrl-C themselves; the parent stops after them
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      const auto& t = targets[i];
+      const auto it = journal->done().find(static_cast<long long>(i));
+      if (it != journal->done().end()) {
+        runs.push_back(json::parse(it->second));
+        continue;
+      }
       std::string trace;
       if (!opt.trace.empty()) {
         std::string stem = opt.trace;
@@ -279,7 +333,19 @@ int run_cosim(const CosimCommandOptions& opt) {
       const bool full = std::string(t.name) == "ls-conventional-full";
       const unsigned long long n = full ? std::min(cycles, kAllFullCycles) : cycles;
       fmt::print(stderr, "cosim: {} ({} cycles{})...\n", t.name, n, n < cycles ? ", capped in 'all'" : "");
-      runs.push_back(run_child(t.name, opt, n, trace));
+      json r;
+      try {
+        r = run_child(t.name, opt, n, trace);
+      } catch (const std::runtime_error&) {
+        if (!g_interrupted.load()) throw;
+      }
+      if (g_interrupted.load()) {
+        fmt::print(stderr, "cosim: interrupted; {} of {} targets kept in {}; continue with:\n  {}\n", runs.size(), targets.size(),
+                   journal->path(), resume_command(opt));
+        return kExitInterrupted;
+      }
+      journal->append(static_cast<long long>(i), r.dump());
+      runs.push_back(std::move(r));
       fmt::print(stderr, "cosim: {} done: {} mismatches\n", t.name, runs.back()["mismatches"].get<unsigned long long>());
     }
   } else {
@@ -338,6 +404,12 @@ int run_cosim(const CosimCommandOptions& opt) {
     junit_dir->commit();
   }
   if (trace_dir) trace_dir->commit();
+  if (journal) {  // the run is complete: nothing left to resume
+    journal->remove();
+    std::error_code ec;  // the default folder goes too when nothing else is in it
+    if (opt.journal == CosimCommandOptions{}.journal)
+      std::filesystem::remove(std::filesystem::path(journal->path()).parent_path(), ec);
+  }
 
   if (opt.json) {
     std::cout << out.dump(2) << "\n";

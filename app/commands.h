@@ -75,6 +75,10 @@ struct CosimCommandOptions {
   std::string inject_fault;             // a fault name of the target ("" = none)
   bool json = false;
   bool list = false;
+  // `all` journals each finished target (app/sweep_journal.h) so that a killed or interrupted run
+  // continues with --resume; the journal is removed when the run completes.
+  std::string journal = "rangesim-out/cosim/all.journal";
+  bool resume = false;
 };
 int run_cosim(const CosimCommandOptions& opt);
 
