@@ -119,6 +119,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   bench->add_flag("--quick", bench_opt.quick, "Fewer frames for the slow references: the same keys in under two minutes");
   bench->add_flag("--json", bench_opt.json, "Print bench.json to stdout instead of the tables");
   bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)");
+  bench->add_flag("--resume", bench_opt.resume,
+                  "Continue a killed or interrupted bench: every finished Pareto row and figure group is kept in a\n"
+                  "journal under --out and not measured again");
 
   CosimCommandOptions& co_opt = c.cosim;
   auto* co = app.add_subcommand(

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -16,7 +17,9 @@
 #include "app/bench/bench_pareto.h"
 #include "app/bench/bench_util.h"
 #include "app/bench/mc_bench_hook.h"
+#include "app/cli_common.h"
 #include "app/output_dir.h"
+#include "app/sweep_journal.h"
 
 namespace rangesim::app {
 
@@ -75,19 +78,74 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
   return "";
 }
 
+// Journal indices of the figure groups (Pareto rows use 0, 1, ...).
+constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002;
+
+json mc_hook_json(const McBenchHookResult& m) {
+  return {{"mc_vs_bare_rng", m.mc_vs_bare_rng ? json(*m.mc_vs_bare_rng) : json(nullptr)},
+          {"threads2_vs_1", m.threads2_vs_1 ? json(*m.threads2_vs_1) : json(nullptr)},
+          {"details", m.details},
+          {"note", m.note}};
+}
+
+McBenchHookResult mc_hook_from_json(const json& j) {
+  McBenchHookResult m;
+  if (j["mc_vs_bare_rng"].is_number()) m.mc_vs_bare_rng = j["mc_vs_bare_rng"].get<double>();
+  if (j["threads2_vs_1"].is_number()) m.threads2_vs_1 = j["threads2_vs_1"].get<double>();
+  m.details = j["details"];
+  m.note = j["note"].get<std::string>();
+  return m;
+}
+
 }  // namespace
 
 int run_bench(const BenchOptions& opt) {
   const auto t0 = Clock::now();
   set_progress_start(t0);
-  OutputDir out(opt.out.empty() ? "rangesim-out/bench" : opt.out, "--out");
+  const std::string dir = opt.out.empty() ? "rangesim-out/bench" : opt.out;
+  OutputDir out(dir, "--out");
+  // Every finished Pareto row and figure group goes to the journal: a killed or interrupted bench
+  // continues with --resume and measures only what is missing.
+  const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
+  SweepJournal journal(journal_dir + "/bench.journal",
+                       fmt::format("rangesim bench\nquick {}\nrtl {}\n", opt.quick, RANGESIM_BENCH_HAS_RTL != 0), opt.resume);
+  if (opt.resume) remove_stale_staging(dir);
+  if (!journal.done().empty()) progress(fmt::format("resuming: {} results from {}", journal.done().size(), journal.path()));
   progress(fmt::format("start ({} run); output into {}", opt.quick ? "quick" : "full", out.dir()));
+  SigintGuard sigint;  // the children die of Ctrl-C; the bench stops after them
+  const auto interrupted = [&] {
+    fmt::print(stderr, "rangesim bench: interrupted; {} results kept in {}; continue with:\n  rangesim bench{} --out {} --resume\n",
+               journal.done().size(), journal.path(), opt.quick ? " --quick" : "", shell_quote(dir));
+    return kExitInterrupted;
+  };
+  // A figure group from the journal, or measured now and journaled.
+  const auto group = [&](long long index, const auto& measure) -> json {
+    const auto it = journal.done().find(index);
+    if (it != journal.done().end()) return json::parse(it->second);
+    json j = measure();
+    journal.append(index, j.dump());
+    return j;
+  };
 
-  std::vector<ParetoRow> pareto = run_pareto(opt.quick, out.scratch("runs"));
-  const json ls = bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0});
-  const json lockin = bench_aggregation_lockin(opt.quick);
-  progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
-  const McBenchHookResult mc = mc_bench_hook(opt.quick);
+  std::vector<ParetoRow> pareto;
+  json ls, lockin, mc_json;
+  try {
+    pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
+    if (sigint_flag()) return interrupted();
+    ls = group(kJournalLs, [&] { return bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0}); });
+    if (sigint_flag()) return interrupted();
+    lockin = group(kJournalLockin, [&] { return bench_aggregation_lockin(opt.quick); });
+    if (sigint_flag()) return interrupted();
+    mc_json = group(kJournalMc, [&] {
+      progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
+      return mc_hook_json(mc_bench_hook(opt.quick));
+    });
+  } catch (const std::exception&) {
+    if (sigint_flag()) return interrupted();
+    throw;
+  }
+  if (sigint_flag()) return interrupted();
+  const McBenchHookResult mc = mc_hook_from_json(mc_json);
 
   // The RTL readout as a Pareto point: the same addresses as the model, so the same error.
   if (ls["model_vs_rtl"]["value"].is_number())
@@ -144,6 +202,9 @@ int run_bench(const BenchOptions& opt) {
   out.write("pareto.csv", pareto_csv(pareto));
   const std::string warning = render_pareto(out, pareto);
   out.commit();
+  journal.remove();
+  std::error_code ec;
+  std::filesystem::remove(journal_dir, ec);  // only if empty
   progress(fmt::format("done in {:.1f} s", seconds_since(t0)));
 
   if (opt.json) {

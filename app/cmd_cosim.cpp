@@ -8,9 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -179,28 +177,6 @@ std::string junit_xml(const std::vector<json>& runs) {
   return x;
 }
 
-constexpr int kExitInterrupted = 130;  // Ctrl-C; the journal of `all` is kept
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_sigint(int) { g_interrupted.store(true); }
-
-// SIGINT handler for the length of `all`; restores the previous one on destruction.
-class SigintGuard {
- public:
-  SigintGuard() {
-    struct sigaction sa {};
-    sa.sa_handler = on_sigint;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_);
-  }
-  ~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
-
- private:
-  struct sigaction old_ {};
-};
-
 // What makes the results of `all` what they are: a journal from other options is refused.
 std::string all_fingerprint(const CosimCommandOptions& o, unsigned long long cycles, const std::vector<tb::CosimTarget>& targets) {
   std::string f = fmt::format("rangesim cosim all\ncycles {}\nseed {}\ntrace {}\ntargets", cycles, o.seed, o.trace);
@@ -211,10 +187,10 @@ std::string all_fingerprint(const CosimCommandOptions& o, unsigned long long cyc
 std::string resume_command(const CosimCommandOptions& o) {
   std::string c = fmt::format("rangesim cosim all --seed {}", o.seed);
   if (o.cycles) c += fmt::format(" --cycles {}", *o.cycles);
-  if (!o.trace.empty()) c += " --trace " + o.trace;
-  if (!o.junit.empty()) c += " --junit " + o.junit;
+  if (!o.trace.empty()) c += " --trace " + shell_quote(o.trace);
+  if (!o.junit.empty()) c += " --junit " + shell_quote(o.junit);
   if (o.json) c += " --json";
-  return c + " --journal " + o.journal + " --resume";
+  return c + " --journal " + shell_quote(o.journal) + " --resume";
 }
 
 // Runs `rangesim cosim <target> --json ...` as a child process and parses its JSON.
@@ -337,9 +313,9 @@ int run_cosim(const CosimCommandOptions& opt) {
       try {
         r = run_child(t.name, opt, n, trace);
       } catch (const std::runtime_error&) {
-        if (!g_interrupted.load()) throw;
+        if (!sigint_flag().load()) throw;
       }
-      if (g_interrupted.load()) {
+      if (sigint_flag().load()) {
         fmt::print(stderr, "cosim: interrupted; {} of {} targets kept in {}; continue with:\n  {}\n", runs.size(), targets.size(),
                    journal->path(), resume_command(opt));
         return kExitInterrupted;

@@ -60,6 +60,7 @@ struct BenchOptions {
   bool quick = false;  // --quick: the same keys in under two minutes (fewer frames for the references)
   bool json = false;   // --json: bench.json to stdout instead of the tables
   std::string out;     // --out DIR ("" -> rangesim-out/bench)
+  bool resume = false; // --resume: continue a killed or interrupted bench from its journal in DIR
 };
 // 0 when every identity check inside the bench passed (speed targets are reported, not
 // enforced), 1 when one failed; throws UserError for an unusable --out.

@@ -12,6 +12,9 @@
 //   P <index> <payload length> <payload> <FNV-1a hash of "index payload", 16 hex digits>
 // A last line cut short by a kill (no newline, wrong length or hash) is dropped on reading and
 // truncated away before new records are appended.
+#include <signal.h>
+
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -47,6 +50,28 @@ class SweepJournal {
   int fd_ = -1;
   std::mutex mutex_;
   std::map<long long, std::string> done_;
+};
+
+// Ctrl-C during a sweep: while a SigintGuard lives, SIGINT sets sigint_flag() (cleared on
+// construction) instead of ending the process, so the sweep stops between points with its
+// journal intact, prints the command that resumes and exits with kExitInterrupted. Child
+// processes the sweep runs still die of the signal themselves.
+inline constexpr int kExitInterrupted = 130;
+// Staging folders (.staging-<pid>) of DIR left by a killed run whose process is gone: removed when
+// a sweep resumes, so the finished folder holds only the outputs.
+void remove_stale_staging(const std::string& dir);
+// `s` as one word for the shell (the printed resume commands).
+std::string shell_quote(const std::string& s);
+std::atomic<bool>& sigint_flag();
+class SigintGuard {
+ public:
+  SigintGuard();
+  ~SigintGuard();
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  struct sigaction old_ {};
 };
 
 }  // namespace rangesim::app

@@ -50,11 +50,34 @@ std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) :
 
 }  // namespace
 
-std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir) {
+std::string pareto_row_record(const ParetoRow& r) {
+  const nlohmann::json j = {{"sensor", r.sensor}, {"setting", r.setting}, {"harness", r.harness}, {"args", r.args},
+                            {"frames", r.frames},   {"wall_s", r.wall_s},   {"cpu_s", r.cpu_s},     {"error_m", r.error_m},
+                            {"points", r.points},   {"note", r.note}};
+  return j.dump();  // NaN error -> null
+}
+
+ParetoRow pareto_row_from_record(const std::string& record) {
+  const nlohmann::json j = nlohmann::json::parse(record);
+  ParetoRow r;
+  r.sensor = j.at("sensor"), r.setting = j.at("setting"), r.harness = j.at("harness");
+  r.args = j.at("args").get<std::vector<std::string>>();
+  r.frames = j.at("frames"), r.wall_s = j.at("wall_s"), r.cpu_s = j.at("cpu_s");
+  r.error_m = j.at("error_m").is_number() ? j.at("error_m").get<double>() : NAN;
+  r.points = j.at("points"), r.note = j.at("note");
+  return r;
+}
+
+std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir, SweepJournal* journal) {
   std::vector<ParetoRow> rows;
   int i = 0;
   const auto all = settings(quick);
   for (const Setting& s : all) {
+    if (journal && journal->done().count(i)) {
+      progress(fmt::format("pareto {}/{}: {} {} (from the journal)", ++i, all.size(), s.sensor, s.setting));
+      rows.push_back(pareto_row_from_record(journal->done().at(i - 1)));
+      continue;
+    }
     ParetoRow r;
     r.sensor = s.sensor, r.setting = s.setting, r.harness = s.harness;
     r.args = {"--scene", scene_path(s.scene)};
@@ -76,6 +99,7 @@ std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir) {
     r.error_m = e.is_number() ? e.get<double>() : NAN;
     for (const char* key : {"points_detected", "detected"})
       if (j.contains(key) && j[key].is_number()) r.points = j[key].get<long long>();
+    if (journal) journal->append(i - 1, pareto_row_record(r));
     rows.push_back(r);
   }
   return rows;

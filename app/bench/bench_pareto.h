@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/sweep_journal.h"
+
 namespace rangesim::app::bench {
 
 struct ParetoRow {
@@ -23,8 +25,12 @@ struct ParetoRow {
   std::string note;
 };
 
-// Runs every setting; scratch_dir receives the children's output folders.
-std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir);
+// Runs every setting; scratch_dir receives the children's output folders. With a journal, rows
+// it holds (by setting index) are taken from it and each new row is appended when it finishes.
+std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir, SweepJournal* journal = nullptr);
+// One row as a journal record and back (exact: doubles round-trip through JSON).
+std::string pareto_row_record(const ParetoRow& r);
+ParetoRow pareto_row_from_record(const std::string& record);
 void mark_pareto(std::vector<ParetoRow>& rows);
 std::string pareto_markdown(const std::vector<ParetoRow>& rows);
 std::string pareto_csv(const std::vector<ParetoRow>& rows);

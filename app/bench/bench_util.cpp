@@ -10,18 +10,13 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/sweep_journal.h"  // shell_quote
 #include "core/user_error.h"
 
 namespace rangesim::app::bench {
 
 namespace {
 Clock::time_point g_start = Clock::now();
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 }  // namespace
 
 void set_progress_start(Clock::time_point t0) { g_start = t0; }

@@ -1,11 +1,8 @@
 // rangesim evaluate --trials / --target-error: the golden evaluation of the grid, then a Monte
 // Carlo sweep of the clock-level kernels over its detectable points, every accuracy value with
 // its 95% CI; journaled so that a killed or interrupted sweep resumes where it stopped.
-#include <atomic>
 #include <cerrno>
 #include <cmath>
-#include <csignal>
-#include <signal.h>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -31,26 +28,7 @@ namespace rangesim::app {
 
 namespace {
 
-constexpr int kExitBudget = 4;        // --max-seconds exceeded; journal kept
-constexpr int kExitInterrupted = 130; // SIGINT; journal kept
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_sigint(int) { g_interrupted.store(true); }
-
-// Installs the SIGINT handler for the sweep, restores the previous one on destruction.
-class SigintGuard {
- public:
-  SigintGuard() {
-    struct sigaction sa {};
-    sa.sa_handler = on_sigint;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_);
-  }
-  ~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
-
- private:
-  struct sigaction old_ {};
-};
+constexpr int kExitBudget = 4;  // --max-seconds exceeded; journal kept (kExitInterrupted: Ctrl-C)
 
 void progress(long long done, long long total, long long trials, double elapsed, double left) {
   static int last_quarter = -1;
@@ -63,15 +41,6 @@ void progress(long long done, long long total, long long trials, double elapsed,
     std::fprintf(stderr, "evaluate --trials: %lld/%lld points, %lld trials, %.1f s, %s left\n", done, total, trials,
                  elapsed, std::isfinite(left) ? fmt::format("~{:.0f} s", left).c_str() : "?");
   }
-}
-
-std::string shell_quote(const std::string& s) {
-  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./:=+,") ==
-                        std::string::npos)
-    return s;
-  std::string r = "'";
-  for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return r + "'";
 }
 
 // The command that continues this sweep: the same options with --resume.
@@ -128,21 +97,6 @@ mc::McSweepOptions sweep_options(const EvaluateOptions& opt) {
   return o;
 }
 
-// Staging folders (.staging-<pid>) left by a killed run whose process is gone: removed when the
-// sweep resumes, so the finished folder holds only the outputs.
-void remove_stale_staging(const std::string& dir) {
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind(".staging-", 0) != 0 || name == ".staging-sweep") continue;
-    const std::string digits = name.substr(9);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    const long pid = std::stol(digits);
-    if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-      std::filesystem::remove_all(e.path(), ec);
-  }
-}
-
 }  // namespace
 
 int run_evaluate_mc(const EvaluateOptions& opt) {
@@ -165,8 +119,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
       points.push_back({static_cast<long long>(i), ev.points[i].signal, ev.points[i].background});
 
   SigintGuard sigint;
-  g_interrupted = false;
-  sopt.stop = &g_interrupted;
+  sopt.stop = &sigint_flag();
   sopt.progress = &progress;
   const mc::McSweepResult r = mc::run_mc_sweep(*model, points, sopt, &journal);
   if (!r.complete) {
