@@ -9,12 +9,14 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <random>
 #include <systemc>
 #include <vector>
 
 #include "Vls_demodulation_sequencer.h"
 #include "core/ls_demodulation_config.h"
+#include "golden/ls_demodulation/front_end.h"
 #include "systemc/ls_demodulation/demod_sensor_kernel.h"
 #include "tb/cosim_scoreboard.h"
 #include "tb/ls_demodulation_cosim.h"
@@ -149,16 +151,46 @@ class DemodCosimTop : public sc_core::sc_module {
         sb_.expect("detections", ff, r2, -1, cycle_, k.detections, a.detections);
         const double centre = a.detections ? a.centre_sum_px / a.detections : 0.0;
         sb_.expect("centre_px", ff, r2, -1, cycle_, k.centre_px(), centre);
+        if (noise_free(o_)) {
+          if (f == 0) golden_.push_back(golden_centre_px(static_cast<int>(rr)));
+          if (golden_[rr]) {
+            ++r_.golden_checks;
+            if (!(a.detections > 0 && centre == *golden_[rr]))
+              sb_.mismatch("golden_centre_px", ff, r2, -1, cycle_, std::to_string(*golden_[rr]),
+                           a.detections ? std::to_string(centre) : std::string("no detection"));
+          }
+        }
       }
     }
   }
 
  private:
+  // Odd seeds run noise-free, so the centres can also be checked against the golden model.
+  static bool noise_free(const CosimOptions& o) { return o.seed % 2 == 1; }
   static DemodKernelOptions options(const CosimOptions& o) {
     DemodKernelOptions k;
     k.event_skipping = false;  // cycle by cycle
     k.seed = o.seed;
+    if (noise_free(o)) k.noise = DemodNoiseSwitches::none();
     return k;
+  }
+
+  // Golden centre of row r, noise-free: the pixels whose correlator output D reaches the
+  // threshold (thesis eq. for the demodulating pixel, golden/ls_demodulation/front_end.h), centre
+  // (first + last) / 2; every decision sees the same D. Empty when nothing activates or a pixel
+  // sits within rounding of the threshold (golden and kernel agree to ~1e-9 of the swing there).
+  std::optional<double> golden_centre_px(int r) const {
+    const LsDemodulationConfig& c = s_.cfg;
+    int first = -1, last = -1;
+    for (int col = 0; col < c.pixel.columns; ++col) {
+      const std::size_t i = static_cast<std::size_t>(r) * c.pixel.columns + col;
+      const golden::CorrelatorOutput g = golden::correlate_periodic(
+          c, golden::pixel_segments(c, s_.stim.beam_A[i], s_.stim.background_A[i]), c.correlator.cycles);
+      if (std::fabs(g.diff_V - c.comparator.threshold_V) <= 1e-10 + 1e-9 * std::fabs(g.plus_V)) return std::nullopt;
+      if (g.diff_V >= c.comparator.threshold_V) last = col, first = first < 0 ? col : first;
+    }
+    if (first < 0) return std::nullopt;
+    return 0.5 * (first + last);
   }
 
   void stimulus() {
@@ -307,6 +339,7 @@ class DemodCosimTop : public sc_core::sc_module {
   std::vector<int> prev_det_;       // kernel detections per row so far (this frame)
   std::vector<std::vector<RtlRow>> rtl_rows_;                 // [frame][row] from the RTL
   std::vector<std::vector<DemodRowResult>> kernel_rows_;      // [frame][row] kernel results
+  std::vector<std::optional<double>> golden_;                 // [row] golden centre (noise-free runs)
   std::uint64_t cycle_ = 0;
 };
 

@@ -5,7 +5,8 @@
 // reset, decision latch, row, search start and the address stream; per row and decision: found,
 // left and right address; per frame and row: the centre (mean of (left + right) / 2 over the
 // detecting decisions) rebuilt from the RTL against the kernel's frame result.
-// Faults: dropped_row (the scoreboard misses one RTL row result), address_bit_flip.
+// Odd seeds run noise-free, and then each row's centre is also checked against the golden
+// model (golden_checks). Faults: dropped_row (the scoreboard misses one RTL row result), address_bit_flip.
 // Elaborates SystemC: one run per process.
 #include "tb/cosim_target.h"
 
