@@ -56,35 +56,43 @@ OperatingPoint evaluate_point(const LsConventionalConfig& cfg, double signal_V, 
   p.largest_step_px = q.largest_step_px;
   p.detected_fraction = q.detected_fraction;
 
-  // Noise part: midpoint quadrature over the spot positions x0, accuracy being the rms error
-  // given detection with the spot uniform over the pixel (what a Monte Carlo measures), so each
-  // position weighs by its P(detect). The noise-free part is known exactly over the noise-free
-  // detected part D (length f), so the quadrature only carries the change noise makes to it (a
-  // control variate):
-  //   num = f rms_q^2 + mean_x0[p (bias^2 + Var) - 1_D e_nf^2],  den = f + mean_x0[p - 1_D],
-  // exact in the noise-free limit (p = 1_D, bias = e_nf, Var = 0). Near the detection edge noise
-  // detects where the noise-free readout does not (f -> 0), and those positions count too.
+  // Noise part: midpoint quadrature over the spot positions. The noise-free mean square is known
+  // exactly, so the quadrature only carries the change noise makes to it (a control variate):
+  //   accuracy^2 = rms_q^2 + mean_x0[(E[xhat] - x0)^2 + Var - e_nf(x0)^2],
+  // which is exact in the noise-free limit and removes most of the quadrature error of the steps.
+  // At the detection edge the noise-free readout may detect at none of the positions while noise
+  // does (P(detect) ~ 0.3-0.5 there): then the accuracy is the rms error given detection with the
+  // spot uniform over the pixel, mean_x0[p (bias^2 + Var)] / mean_x0[p] (what a Monte Carlo
+  // measures; before, this case reported the noise-free 0).
   const int P = std::max(1, cfg.grid.subpixel_points);
   ActivationCache cache;
-  double sum_var = 0, sum_num = 0, sum_den = 0, sum_p = 0;
+  double sum_var = 0, sum_delta = 0, sum_pe = 0, sum_p = 0, sum_pvar = 0;
+  int n = 0;
   p.p_detect = 1;
   for (int i = 0; i < P; ++i) {
     const double x0 = row.centre_pixel - 0.5 + (i + 0.5) / P;
     const PositionMoments m = position_moments(row, x0, &cache);
     p.p_detect = std::min(p.p_detect, m.p_detect);
+    if (!(m.p_detect > 0)) continue;
+    const double bias = m.mean_px - x0;
+    sum_pe += m.p_detect * (bias * bias + m.var_px2), sum_p += m.p_detect, sum_pvar += m.p_detect * m.var_px2;
     const CentreEstimate nf = noise_free_estimate(row, x0);
-    const double in_d = nf.detected ? 1.0 : 0.0, e_nf = nf.detected ? nf.centre_px - x0 : 0.0;
-    const double pd = m.p_detect > 0 ? m.p_detect : 0.0;
-    const double bias = pd > 0 ? m.mean_px - x0 : 0.0, var = pd > 0 ? m.var_px2 : 0.0;
-    sum_var += pd * var;
-    sum_p += pd;
-    sum_num += pd * (bias * bias + var) - in_d * e_nf * e_nf;
-    sum_den += pd - in_d;
+    if (!nf.detected) continue;
+    const double e_nf = nf.centre_px - x0;
+    sum_var += m.var_px2;
+    sum_delta += bias * bias + m.var_px2 - e_nf * e_nf;
+    ++n;
   }
-  const double f = q.detected_fraction;
-  const double num = f * q.rms_px * q.rms_px + sum_num / P, den = f + sum_den / P;
-  if (sum_p > 0) p.noise_std_px = std::sqrt(sum_var / sum_p);
-  p.accuracy_px = den > 0 ? std::sqrt(std::max(0.0, num / den)) : q.rms_px;
+  if (n > 0) {
+    p.noise_std_px = std::sqrt(sum_var / n);
+    p.accuracy_px = std::sqrt(std::max(0.0, q.rms_px * q.rms_px + sum_delta / n));
+  } else if (sum_p > 0) {
+    p.noise_only_detections = true;
+    p.noise_std_px = std::sqrt(sum_pvar / sum_p);
+    p.accuracy_px = std::sqrt(sum_pe / sum_p);
+  } else {
+    p.accuracy_px = q.rms_px;
+  }
   p.accuracy_m = p.accuracy_px * range_per_px_m(cfg.optics, cfg.pixel.pitch_m, cfg.optics.distance_m);
   return p;
 }

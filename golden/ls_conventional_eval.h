@@ -37,6 +37,9 @@ struct OperatingPoint {
   double detected_fraction = 0;     // part of the pixel where the noise-free readout detects the spot
   bool noise_exact = true;          // false: noise moments by the delta method (adc_bits > 1), approximate
   const char* noise_method = "exact";  // "exact" or "delta"
+  // The accuracy comes from noise-only detections: the noise-free readout detects at none of the
+  // spot positions averaged (the detection edge), so it is the P(detect)-weighted rms error.
+  bool noise_only_detections = false;
 };
 
 struct DynamicRange {
