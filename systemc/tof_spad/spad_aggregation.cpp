@@ -15,6 +15,8 @@ constexpr std::uint64_t kAggregateSalt = 0x4147475245474154ULL;  // "AGGREGAT"
 // Echoes of cycles more than this many periods away reach a cycle with mass erfc(> 2 P / sigma):
 // zero in double precision for any pulse shorter than a period.
 constexpr int kSpill = 2;
+// Up to this many detections in a bin are split one by one (uniform draws) instead of by binomials.
+constexpr long long kFewDraws = 32;
 
 double gauss_mass(double a, double b, double centre, double sigma) {
   if (!(sigma > 0)) return (centre >= a && centre < b) ? 1.0 : 0.0;
@@ -31,9 +33,20 @@ double more_than_one_given_one(double lam) {
   return std::min(1.0, std::exp(-lam) * tail / p1);
 }
 
+// Binomial(n, p): by inversion (one uniform, the pmf recurrence from k = 0) when n min(p, 1-p) < 30,
+// else libstdc++'s rejection sampler. Both exact up to rounding; inversion avoids the rejection
+// set-up (lgamma, logs) that dominated the aggregated group's time.
 long long binomial(pcg32& rng, long long n, double p) {
   if (n <= 0 || !(p > 0)) return 0;
   if (p >= 1) return n;
+  if (p > 0.5) return n - binomial(rng, n, 1 - p);
+  if (static_cast<double>(n) * p < 30) {
+    const double u = uniform_open01(rng), r = p / (1 - p);
+    double pk = std::exp(static_cast<double>(n) * std::log1p(-p)), cum = pk;
+    long long k = 0;
+    while (cum < u && k < n) pk *= r * static_cast<double>(n - k) / static_cast<double>(k + 1), cum += pk, ++k;
+    return k;
+  }
   return std::binomial_distribution<long long>(n, p)(rng);
 }
 long long poisson(pcg32& rng, double mean) {
@@ -112,27 +125,63 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
     classes.push_back({1, static_cast<int>(std::max<long long>(-kSpill, -c)), static_cast<int>(std::min<long long>(kSpill, L - 1 - c)), c == 0});
   }
   double after_mean = 0;  // arrivals after the detecting bin, summed over detecting cycles
+  // Echo mass per bin and source offset d, computed once (bins more than 40 sigma away get 0).
+  std::vector<std::vector<double>> echo(2 * kSpill + 1, std::vector<double>(static_cast<size_t>(np), 0.0));
+  for (int d = -kSpill; d <= kSpill; ++d) {
+    const double centre = d * period_s + r.round_trip_s;
+    for (int i = 0; i < np; ++i) {
+      const double a = edge[static_cast<size_t>(i)], b = edge[static_cast<size_t>(i) + 1];
+      if (sigma > 0 && (b < centre - 40 * sigma || a > centre + 40 * sigma)) continue;
+      echo[static_cast<size_t>(d + kSpill)][static_cast<size_t>(i)] = gauss_mass(a, b, centre, sigma);
+    }
+  }
+  std::vector<long long> x_of(static_cast<size_t>(np));
   for (const Class& k : classes) {
     double lam_total = 0;
     for (int i = 0; i < np; ++i) {
       const double a = edge[static_cast<size_t>(i)], b = edge[static_cast<size_t>(i) + 1];
       double s = 0;
-      for (int d = k.dlo; d <= k.dhi; ++d) s += gauss_mass(a, b, d * period_s + r.round_trip_s, sigma);
+      for (int d = k.dlo; d <= k.dhi; ++d) s += echo[static_cast<size_t>(d + kSpill)][static_cast<size_t>(i)];
       lam[static_cast<size_t>(i)] = cpt * (uniform_Hz * (b - a) + mu * s);
       lam_total += lam[static_cast<size_t>(i)];
     }
-    // Multinomial over (bin, then column) + "no detection" by sequential binomials.
-    long long n_rem = k.cycles;
-    double p_rem = 1, before = 0, after_total = lam_total;
-    for (int i = 0; i < np && n_rem > 0; ++i) {
+    // Detections per bin: multinomial over bins + "no detection". One cycle: one categorical draw
+    // by inversion; many: sequential binomials.
+    std::fill(x_of.begin(), x_of.end(), 0);
+    if (k.cycles == 1) {
+      const double u = uniform_open01(rng);
+      double before = 0, cum = 0;
+      for (int i = 0; i < np; ++i) {
+        const double li = lam[static_cast<size_t>(i)];
+        cum += std::exp(-before) * -std::expm1(-li);
+        before += li;
+        if (u < cum) { x_of[static_cast<size_t>(i)] = 1; break; }
+      }
+    } else {
+      long long n_rem = k.cycles;
+      double p_rem = 1, before = 0;
+      for (int i = 0; i < np && n_rem > 0; ++i) {
+        const double li = lam[static_cast<size_t>(i)];
+        const double pi = std::exp(-before) * -std::expm1(-li);
+        before += li;
+        const long long x = p_rem > 0 ? binomial(rng, n_rem, pi / p_rem) : 0;
+        n_rem -= x, p_rem -= pi;
+        x_of[static_cast<size_t>(i)] = x;
+      }
+    }
+    // Each bin's detections: to the columns in equal shares (or overflow), and the other arrivals
+    // of the detecting cycles: more in the same bin (zero-truncated Poisson - 1), then the later bins.
+    double after_total = lam_total;
+    for (int i = 0; i < np; ++i) {
       const double li = lam[static_cast<size_t>(i)];
-      const double pi = std::exp(-before) * -std::expm1(-li);
       after_total -= li;
-      before += li;
-      const long long x = p_rem > 0 ? binomial(rng, n_rem, pi / p_rem) : 0;
-      n_rem -= x, p_rem -= pi;
+      const long long x = x_of[static_cast<size_t>(i)];
       if (x == 0) continue;
-      if (i < nc) {
+      if (i < nc && x <= kFewDraws) {
+        // Few detections: each to a uniformly drawn column (cheaper than cpt - 1 binomials).
+        for (long long m = 0; m < x; ++m)
+          ++g.events[std::min(static_cast<size_t>(uniform_open01(rng) * cpt), static_cast<size_t>(cpt) - 1)][static_cast<size_t>(i)];
+      } else if (i < nc) {
         long long left = x;
         for (int c = 0; c < cpt; ++c) {
           const long long y = c + 1 == cpt ? left : binomial(rng, left, 1.0 / (cpt - c));
@@ -141,8 +190,12 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
       } else {
         g.overflows += x;
       }
-      // Arrivals of the detecting cycles besides the detection: more in the same bin, then the later bins.
-      const long long more = binomial(rng, x, more_than_one_given_one(li));
+      const double q = more_than_one_given_one(li);
+      long long more = 0;
+      if (x <= kFewDraws)
+        for (long long m = 0; m < x; ++m) more += uniform_open01(rng) < q;
+      else
+        more = binomial(rng, x, q);
       long long extra = 0;
       for (long long m = 0; m < more; ++m) extra += poisson_at_least_two(rng, li) - 1;
       g.avalanches += x + extra;
