@@ -79,7 +79,7 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
 }
 
 // Journal indices of the figure groups (Pareto rows use 0, 1, ...).
-constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002;
+constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002, kJournalSpad = 1003;
 
 json mc_hook_json(const McBenchHookResult& m) {
   return {{"mc_vs_bare_rng", m.mc_vs_bare_rng ? json(*m.mc_vs_bare_rng) : json(nullptr)},
@@ -128,13 +128,15 @@ int run_bench(const BenchOptions& opt) {
   };
 
   std::vector<ParetoRow> pareto;
-  json ls, lockin, mc_json;
+  json ls, lockin, spad, mc_json;
   try {
     pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
     if (sigint_flag()) return interrupted();
     ls = group(kJournalLs, [&] { return bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0}); });
     if (sigint_flag()) return interrupted();
     lockin = group(kJournalLockin, [&] { return bench_aggregation_lockin(opt.quick); });
+    if (sigint_flag()) return interrupted();
+    spad = group(kJournalSpad, [&] { return bench_aggregation_spad(opt.quick); });
     if (sigint_flag()) return interrupted();
     mc_json = group(kJournalMc, [&] {
       progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
@@ -169,9 +171,9 @@ int run_bench(const BenchOptions& opt) {
     details[k] = ls[k];
   details["aggregated_vs_per_clock_lockin"] = lockin;
   checks["lockin_aggregated_statistically_identical"] = lockin["statistically_identical"].get<bool>();
-  details["aggregated_vs_per_clock_spad"] = json{
-      {"value", nullptr},
-      {"note", "not measured: tof-spad has no aggregated laser-cycle path (dead time and afterpulses couple successive laser cycles; see docs/bench.md)"}};
+  details["aggregated_vs_per_clock_spad"] = spad;
+  checks["spad_aggregated_statistically_identical"] = spad["statistically_identical"].get<bool>();
+  checks["spad_per_clock_equals_per_cycle"] = spad["per_clock_equals_per_cycle"].get<bool>();
   details["mc_vs_bare_rng"] = json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
   details["threads2_vs_1"] = json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
   if (!mc.details.is_null()) details["monte_carlo"] = mc.details;

@@ -12,4 +12,12 @@ namespace rangesim::app::bench {
 // tap statistics.
 nlohmann::json bench_aggregation_lockin(bool quick);
 
+// tof-spad: the L laser cycles of each TDC group as one multinomial draw (TofSpadKernelOptions::
+// aggregate) vs the same frame with every TDC clock cycle ticked (event_skipping off), on the
+// preset edited to where aggregation is exact (no afterpulse, dead time 0, no jitter, 20 ns TDC
+// range, 4 ns busy, 1 ms integration). Keys as for lock-in; statistically_identical from the
+// stated test against the per-cycle path on many groups, per_clock_equals_per_cycle from the
+// timed frames.
+nlohmann::json bench_aggregation_spad(bool quick);
+
 }  // namespace rangesim::app::bench

@@ -143,6 +143,9 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   systemc::spad::TofSpadKernelOptions kopt;
   kopt.seed = opt.seed;
   kopt.event_skipping = !opt.tick;  // per clock: every TDC cycle evaluated (identical histograms, tested)
+  // Laser cycles drawn at once where they are independent (systemc/tof_spad/spad_aggregation.h); the
+  // preset's dead time and afterpulses make them dependent, so its default run is per cycle.
+  kopt.aggregate = !opt.tick && !opt.no_aggregate;
   if (opt.noise_free) kopt.noise = systemc::spad::SpadNoise::none();
   const systemc::spad::TofSpadKernel kernel(cfg, array_rows, array_columns, kopt);
   systemc::spad::PixelSelection sel;
@@ -163,7 +166,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   const golden::FrameTiming gt = golden::frame_timing_tof_spad(params);
   std::vector<std::vector<double>> sum(static_cast<size_t>(sc.rows), std::vector<double>(static_cast<size_t>(sc.columns), 0.0));
   std::vector<std::vector<int>> cnt(static_cast<size_t>(sc.rows), std::vector<int>(static_cast<size_t>(sc.columns), 0));
-  long long points_total = 0, detected = 0, photons = 0, avalanches = 0;
+  long long points_total = 0, detected = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;
   RangeErrorStats err_stats;
   bool timing_matches = true;
   std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events\n";
@@ -173,6 +176,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
     timing_matches = timing_matches && f.cycles == gt.frame_cycles && f.phase_cycles[0] == gt.phases[0].cycles &&
                      f.phase_cycles[1] == gt.phases[1].cycles;
     photons += f.photons, avalanches += f.avalanches;
+    groups_agg += f.groups_aggregated, groups_cyc += f.groups_per_cycle;
     for (const auto& p : f.pixels) {
       const double truth = sc.distance_at(p.row, p.column);
       long long ev = 0;
@@ -250,6 +254,12 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
       {"simulation_wall_time_s", sim_wall_s},
       {"photons_per_s", static_cast<double>(photons) / sim_wall_s},
       {"sc_errors", res.sc_errors},
+      {"aggregation",
+       {{"requested", kopt.aggregate},
+        {"path", groups_agg == 0 ? "per_cycle" : groups_cyc == 0 ? "aggregated" : "mixed"},
+        {"groups_aggregated", groups_agg},
+        {"groups_per_cycle", groups_cyc},
+        {"blocker", kernel.aggregation_blocker()}}},
   };
   err_stats.to_json(j, false);
   out.write("range_map.csv", range_csv);
@@ -273,7 +283,9 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   report.points_line = fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), detected);
   report.error = err_stats;
   report.wall_time_s = wall_s;
-  report.wall_note = fmt::format("{:.3g} photons/s simulated", static_cast<double>(photons) / sim_wall_s);
+  report.wall_note = fmt::format("{:.3g} photons/s simulated; laser cycles: {} group rows aggregated, {} per cycle{}",
+                                 static_cast<double>(photons) / sim_wall_s, groups_agg, groups_cyc,
+                                 kopt.aggregate && !kernel.aggregation_blocker().empty() ? " (" + kernel.aggregation_blocker() + ")" : "");
   return finish_simulate(opt, out, trace, j, warning, report);
 }
 

@@ -7,6 +7,7 @@
 #include "core/physics.h"
 #include "golden/tof_spad/pile_up.h"
 #include "golden/tof_spad/point_model.h"
+#include "systemc/tof_spad/spad_aggregation.h"
 #include "systemc/tof_spad/tdc_kernel.h"
 
 namespace rangesim::systemc::spad {
@@ -24,6 +25,15 @@ TofSpadKernel::TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, co
   block_overflow_bins_ = in.block_overflow_bins;
   laser_cycles_ = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
   cycles_per_word_ = static_cast<long long>(std::ceil(clock_Hz() / cfg.histogram.readout_word_rate_Hz - 1e-9));
+  aggregation_blocker_ = spad_aggregation_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
+}
+
+GroupHistogram TofSpadKernel::simulate_group_aggregated(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+  const int cpt = cfg_.tdc.columns_per_tdc;
+  std::vector<PixelRates> px;
+  for (int k = 0; k < cpt; ++k) px.push_back(rates(row, group * cpt + k));
+  GroupHistogram g = aggregate_spad_group(cfg_, opt_.noise, bins_, px, laser_cycles_, opt_.seed, frame, row, group * cpt);
+  return g;
 }
 
 int TofSpadKernel::phase_bin(double phase_s) const {
@@ -39,6 +49,11 @@ int TofSpadKernel::phase_bin(double phase_s) const {
 
 GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const {
   if (!opt_.event_skipping) return simulate_group_ticked(frame, row, group, rates);
+  if (opt_.aggregate && aggregation_blocker_.empty()) {
+    std::vector<PixelRates> pr;
+    for (int k = 0; k < cfg_.tdc.columns_per_tdc; ++k) pr.push_back(rates(row, group * cfg_.tdc.columns_per_tdc + k));
+    if (spad_group_aggregatable(pr)) return simulate_group_aggregated(frame, row, group, rates);
+  }
   const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
   const double period_s = 1.0 / cfg_.laser.repetition_rate_Hz;
   std::vector<SpadPixelKernel> px;
@@ -157,6 +172,7 @@ FrameResult TofSpadKernel::run_frame(std::uint64_t frame, const PixelSelection& 
         const GroupHistogram g = simulate_group(frame, row, gi, rates);
         starts = g.starts;
         f.avalanches += g.avalanches, f.photons += g.photons;
+        ++(g.aggregated ? f.groups_aggregated : f.groups_per_cycle);
         for (int k = 0; k < cpt; ++k) f.pixels.push_back(make_pixel(row, gi * cpt + k, g, k));
       }
     }

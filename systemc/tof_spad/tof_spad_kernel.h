@@ -21,6 +21,7 @@ struct TofSpadKernelOptions {
   std::uint64_t seed = 1;       // key of the noise streams
   SpadNoise noise;              // noise switches
   bool event_skipping = true;   // false: the TDC group is clocked every cycle (simulate_group_ticked)
+  bool aggregate = false;       // true: groups whose laser cycles are independent drawn at once (spad_aggregation.h)
 };
 
 // Histogram memory of one TDC group after one row integration.
@@ -32,6 +33,7 @@ struct GroupHistogram {
   long long lost_busy = 0;                     // avalanches while the TDC was busy/stopped
   long long avalanches = 0;                    // all avalanches of the group
   long long photons = 0;                       // photon + dark arrivals of the group (incl. lost)
+  bool aggregated = false;                     // drawn by aggregate_spad_group (else cycle by cycle)
 };
 
 // One pixel's result in a frame.
@@ -50,6 +52,7 @@ struct FrameResult {
   std::vector<long long> phase_cycles;      // laser_cycles, histogram_readout
   std::vector<PixelResult> pixels;          // simulated pixels, row-major
   long long avalanches = 0, photons = 0;    // over the simulated pixels
+  long long groups_aggregated = 0, groups_per_cycle = 0;  // which path ran, per simulated TDC group
 };
 
 // Pixel subset: rows and TDC groups (columns [g cpt, (g+1) cpt)) simulated; the other rows only
@@ -74,6 +77,11 @@ class TofSpadKernel {
   // code falls in that cycle are arbitrated. Same streams, same draws: tests require a histogram
   // identical to the event-driven one.
   GroupHistogram simulate_group_ticked(std::uint64_t frame, int row, int group, const RateSource& rates) const;
+  // The group's L laser cycles at once (spad_aggregation.h); simulate_group calls it when
+  // options.aggregate is on, event skipping on, aggregation_blocker() empty and the group's pixels identical.
+  GroupHistogram simulate_group_aggregated(std::uint64_t frame, int row, int group, const RateSource& rates) const;
+  // Why this configuration needs the per-cycle path (empty: aggregation exact for identical pixels).
+  const std::string& aggregation_blocker() const { return aggregation_blocker_; }
   // Estimator of the golden model on one pixel's histogram.
   std::optional<double> estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const;
   PixelResult make_pixel(int row, int column, const GroupHistogram& g, int index) const;
@@ -105,6 +113,7 @@ class TofSpadKernel {
   double share_;
   long long laser_cycles_, cycles_per_word_;
   int block_event_bins_, block_overflow_bins_;
+  std::string aggregation_blocker_;
 };
 
 }  // namespace rangesim::systemc::spad

@@ -43,6 +43,7 @@ void TofSpadSensor::sequencer() {
           groups.push_back(kernel_.simulate_group(static_cast<std::uint64_t>(fr), row, gi, rates_));
           starts = groups.back().starts;
           f.avalanches += groups.back().avalanches, f.photons += groups.back().photons;
+          ++(groups.back().aggregated ? f.groups_aggregated : f.groups_per_cycle);
         }
       }
       // Event skipping: the integration is one wait of its whole length.

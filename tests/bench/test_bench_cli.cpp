@@ -29,14 +29,15 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
     if (j[key].is_null()) EXPECT_TRUE(j["details"][key].contains("note")) << key << ": a missing figure says why";
   }
   for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel",
-                          "aggregated_vs_per_clock_lockin", "realtime_factor"}) {
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "realtime_factor"}) {
     ASSERT_TRUE(j[key].is_number()) << key << " is measured by the bench itself";
     EXPECT_GT(j[key].get<double>(), 0.0) << key;
   }
   // The identity checks inside the bench.
   EXPECT_TRUE(j["checks_passed"].get<bool>()) << j["checks"].dump();
   for (const char* check : {"sparse_equals_dense", "rtl_equals_model", "systemc_equals_kernel",
-                            "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical"}) {
+                            "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical",
+                            "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle"}) {
     ASSERT_TRUE(j["checks"].contains(check)) << check;
     EXPECT_TRUE(j["checks"][check].get<bool>()) << check;
   }
@@ -90,6 +91,22 @@ TEST(SkippingSwitches, NoEventSkipTicksWithIdenticalResult) {
 TEST(SkippingSwitches, NoAggregateIsRefusedWithoutAnAggregatedPath) {
   const auto e = simulate("ls-conventional --scene '" + scene("plane.toml") + "' --kernel-only --no-aggregate", 2);
   EXPECT_NE(e["err"].get<std::string>().find("--no-aggregate"), std::string::npos);
+}
+
+// tof-spad: the preset's dead time, afterpulses, jitter and busy time make its laser cycles
+// dependent, so the default run reports the per-cycle path and says why, and --no-aggregate gives
+// the same output (the aggregated path itself: SpadAggregation.*).
+TEST(SkippingSwitches, SpadPresetRunsPerCycleAndNoAggregateChangesNothing) {
+  const std::string s = "tof-spad --scene '" + scene("tof-spad-plane.toml") + "' --kernel-only";
+  const auto a = simulate(s), b = simulate(s + " --no-aggregate");
+  EXPECT_TRUE(a["aggregation"]["requested"].get<bool>());
+  EXPECT_FALSE(b["aggregation"]["requested"].get<bool>());
+  EXPECT_EQ(a["aggregation"]["path"], "per_cycle");
+  EXPECT_EQ(b["aggregation"]["path"], "per_cycle");
+  EXPECT_NE(a["aggregation"]["blocker"].get<std::string>().find("afterpulses"), std::string::npos);
+  EXPECT_GT(a["aggregation"]["groups_per_cycle"].get<long long>(), 0);
+  EXPECT_EQ(a["range_error_rms_m"], b["range_error_rms_m"]);
+  EXPECT_EQ(a["avalanches_simulated"], b["avalanches_simulated"]);
 }
 
 }  // namespace
