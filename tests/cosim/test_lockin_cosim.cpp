@@ -10,38 +10,18 @@
 #include <iterator>
 #include <string>
 
+#include "cosim_test_util.h"
 #include "tb/cosim_scoreboard.h"
 #include "tb/lockin_gate_generator_cosim.h"
 #include "tb/lockin_tdc_cosim_targets.h"
 
 using rangesim::tb::CosimOptions;
 using rangesim::tb::CosimReport;
-using rangesim::tb::CosimScoreboard;
 
 namespace {
 
-bool claim_elaboration() {
-  static bool used = false;
-  const bool first = !used;
-  used = true;
-  return first;
-}
-#define REQUIRE_FRESH_ELABORATION() \
-  if (!claim_elaboration()) GTEST_SKIP() << "one SystemC elaboration per process: run alone"
-
-std::string text(const CosimReport& r) {
-  std::string s;
-  for (const auto& m : r.first_mismatches) s += CosimScoreboard::format(m) + "\n";
-  return s;
-}
-
-void print_summary(const CosimReport& r) {
-  std::printf("%s: %llu cycles, %llu transactions, %llu golden checks, %llu mismatches\n",
-              r.target.c_str(), static_cast<unsigned long long>(r.cycles),
-              static_cast<unsigned long long>(r.transactions),
-              static_cast<unsigned long long>(r.golden_checks),
-              static_cast<unsigned long long>(r.mismatches));
-}
+using rangesim::tb::test::print_summary;
+using rangesim::tb::test::text;
 
 void expect_clean(const CosimReport& r, std::uint64_t cycles, std::uint64_t min_transactions) {
   print_summary(r);

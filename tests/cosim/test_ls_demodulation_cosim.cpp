@@ -5,36 +5,21 @@
 #include <cstdio>
 #include <string>
 
+#include "cosim_test_util.h"
 #include "tb/cosim_scoreboard.h"
 #include "tb/ls_demodulation_cosim.h"
 
 using rangesim::tb::CosimOptions;
 using rangesim::tb::CosimReport;
-using rangesim::tb::CosimScoreboard;
 using rangesim::tb::run_ls_demodulation_cosim;
 
 namespace {
 
-bool claim_elaboration() {
-  static bool used = false;
-  const bool first = !used;
-  used = true;
-  return first;
-}
-#define REQUIRE_FRESH_ELABORATION() \
-  if (!claim_elaboration()) GTEST_SKIP() << "one SystemC elaboration per process: run alone"
-
-std::string text(const CosimReport& r) {
-  std::string s;
-  for (const auto& m : r.first_mismatches) s += CosimScoreboard::format(m) + "\n";
-  return s;
-}
+using rangesim::tb::test::print_summary;
+using rangesim::tb::test::text;
 
 void expect_clean(const CosimReport& r, std::uint64_t cycles) {
-  std::printf("%s: %llu cycles, %llu transactions, %llu mismatches\n", r.target.c_str(),
-              static_cast<unsigned long long>(r.cycles),
-              static_cast<unsigned long long>(r.transactions),
-              static_cast<unsigned long long>(r.mismatches));
+  print_summary(r);
   EXPECT_GE(r.cycles, cycles);
   EXPECT_EQ(r.mismatches, 0u) << text(r);
   EXPECT_EQ(r.rtl_assertions_failed, 0);
