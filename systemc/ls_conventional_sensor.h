@@ -6,9 +6,9 @@
 //          |--search_start------------------------------------------->  AddressSearch[r]
 //          |--pix_reset (clear)---------------------------------------> -> CentreProcessor[r]
 //
-// The rows' searches and centre processors are one module with one clocked process
-// (systemc/row_readout_array.h) rather than 2 x 365 modules: the same kernels and per-row
-// signals, at a fraction of the scheduler's cost.
+// The rows' searches and centre processors are one module with one clocked process and one
+// vector-payload output (systemc/row_readout_array.h) rather than 2 x 365 modules with per-row
+// signals: the same kernels at a fraction of the scheduler's and the elaboration's cost.
 //
 // The module counts cycles by phase, collects one FrameResult per frame access at frame_done
 // (the centre processors' outputs during the last cycle), checks the schedule (no search start
@@ -66,9 +66,7 @@ class LsConventionalSensor : public sc_core::sc_module {
   sc_core::sc_signal<sc_dt::uint64> frame_{"frame"};
   // Per row.
   sc_core::sc_vector<sc_core::sc_signal<ActivationRow>> act_{"act"};
-  sc_core::sc_vector<sc_core::sc_signal<bool>> busy_{"busy"}, found_{"found"}, addr_valid_{"addr_valid"},
-      addr_bit_{"addr_bit"}, done_{"done"}, centre_valid_{"centre_valid"};
-  sc_core::sc_vector<sc_core::sc_signal<unsigned>> centre_q_{"centre_q"}, sum_{"sum"}, count_{"count"};
+  sc_core::sc_signal<RowArrayPins> row_pins_{"row_pins"};  // every row's search and centre pins
   // Bookkeeping.
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;

@@ -1,8 +1,18 @@
 #include "systemc/row_readout_array.h"
 
+#include <ostream>
 #include <string>
 
 namespace rangesim::systemc {
+
+std::ostream& operator<<(std::ostream& os, const RowArrayPins& p) {
+  int busy = 0, valid = 0;
+  for (const auto& s : p.search) busy += s.busy;
+  for (const auto& c : p.centre) valid += c.valid;
+  return os << p.search.size() << " rows, " << busy << " busy, " << valid << " centres valid";
+}
+
+void sc_trace(sc_core::sc_trace_file* /*tf*/, const RowArrayPins& /*pins*/, const std::string& /*name*/) {}
 
 RowReadoutArray::RowReadoutArray(sc_core::sc_module_name name, int rows, const AddressSearchConfig& config,
                                  int search_cycles)
@@ -15,24 +25,10 @@ RowReadoutArray::RowReadoutArray(sc_core::sc_module_name name, int rows, const A
     centre_.emplace_back(config.address_bits);
   }
   act_i.init(n);
-  for (auto* v : {&busy_o, &found_o, &addr_valid_o, &addr_bit_o, &done_o, &centre_valid_o}) v->init(n);
-  for (auto* v : {&centre_o, &sum_o, &count_o}) v->init(n);
   // Outputs start at the kernels' reset values, like the RTL after reset.
-  search_out_.assign(n, search_[0].pins());
-  centre_out_.assign(n, centre_[0].pins());
-  for (std::size_t r = 0; r < n; ++r) {
-    const AddressSearchPins& s = search_out_[r];
-    busy_o[r].initialize(s.busy);
-    found_o[r].initialize(s.found);
-    addr_valid_o[r].initialize(s.addr_valid);
-    addr_bit_o[r].initialize(s.addr_bit);
-    done_o[r].initialize(s.done);
-    const CentreProcessorPins& c = centre_out_[r];
-    centre_valid_o[r].initialize(c.valid);
-    centre_o[r].initialize(c.centre_q);
-    sum_o[r].initialize(c.sum);
-    count_o[r].initialize(static_cast<unsigned>(c.count));
-  }
+  out_.search.assign(n, search_[0].pins());
+  out_.centre.assign(n, centre_[0].pins());
+  pins_o.initialize(out_);
   SC_METHOD(on_clock);
   sensitive << clk_i.pos();
   dont_initialize();
@@ -41,10 +37,12 @@ RowReadoutArray::RowReadoutArray(sc_core::sc_module_name name, int rows, const A
 void RowReadoutArray::on_clock() {
   const bool rst = rst_i.read(), start = start_i.read(), clear = rst || clear_i.read();
   static const ActivationRow kNone;
+  bool changed = false;
   for (std::size_t r = 0; r < search_.size(); ++r) {
     AddressSearchKernel& s = search_[r];
+    AddressSearchPins& so = out_.search[r];
     // The centre processor reads the search's pins of the ending cycle: as last written.
-    const AddressSearchPins in = search_out_[r];
+    const AddressSearchPins in = so;
     const bool latch = !rst && start && s.idle();
     const ActivationRow& act = latch ? act_i[r].read() : kNone;  // read only where the search takes it
     if (latch && act.columns() != s.config().columns)  // a testbench error, reported as in AddressSearch
@@ -54,28 +52,15 @@ void RowReadoutArray::on_clock() {
                                                         .c_str());
     else
       s.tick(rst, start, act);
-    centre_[r].tick(clear, in);
-    // Write only what changed: most pins of most rows hold for most cycles.
     const AddressSearchPins p = s.pins();
-    AddressSearchPins& po = search_out_[r];
-    if (!(p == po)) {
-      if (p.busy != po.busy) busy_o[r].write(p.busy);
-      if (p.found != po.found) found_o[r].write(p.found);
-      if (p.addr_valid != po.addr_valid) addr_valid_o[r].write(p.addr_valid);
-      if (p.addr_bit != po.addr_bit) addr_bit_o[r].write(p.addr_bit);
-      if (p.done != po.done) done_o[r].write(p.done);
-      po = p;
-    }
+    if (!(p == so)) so = p, changed = true;
+    // The centre processor's state (so its outputs) moves only on clear or a streamed bit.
+    if (!clear && !in.addr_valid) continue;
+    centre_[r].tick(clear, in);
     const CentreProcessorPins c = centre_[r].pins();
-    CentreProcessorPins& co = centre_out_[r];
-    if (c != co) {
-      if (c.valid != co.valid) centre_valid_o[r].write(c.valid);
-      if (c.centre_q != co.centre_q) centre_o[r].write(c.centre_q);
-      if (c.sum != co.sum) sum_o[r].write(c.sum);
-      if (c.count != co.count) count_o[r].write(static_cast<unsigned>(c.count));
-      co = c;
-    }
+    if (c != out_.centre[r]) out_.centre[r] = c, changed = true;
   }
+  if (changed) pins_o.write(out_);  // one write per cycle, only when some row's pin moved
 }
 
 }  // namespace rangesim::systemc
