@@ -11,6 +11,7 @@
 #include "core/preset.h"
 #include "golden/ls_conventional_eval.h"
 #include "golden/row_model.h"
+#include "systemc/poisson_sampler.h"
 #include "systemc/random_stream.h"
 
 namespace rangesim::app {
@@ -58,8 +59,9 @@ McBenchFigures measure_mc_bench(bool quick) {
   f.mc_variates_per_s = static_cast<double>(r1.variates) / f.sweep_1thread_s;
 
   // The bare loop: per point and trial, the same number of pixels (the sweep's count), each with
-  // its own keyed stream, one kTC and one read normal and N Poisson draws of the pixel's mean per
-  // sampling interval (golden row model at a spot position drawn per trial).
+  // its own keyed stream, one kTC and one read normal (one pair) and N Poisson draws of the pixel's
+  // mean per sampling interval (golden row model at a spot position drawn per trial), with the
+  // pixel array's own samplers (systemc/poisson_sampler.h).
   const int N = cfg.multisampling.samplings;
   long long drawn = 0;
   double sink = 0;
@@ -75,8 +77,10 @@ McBenchFigures measure_mc_bench(bool quick) {
         const int col = first + static_cast<int>(j);
         pcg32 rng = systemc::pixel_stream(systemc::pixel_stream_key(key, static_cast<std::uint64_t>(t), 0,
                                                                     static_cast<std::uint32_t>(col)));
-        sink += systemc::standard_normal(rng) + systemc::standard_normal(rng);
-        std::poisson_distribution<long long> shot(golden::row_pixel_mean_electrons(row, col, x0, 1));
+        double ktc = 0, read = 0;
+        systemc::standard_normal_pair(rng, ktc, read);
+        sink += ktc + read;
+        const systemc::PoissonSampler shot(golden::row_pixel_mean_electrons(row, col, x0, 1));
         for (int k = 0; k < N; ++k) sink += static_cast<double>(shot(rng));
         drawn += 2 + N;
       }

@@ -14,21 +14,6 @@ ActivationRow::ActivationRow(int columns)
   assert(columns >= 0);
 }
 
-bool ActivationRow::test(int column) const {
-  assert(column >= 0 && column < columns_);
-  return (words_[column / 64] >> (column % 64)) & 1U;
-}
-
-void ActivationRow::set(int column, bool value) {
-  assert(column >= 0 && column < columns_);
-  const std::uint64_t mask = std::uint64_t{1} << (column % 64);
-  if (value) {
-    words_[column / 64] |= mask;
-  } else {
-    words_[column / 64] &= ~mask;
-  }
-}
-
 bool ActivationRow::any() const {
   for (std::uint64_t w : words_) {
     if (w != 0) return true;

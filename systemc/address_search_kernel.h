@@ -3,6 +3,7 @@
 // bit- and cycle-exact to rtl/address_search.sv (whose header comment is the cycle schedule).
 // One kernel = the search/stream logic of one row. Sweeps drive it directly; the sc_module in
 // systemc/address_search.h only connects ports to it.
+#include <algorithm>
 #include <cstdint>
 #include <iosfwd>
 #include <string>
@@ -20,8 +21,14 @@ class ActivationRow {
   explicit ActivationRow(int columns);
 
   int columns() const { return columns_; }
-  bool test(int column) const;
-  void set(int column, bool value = true);
+  // Inline: the pixel array calls these per pixel and sampling.
+  bool test(int column) const { return (words_[static_cast<std::size_t>(column) / 64] >> (column % 64)) & 1U; }
+  void set(int column, bool value = true) {
+    const std::uint64_t mask = std::uint64_t{1} << (column % 64);
+    std::uint64_t& w = words_[static_cast<std::size_t>(column) / 64];
+    w = value ? (w | mask) : (w & ~mask);
+  }
+  void clear() { std::fill(words_.begin(), words_.end(), 0); }  // every column off, width kept
   bool any() const;
   int first() const;  // lowest activated column, -1 if none
   int last() const;   // highest activated column, -1 if none

@@ -11,15 +11,10 @@ LsConventionalSensor::LsConventionalSensor(sc_core::sc_module_name name, const L
     : sc_core::sc_module(name),
       config_(config),
       sequencer_("sequencer", config.timing, config.multisampling.samplings),
-      pixels_("pixel_array", config, options, std::move(source)) {
+      pixels_("pixel_array", config, options, std::move(source)),
+      rows_("rows", config.pixel.rows, config.search, config.timing.search_cycles) {
   const std::size_t rows = static_cast<std::size_t>(config.pixel.rows);
-  search_.init(rows, [&](const char* nm, std::size_t) {
-    return new AddressSearch(nm, config.search, config.timing.search_cycles);
-  });
-  centre_.init(rows, [&](const char* nm, std::size_t) { return new CentreProcessor(nm, config.search.address_bits); });
   act_.init(rows);
-  for (auto* v : {&busy_, &found_, &addr_valid_, &addr_bit_, &done_, &centre_valid_}) v->init(rows);
-  for (auto* v : {&centre_q_, &sum_, &count_}) v->init(rows);
 
   sequencer_.clk_i(clk_i);
   sequencer_.rst_i(rst_i);
@@ -36,28 +31,12 @@ LsConventionalSensor::LsConventionalSensor(sc_core::sc_module_name name, const L
   pixels_.frame_i(frame_);
   pixels_.act_o.bind(act_);
 
-  for (std::size_t r = 0; r < rows; ++r) {
-    AddressSearch& s = search_[r];
-    s.clk_i(clk_i);
-    s.rst_i(rst_i);
-    s.start_i(search_start_);
-    s.act_i(act_[r]);
-    s.busy_o(busy_[r]);
-    s.found_o(found_[r]);
-    s.addr_valid_o(addr_valid_[r]);
-    s.addr_bit_o(addr_bit_[r]);
-    s.done_o(done_[r]);
-    CentreProcessor& c = centre_[r];
-    c.clk_i(clk_i);
-    c.rst_i(rst_i);
-    c.clear_i(pix_reset_);
-    c.addr_valid_i(addr_valid_[r]);
-    c.addr_bit_i(addr_bit_[r]);
-    c.valid_o(centre_valid_[r]);
-    c.centre_o(centre_q_[r]);
-    c.sum_o(sum_[r]);
-    c.count_o(count_[r]);
-  }
+  rows_.clk_i(clk_i);
+  rows_.rst_i(rst_i);
+  rows_.start_i(search_start_);
+  rows_.clear_i(pix_reset_);
+  rows_.act_i.bind(act_);
+  rows_.pins_o(row_pins_);
 
   SC_METHOD(on_clock);
   sensitive << clk_i.pos();
@@ -74,10 +53,11 @@ void LsConventionalSensor::on_clock() {
   // Signals hold their values of the ending cycle.
   const ReadoutPhase phase = static_cast<ReadoutPhase>(phase_.read());
   ++phase_cycles_[static_cast<std::size_t>(phase)];
-  const std::size_t rows = search_.size();
+  const RowArrayPins& rp = row_pins_.read();
+  const std::size_t rows = rp.search.size();
   if (search_start_.read()) {
     for (std::size_t r = 0; r < rows; ++r)
-      if (busy_[r].read())
+      if (rp.search[r].busy)
         SC_REPORT_ERROR("rangesim/ls_conventional_sensor",
                         ("frame " + std::to_string(frame_.read()) + " row " + std::to_string(r) +
                          ": search start while the row's search is busy")
@@ -88,16 +68,12 @@ void LsConventionalSensor::on_clock() {
     fr.frame = frame_.read();
     fr.rows.resize(rows);
     for (std::size_t r = 0; r < rows; ++r) {
-      if (busy_[r].read())
+      if (rp.search[r].busy)
         SC_REPORT_ERROR("rangesim/ls_conventional_sensor",
                         ("frame " + std::to_string(fr.frame) + " row " + std::to_string(r) +
                          ": address search still busy at the end of the frame access")
                             .c_str());
-      CentreProcessorPins& p = fr.rows[r];
-      p.valid = centre_valid_[r].read();
-      p.centre_q = centre_q_[r].read();
-      p.sum = sum_[r].read();
-      p.count = static_cast<int>(count_[r].read());
+      fr.rows[r] = rp.centre[r];
     }
     fr.end_cycle = cycle_ + 1;
     fr.phase_cycles = phase_cycles_;
@@ -121,15 +97,17 @@ void LsConventionalSensor::trace(sc_core::sc_trace_file* tf, const std::vector<i
   sc_core::sc_trace(tf, sampling_, "sampling");
   sc_core::sc_trace(tf, frame_, "frame");
   for (int r : rows) {
-    if (r < 0 || r >= static_cast<int>(search_.size())) continue;
-    const std::size_t i = static_cast<std::size_t>(r);
+    if (r < 0 || r >= static_cast<int>(act_.size())) continue;
+    // The row array's pins as written at each edge (fixed storage, traced by reference).
+    const AddressSearchPins& s = rows_.pins().search[static_cast<std::size_t>(r)];
+    const CentreProcessorPins& c = rows_.pins().centre[static_cast<std::size_t>(r)];
     const std::string p = "row" + std::to_string(r) + "_";
-    sc_core::sc_trace(tf, addr_valid_[i], p + "addr_valid");
-    sc_core::sc_trace(tf, addr_bit_[i], p + "addr_bit");
-    sc_core::sc_trace(tf, done_[i], p + "done");
-    sc_core::sc_trace(tf, found_[i], p + "found");
-    sc_core::sc_trace(tf, centre_valid_[i], p + "centre_valid");
-    sc_core::sc_trace(tf, centre_q_[i], p + "centre_q");
+    sc_core::sc_trace(tf, s.addr_valid, p + "addr_valid");
+    sc_core::sc_trace(tf, s.addr_bit, p + "addr_bit");
+    sc_core::sc_trace(tf, s.done, p + "done");
+    sc_core::sc_trace(tf, s.found, p + "found");
+    sc_core::sc_trace(tf, c.valid, p + "centre_valid");
+    sc_core::sc_trace(tf, c.centre_q, p + "centre_q");
   }
 }
 

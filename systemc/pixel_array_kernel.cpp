@@ -89,7 +89,7 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   for (int r = 0; r < config_.pixel.rows; ++r) {
     const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(r)];
     RowState& row = rows_[static_cast<std::size_t>(r)];
-    act_[static_cast<std::size_t>(r)] = ActivationRow(C);
+    act_[static_cast<std::size_t>(r)].clear();
     row.threshold_V = golden::comparator_threshold_V(config_, in.background_V);
     // Window of pixels that can activate.
     row.first = 0;
@@ -117,13 +117,14 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
       if (options_.noise.any()) {
         p.rng = pixel_stream(pixel_stream_key(options_.seed, frame, static_cast<std::uint32_t>(r),
                                               static_cast<std::uint32_t>(i)));
-        const double ktc = standard_normal(p.rng), read = standard_normal(p.rng);  // always drawn
+        double ktc = 0, read = 0;
+        standard_normal_pair(p.rng, ktc, read);  // always drawn
         p.offset_V = options_.noise.reset_ktc ? ktc * ktc_V_ : 0.0;
         p.read_V = options_.noise.read ? read * read_V_ : 0.0;
         p.mean_step_e = golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, 1.0) *
                         electrons_per_V_ / N;
         // Every sampling interval has the same mean: one sampler per pixel and frame.
-        p.shot = std::poisson_distribution<long long>(p.mean_step_e > 0 ? p.mean_step_e : 1.0);
+        p.shot = PoissonSampler(p.mean_step_e);
       } else {
         p.offset_V = p.read_V = p.mean_step_e = 0;
       }

@@ -23,7 +23,6 @@
 // activated) < 1e-16 per pixel and frame. Dense mode simulates
 // every pixel; tests require identical outputs.
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include <pcg_random.hpp>
@@ -31,6 +30,7 @@
 #include "core/ls_conventional_config.h"
 #include "systemc/address_search_kernel.h"
 #include "systemc/frame_stimulus.h"
+#include "systemc/poisson_sampler.h"
 
 namespace rangesim::systemc {
 
@@ -83,7 +83,7 @@ class PixelArrayKernel {
     pcg32 rng;              // this pixel's stream in this frame access
     double electrons = 0;   // integrated electrons up to the last sampling (shot noise on)
     double mean_step_e = 0; // mean electrons per sampling interval, mu(T) / N
-    std::poisson_distribution<long long> shot;  // Poisson sampler of that mean (libstdc++)
+    PoissonSampler shot;    // Poisson sampler of that mean
     double offset_V = 0;    // kTC reset noise on the photodiode
     double read_V = 0;      // read noise at the comparator input (input-referred)
     double profile = 0;     // g(i - x0)

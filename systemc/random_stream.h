@@ -9,8 +9,7 @@
 // SplitMix64 finaliser, one 64-bit word at a time, and the result seeds a pcg32 (state and stream).
 //
 // Draws of one pixel in one frame access, in this order (docs/simulate.md):
-//   1. kTC reset noise (normal), at the pixel reset;
-//   2. read noise (normal), once per frame access;
+//   1.-2. kTC reset noise and read noise (one normal pair), at the pixel reset;
 //   3. per sampling k = 1..N, the Poisson count of photo-/dark electrons integrated in (t_{k-1}, t_k].
 // A switched-off kTC or read noise still consumes its draw, so switching one source does not move
 // the bits of the others (the Poisson counts come last).
@@ -54,7 +53,7 @@ inline double standard_normal(pcg32& rng) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
 }
 
-// Poisson counts: std::poisson_distribution<long long> (libstdc++'s sampler, deterministic for a
-// given toolchain) drawing from the pixel's stream; the pixel array keeps one per pixel and frame.
+// The ls-conventional pixel array draws its Poisson counts and its normal pair with
+// systemc/poisson_sampler.h (faster, library-independent); the other kernels use the above.
 
 }  // namespace rangesim::systemc

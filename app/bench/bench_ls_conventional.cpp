@@ -203,8 +203,10 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
 #ifdef RANGESIM_BENCH_WITH_RTL
   if (opt.with_rtl) {
     const int rtl_frames = opt.quick ? 15 : 75;
-    progress(fmt::format("ls-conventional: verilated readout RTL (365 row instances), {} frame accesses", rtl_frames));
+    progress(fmt::format("ls-conventional: verilated full readout RTL (365 x 375), {} frame accesses", rtl_frames));
     const json rj = run_in_child([&]() {
+      // The comparator decisions of the model's pixel array (same options, seed and scene as the
+      // sparse run above), gathered before the RTL clock runs.
       ReadoutStimulus st;
       st.frames = rtl_frames;
       sc::PixelArrayKernel px(s.cfg, sc::PixelArrayOptions{}, s.source());
@@ -216,32 +218,48 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
           for (int r = 0; r < R; ++r) st.act.push_back(px.row(r));
         }
       }
-      const std::vector<ReadoutTxn> model = model_readout(s.cfg, st);
+      const std::vector<StreamTxn> model = model_streams(s.cfg, st);
       const RtlReadoutResult rtl = run_rtl_readout(s.cfg, st);
       long long mismatches = 0;
       std::string first;
-      if (rtl.txns.size() != model.size()) {
-        mismatches = std::llabs(static_cast<long long>(rtl.txns.size()) - static_cast<long long>(model.size()));
-        first = fmt::format("{} RTL transactions, {} model transactions", rtl.txns.size(), model.size());
-      }
-      for (std::size_t i = 0; i < std::min(rtl.txns.size(), model.size()); ++i)
-        if (!(rtl.txns[i] == model[i])) {
-          if (first.empty()) {
-            const ReadoutTxn &a = model[i], &b = rtl.txns[i];
-            first = fmt::format("frame {} sampling {} row {}: model found {} left {} right {} done {}; RTL {} {} {} {}", a.frame,
-                                a.sampling, a.row, a.found, a.left, a.right, a.done_cycle, b.found, b.left, b.right, b.done_cycle);
-          }
-          ++mismatches;
+      auto note = [&](const std::string& what) {
+        if (first.empty()) first = what;
+        ++mismatches;
+      };
+      if (rtl.streams.size() != model.size())
+        note(fmt::format("{} RTL address streams, {} model streams", rtl.streams.size(), model.size()));
+      for (std::size_t i = 0; i < std::min(rtl.streams.size(), model.size()); ++i)
+        if (!(rtl.streams[i] == model[i])) {
+          const StreamTxn &a = model[i], &b = rtl.streams[i];
+          note(fmt::format("stream {}: model frame {} sampling {} row {} left {} right {} cycles {}..{}; RTL frame {} "
+                           "sampling {} row {} bits {} left {} right {} cycles {}..{}",
+                           i, a.frame, a.sampling, a.row, a.left, a.right, a.first_cycle, a.last_cycle, b.frame, b.sampling,
+                           b.row, b.bits, b.left, b.right, b.first_cycle, b.last_cycle));
         }
-      long long found = 0;
-      for (const auto& t : model) found += t.found;
-      return json{{"cpu_s", rtl.cpu_s}, {"wall_s", rtl.wall_s},         {"elaboration_s", rtl.elaboration_s}, {"cycles", rtl.cycles},
-                  {"transactions", model.size()}, {"found", found},                     {"mismatches", mismatches},
-                  {"first_mismatch", first},      {"sc_errors", rtl.sc_errors},         {"assertion_failed", rtl.assertion_failed}};
+      // Centres and frame end against the sparse model run itself (its FrameResults).
+      long long centres = 0;
+      if (static_cast<int>(rtl.frames.size()) != rtl_frames)
+        note(fmt::format("{} RTL frame_done, {} frame accesses", rtl.frames.size(), rtl_frames));
+      for (std::size_t f = 0; f < std::min<std::size_t>(rtl.frames.size(), rtl_frames); ++f) {
+        const sc::FrameResult &m = sparse.frames[f], &g = rtl.frames[f];
+        if (m.frame != g.frame || m.end_cycle != g.end_cycle)
+          note(fmt::format("frame {}: model frame number {} end cycle {}; RTL {} {}", f, m.frame, m.end_cycle, g.frame,
+                           g.end_cycle));
+        for (std::size_t r = 0; r < m.rows.size() && r < g.rows.size(); ++r, ++centres)
+          if (m.rows[r] != g.rows[r])
+            note(fmt::format("frame {} row {}: model centre valid {} Q.8 {} sum {} n {}; RTL {} {} {} {}", f, r,
+                             m.rows[r].valid, m.rows[r].centre_q, m.rows[r].sum, m.rows[r].count, g.rows[r].valid,
+                             g.rows[r].centre_q, g.rows[r].sum, g.rows[r].count));
+      }
+      return json{{"cpu_s", rtl.cpu_s},       {"wall_s", rtl.wall_s},       {"elaboration_s", rtl.elaboration_s},
+                  {"cycles", rtl.cycles},     {"streams", model.size()},    {"centres", centres},
+                  {"mismatches", mismatches}, {"first_mismatch", first},    {"sc_errors", rtl.sc_errors},
+                  {"assertion_failed", rtl.assertion_failed}};
     });
     if (rj.contains("error")) throw std::runtime_error("bench: RTL run failed: " + rj["error"].get<std::string>());
     const bool same = rj["mismatches"].get<long long>() == 0 && rj["sc_errors"].get<long long>() == 0 &&
-                      !rj["assertion_failed"].get<bool>() && rj["transactions"].get<long long>() > 0;
+                      !rj["assertion_failed"].get<bool>() && rj["streams"].get<long long>() > 0 &&
+                      rj["centres"].get<long long>() > 0;
     checks["rtl_equals_model"] = same;
     const double rtl_per_frame = rj["cpu_s"].get<double>() / rtl_frames;
     const double v = rtl_per_frame / sparse_per_frame_s;
@@ -252,11 +270,11 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
     mj["rtl_elaboration_s"] = rj["elaboration_s"];
     mj["rtl_cycles"] = rj["cycles"];
     mj["model_map_s"] = sparse.cpu_s;
-    mj["transactions_compared"] = rj["transactions"];
-    mj["transactions_found"] = rj["found"];
+    mj["streams_compared"] = rj["streams"];
+    mj["centres_compared"] = rj["centres"];
     mj["mismatches"] = rj["mismatches"];
     if (!rj["first_mismatch"].get<std::string>().empty()) mj["first_mismatch"] = rj["first_mismatch"];
-    mj["rtl"] = "rtl/address_search.sv (Vaddress_search), one instance per row, sequencer schedule";
+    mj["rtl"] = "rtl/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, searches, centres";
     out["model_vs_rtl"] = mj;
   }
 #endif

@@ -2,26 +2,38 @@
 
 #include <verilated.h>
 
-#include <memory>
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <systemc>
+#include <tuple>
 
-#include "Vaddress_search.h"
+#include "Vls_conventional_readout.h"
 #include "app/bench/bench_util.h"
 #include "golden/frame_timing.h"
-#include "rtl/address_search_params.h"
+#include "rtl/ls_conventional_params.h"
+#include "tb/cosim_ports.h"
 
 namespace rangesim::app::bench {
 
 namespace {
 
+using tb::PortData;
+using tb::port_bit;
+using tb::port_field;
+
 constexpr int kResetCycles = 3;  // rst high; the RTL's state is random before its first edge
-constexpr int kColumns = 375;    // Vaddress_search's act_i width (checked against the config)
+
+int clog2(int v) {  // $clog2
+  int b = 0;
+  while ((1 << b) < v) ++b;
+  return b;
+}
 
 struct Schedule {
-  long long frame_cycles = 0;  // F
-  std::vector<long long> start_in_frame;  // per sampling k-1: cycle of search_start within the frame
+  long long frame_cycles = 0;             // F
+  std::vector<long long> latch_in_frame;  // per sampling k-1: first latch cycle within the frame
+  std::vector<long long> start_in_frame;  // per sampling k-1: search start (last latch cycle)
 };
 
 Schedule schedule(const LsConventionalConfig& cfg) {
@@ -30,42 +42,77 @@ Schedule schedule(const LsConventionalConfig& cfg) {
   const int N = cfg.multisampling.samplings;
   s.frame_cycles = golden::frame_timing(t, N).frame_cycles;
   const long long P = t.latch_cycles + t.search_cycles + static_cast<long long>(t.addresses_per_sampling) * t.address_bits;
-  for (int k = 1; k <= N; ++k) s.start_in_frame.push_back(t.reset_cycles + (k - 1) * P + t.latch_cycles - 1);
+  for (int k = 1; k <= N; ++k) {
+    s.latch_in_frame.push_back(t.reset_cycles + (k - 1) * P);
+    s.start_in_frame.push_back(t.reset_cycles + (k - 1) * P + t.latch_cycles - 1);
+  }
   return s;
 }
 
+void check_instance(const LsConventionalConfig& cfg) {
+  const auto& p = rtl::kLsConventionalFull;
+  const FrameTimingConfig& t = cfg.timing;
+  if (cfg.pixel.rows != p.rows || cfg.pixel.columns != p.columns || cfg.search.address_bits != p.address_bits ||
+      cfg.multisampling.samplings != p.samplings || t.reset_cycles != p.reset_cycles || t.latch_cycles != p.latch_cycles ||
+      t.search_cycles != p.search_cycles || t.output_cycles != p.output_cycles || t.addresses_per_sampling != 2)
+    throw std::invalid_argument("bench: the verilated Vls_conventional_readout is built for " + std::to_string(p.rows) + " x " +
+                                std::to_string(p.columns) + " pixels, " + std::to_string(p.samplings) + " samplings, " +
+                                std::to_string(p.address_bits) + " address bits and the preset's cycle counts; the preset differs");
+}
+
 class ReadoutTop : public sc_core::sc_module {
+  template <class P>
+  using Sig = sc_core::sc_signal<PortData<P>>;
+
  public:
   sc_core::sc_clock clk;
   sc_core::sc_signal<bool> rst{"rst", true};
-  sc_core::sc_signal<bool> start{"start"};
-  sc_core::sc_vector<sc_core::sc_signal<sc_dt::sc_bv<kColumns>>> act{"act"};
-  sc_core::sc_vector<sc_core::sc_signal<bool>> busy{"busy"}, found{"found"}, addr_valid{"addr_valid"},
-      addr_bit{"addr_bit"}, done{"done"};
-  std::vector<std::unique_ptr<Vaddress_search>> rtl;
+  Vls_conventional_readout rtl{"rtl"};
+  Sig<decltype(rtl.cmp_i)> cmp{"cmp"};
+  Sig<decltype(rtl.phase_o)> phase{"phase"};
+  Sig<decltype(rtl.pix_reset_o)> pix_reset{"pix_reset"};
+  Sig<decltype(rtl.latch_o)> latch{"latch"};
+  Sig<decltype(rtl.search_start_o)> search_start{"search_start"};
+  Sig<decltype(rtl.frame_done_o)> frame_done{"frame_done"};
+  Sig<decltype(rtl.sampling_o)> sampling{"sampling"};
+  Sig<decltype(rtl.frame_o)> frame{"frame"};
+  Sig<decltype(rtl.busy_o)> busy{"busy"};
+  Sig<decltype(rtl.addr_valid_o)> addr_valid{"addr_valid"};
+  Sig<decltype(rtl.addr_bit_o)> addr_bit{"addr_bit"};
+  Sig<decltype(rtl.centre_valid_o)> centre_valid{"centre_valid"};
+  Sig<decltype(rtl.centre_q_o)> centre_q{"centre_q"};
+  Sig<decltype(rtl.sum_o)> sum{"sum"};
+  Sig<decltype(rtl.count_o)> count{"count"};
 
   SC_HAS_PROCESS(ReadoutTop);
   ReadoutTop(sc_core::sc_module_name name, const LsConventionalConfig& cfg, const ReadoutStimulus& stim, sc_core::sc_time period)
-      : sc_core::sc_module(name), clk("clk", period), cfg_(cfg), stim_(stim), sched_(schedule(cfg)) {
+      : sc_core::sc_module(name), clk("clk", period), frames_(stim.frames), sched_(schedule(cfg)) {
     rows_ = cfg.pixel.rows;
+    columns_ = cfg.pixel.columns;
     N_ = cfg.multisampling.samplings;
     B_ = cfg.search.address_bits;
-    act.init(rows_);
-    busy.init(rows_), found.init(rows_), addr_valid.init(rows_), addr_bit.init(rows_), done.init(rows_);
-    stream_.assign(static_cast<std::size_t>(rows_), {});
-    for (int r = 0; r < rows_; ++r) {
-      rtl.push_back(std::make_unique<Vaddress_search>(("row" + std::to_string(r)).c_str()));
-      Vaddress_search& v = *rtl.back();
-      v.clk(clk);
-      v.rst(rst);
-      v.start_i(start);
-      v.act_i(act[r]);
-      v.busy_o(busy[r]);
-      v.found_o(found[r]);
-      v.addr_valid_o(addr_valid[r]);
-      v.addr_bit_o(addr_bit[r]);
-      v.done_o(done[r]);
-    }
+    cb_ = B_ + 8;
+    sumb_ = B_ + 1 + clog2(N_ + 1);
+    cntb_ = clog2(N_ + 1);
+    rtl.clk(clk);
+    rtl.rst(rst);
+    rtl.cmp_i(cmp);
+    rtl.phase_o(phase);
+    rtl.pix_reset_o(pix_reset);
+    rtl.latch_o(latch);
+    rtl.search_start_o(search_start);
+    rtl.frame_done_o(frame_done);
+    rtl.sampling_o(sampling);
+    rtl.frame_o(frame);
+    rtl.busy_o(busy);
+    rtl.addr_valid_o(addr_valid);
+    rtl.addr_bit_o(addr_bit);
+    rtl.centre_valid_o(centre_valid);
+    rtl.centre_q_o(centre_q);
+    rtl.sum_o(sum);
+    rtl.count_o(count);
+    build_cmp_values(stim);
+    open_.assign(static_cast<std::size_t>(rows_), {});
     SC_THREAD(stimulus);
     sensitive << clk.posedge_event();
     SC_METHOD(monitor);
@@ -73,138 +120,166 @@ class ReadoutTop : public sc_core::sc_module {
     dont_initialize();
   }
 
-  RtlReadoutResult& result() { return res_; }
-
- private:
-  struct Stream {
-    unsigned bits = 0;  // address bits streamed so far in this operation
-    int n = 0;          // how many
-    int op = 0;         // operations completed by this row
-  };
-
-  // Drives the inputs of the cycle that begins at this rising edge.
-  void stimulus() {
-    for (int i = 0; i < kResetCycles; ++i) wait();
-    rst.write(false);
-    const int F = static_cast<int>(sched_.frame_cycles);
-    for (int f = 0; f < stim_.frames; ++f) {
-      for (int c = 0; c < F; ++c) {
-        cycle_ = static_cast<long long>(f) * F + c;
-        int k = 0;
-        for (int j = 0; j < N_; ++j)
-          if (sched_.start_in_frame[static_cast<std::size_t>(j)] == c) k = j + 1;
-        start.write(k > 0);
-        if (k > 0) {
-          for (int r = 0; r < rows_; ++r) {
-            const systemc::ActivationRow& a = stim_.act[(static_cast<std::size_t>(f) * N_ + (k - 1)) * rows_ + r];
-            const auto& w = a.words();
-            sc_dt::sc_bv<kColumns> v;
-            for (int word = 0; word * 64 < kColumns; ++word) {
-              const int width = std::min(64, kColumns - word * 64);
-              v.range(word * 64 + width - 1, word * 64) = sc_dt::sc_uint<64>(w[static_cast<std::size_t>(word)]).range(width - 1, 0);
-            }
-            act[r].write(v);
-          }
-        }
-        wait();
-      }
-    }
-    cycle_ = static_cast<long long>(stim_.frames) * F;
-    wait();
-    res_.cycles = cycle_;
-    sc_core::sc_stop();
-  }
-
-  // Mid-cycle: all outputs have settled after the rising edge.
-  void monitor() {
-    if (cycle_ < 0) return;
-    for (int r = 0; r < rows_; ++r) {
-      Stream& s = stream_[static_cast<std::size_t>(r)];
-      if (addr_valid[r].read()) {
-        s.bits = (s.bits << 1) | (addr_bit[r].read() ? 1U : 0U);
-        ++s.n;
-      }
-      if (done[r].read()) {
-        ReadoutTxn t;
-        t.frame = s.op / N_;
-        t.sampling = s.op % N_ + 1;
-        t.row = r;
-        t.found = found[r].read();
-        const unsigned mask = (1U << B_) - 1;
-        if (s.n == 2 * B_) t.left = static_cast<int>((s.bits >> B_) & mask), t.right = static_cast<int>(s.bits & mask);
-        t.done_cycle = cycle_;
-        txns_.push_back(t);
-        s = Stream{0, 0, s.op + 1};
-      }
-    }
-  }
-
- public:
-  // Transactions ordered by (frame, sampling, row).
-  std::vector<ReadoutTxn> ordered() const {
-    std::vector<ReadoutTxn> out(txns_);
-    std::stable_sort(out.begin(), out.end(), [](const ReadoutTxn& a, const ReadoutTxn& b) {
+  long long cycles() const { return cycles_; }
+  const std::vector<systemc::FrameResult>& frames() const { return frame_results_; }
+  // Streams ordered by (frame, sampling, row).
+  std::vector<StreamTxn> streams() const {
+    std::vector<StreamTxn> out(streams_);
+    std::stable_sort(out.begin(), out.end(), [](const StreamTxn& a, const StreamTxn& b) {
       return std::tie(a.frame, a.sampling, a.row) < std::tie(b.frame, b.sampling, b.row);
     });
     return out;
   }
 
  private:
-  LsConventionalConfig cfg_;
-  const ReadoutStimulus& stim_;
+  // cmp_i of every (frame, sampling), built before the clock runs so the timed run is the RTL's.
+  void build_cmp_values(const ReadoutStimulus& stim) {
+    const std::size_t n_words = (static_cast<std::size_t>(rows_) * columns_ + 31) / 32;
+    std::vector<std::uint32_t> w;
+    cmp_values_.resize(static_cast<std::size_t>(frames_) * N_);
+    for (std::size_t fk = 0; fk < cmp_values_.size(); ++fk) {
+      w.assign(n_words, 0U);
+      for (int r = 0; r < rows_; ++r) {
+        const auto& words = stim.act[fk * rows_ + static_cast<std::size_t>(r)].words();
+        for (std::size_t i = 0; i < words.size(); ++i)
+          for (std::uint64_t bits = words[i]; bits != 0; bits &= bits - 1) {
+            const long long b = static_cast<long long>(r) * columns_ + static_cast<long long>(i) * 64 + __builtin_ctzll(bits);
+            w[static_cast<std::size_t>(b / 32)] |= 1U << (b % 32);
+          }
+      }
+      tb::port_from_words(w, cmp_values_[fk]);
+    }
+  }
+
+  // Drives the inputs of the cycle that begins at this rising edge: the comparator decisions
+  // of sampling k from its first latch cycle on (the RTL reads cmp_i only in latch cycles).
+  void stimulus() {
+    for (int i = 0; i < kResetCycles; ++i) wait();
+    rst.write(false);
+    const long long F = sched_.frame_cycles;
+    for (int f = 0; f < frames_; ++f) {
+      for (long long c = 0; c < F; ++c) {
+        cycle_ = f * F + c;
+        for (int k = 0; k < N_; ++k)
+          if (sched_.latch_in_frame[static_cast<std::size_t>(k)] == c)
+            cmp.write(cmp_values_[static_cast<std::size_t>(f) * N_ + static_cast<std::size_t>(k)]);
+        wait();
+      }
+    }
+    cycle_ = frames_ * F;
+    wait();
+    cycles_ = cycle_;
+    sc_core::sc_stop();
+  }
+
+  struct Open {  // a row's stream in progress
+    int bits = 0;
+    unsigned value = 0;
+    int frame = 0, sampling = 0;
+    long long first_cycle = 0, last_cycle = 0;
+  };
+
+  void close(int r, Open& s) {
+    const unsigned mask = (1U << B_) - 1;
+    StreamTxn t{s.frame, s.sampling, r, s.bits, 0, 0, s.first_cycle, s.last_cycle};
+    if (s.bits == 2 * B_) t.left = static_cast<int>((s.value >> B_) & mask), t.right = static_cast<int>(s.value & mask);
+    streams_.push_back(t);
+    s = Open{};
+    --n_open_;
+  }
+
+  // Mid-cycle: every output has settled after the rising edge.
+  void monitor() {
+    if (cycle_ < 0) return;
+    const auto& av = addr_valid.read();
+    bool any = n_open_ > 0;
+    for (int i = 0; !any && i < (rows_ + 31) / 32; ++i) any = av.get_word(i) != 0;
+    if (any) {
+      const auto& ab = addr_bit.read();
+      const int f = static_cast<int>(port_field(frame.read(), 0, 32)), k = static_cast<int>(port_field(sampling.read(), 0, 8));
+      for (int r = 0; r < rows_; ++r) {
+        Open& s = open_[static_cast<std::size_t>(r)];
+        const bool v = port_bit(av, r);
+        if (!v) {
+          if (s.bits > 0) close(r, s);  // a stream cut short
+          continue;
+        }
+        if (s.bits == 0) s.first_cycle = cycle_, s.frame = f, s.sampling = k, ++n_open_;
+        s.value = (s.value << 1) | (port_bit(ab, r) ? 1U : 0U);
+        s.last_cycle = cycle_;
+        if (++s.bits == 2 * B_) close(r, s);
+      }
+    }
+    if (frame_done.read()) {
+      systemc::FrameResult fr;
+      fr.frame = port_field(frame.read(), 0, 32);
+      fr.end_cycle = cycle_ + 1;
+      fr.rows.resize(static_cast<std::size_t>(rows_));
+      const auto& cv = centre_valid.read();
+      const auto& cq = centre_q.read();
+      const auto& su = sum.read();
+      const auto& co = count.read();
+      for (int r = 0; r < rows_; ++r) {
+        systemc::CentreProcessorPins& g = fr.rows[static_cast<std::size_t>(r)];
+        g.valid = port_bit(cv, r);
+        g.centre_q = static_cast<std::uint32_t>(port_field(cq, r * cb_, cb_));
+        g.sum = static_cast<std::uint32_t>(port_field(su, r * sumb_, sumb_));
+        g.count = static_cast<int>(port_field(co, r * cntb_, cntb_));
+      }
+      frame_results_.push_back(std::move(fr));
+    }
+  }
+
+  int frames_ = 0;
   Schedule sched_;
-  int rows_ = 0, N_ = 0, B_ = 0;
-  long long cycle_ = -1;          // cycle since reset release of the current cycle (-1: in reset)
-  std::vector<Stream> stream_;    // per row
-  std::vector<ReadoutTxn> txns_;  // in completion order
-  RtlReadoutResult res_;
+  int rows_ = 0, columns_ = 0, N_ = 0, B_ = 0;
+  int cb_ = 0, sumb_ = 0, cntb_ = 0;  // RTL field widths: centre Q.8, sum, count
+  std::vector<PortData<decltype(rtl.cmp_i)>> cmp_values_;  // per (frame, sampling)
+  long long cycle_ = -1;  // cycle since reset release of the current cycle (-1: in reset)
+  long long cycles_ = 0;
+  std::vector<Open> open_;  // per row
+  int n_open_ = 0;
+  std::vector<StreamTxn> streams_;  // in completion order
+  std::vector<systemc::FrameResult> frame_results_;
 };
 
 }  // namespace
 
-long long readout_start_cycle(const LsConventionalConfig& cfg, int frame, int sampling) {
-  const Schedule s = schedule(cfg);
-  return static_cast<long long>(frame) * s.frame_cycles + s.start_in_frame[static_cast<std::size_t>(sampling - 1)];
-}
-
-std::vector<ReadoutTxn> model_readout(const LsConventionalConfig& cfg, const ReadoutStimulus& stim) {
+std::vector<StreamTxn> model_streams(const LsConventionalConfig& cfg, const ReadoutStimulus& stim) {
   const systemc::AddressSearchKernel k(cfg.search, cfg.timing.search_cycles);
-  const int N = cfg.multisampling.samplings, R = cfg.pixel.rows;
-  std::vector<ReadoutTxn> out;
-  out.reserve(stim.act.size());
+  const Schedule sched = schedule(cfg);
+  const int N = cfg.multisampling.samplings, R = cfg.pixel.rows, B = cfg.search.address_bits;
+  std::vector<StreamTxn> out;
   for (int f = 0; f < stim.frames; ++f)
     for (int s = 1; s <= N; ++s) {
-      const long long start = readout_start_cycle(cfg, f, s);
+      const long long start = f * sched.frame_cycles + sched.start_in_frame[static_cast<std::size_t>(s - 1)];
       for (int r = 0; r < R; ++r) {
         const systemc::AddressSearchResult e = k.evaluate(stim.act[(static_cast<std::size_t>(f) * N + (s - 1)) * R + r]);
-        out.push_back({f, s, r, e.found, e.left, e.right, start + e.done_cycle});
+        if (!e.found) continue;  // nothing streamed
+        out.push_back({f, s, r, 2 * B, e.left, e.right, start + e.done_cycle - 2 * B + 1, start + e.done_cycle});
       }
     }
   return out;
 }
 
 RtlReadoutResult run_rtl_readout(const LsConventionalConfig& cfg, const ReadoutStimulus& stim) {
-  const auto& p = rangesim::rtl::kAddressSearchDefault;
-  if (cfg.pixel.columns != kColumns || p.columns != kColumns || cfg.search.address_bits != p.address_bits ||
-      cfg.timing.search_cycles != p.search_cycles)
-    throw std::invalid_argument("bench: the verilated Vaddress_search is built for 375 columns, " +
-                                std::to_string(p.address_bits) + " address bits, " + std::to_string(p.search_cycles) +
-                                " search cycles; the preset differs");
+  check_instance(cfg);
   Verilated::defaultContextp()->fatalOnError(false);
   const sc_core::sc_time period(1.0 / cfg.timing.clock_Hz, sc_core::SC_SEC);
   const auto t0 = Clock::now();
   ReadoutTop top("readout", cfg, stim, period);
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  const double elaboration_s = seconds_since(t0);
+  RtlReadoutResult r;
+  r.elaboration_s = seconds_since(t0);
   const auto t1 = Clock::now();
   const double c1 = cpu_now();
   const long long limit = kResetCycles + 4 + static_cast<long long>(stim.frames) * schedule(cfg).frame_cycles;
   sc_core::sc_start(period * static_cast<double>(limit));
-  RtlReadoutResult r = top.result();
   r.wall_s = seconds_since(t1);
   r.cpu_s = cpu_now() - c1;
-  r.elaboration_s = elaboration_s;
-  r.txns = top.ordered();
+  r.cycles = top.cycles();
+  r.streams = top.streams();
+  r.frames = top.frames();
   r.assertion_failed = Verilated::defaultContextp()->gotError();
   r.sc_errors = static_cast<long long>(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR));
   return r;

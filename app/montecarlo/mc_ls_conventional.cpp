@@ -40,7 +40,7 @@ class Runner : public McPointRunner {
     return out;
   }
 
-  // kTC and read noise (one normal each) and one Poisson per sampling, per simulated pixel.
+  // kTC and read noise (one normal pair, counted as two) and one Poisson per sampling, per simulated pixel.
   long long variates() const override {
     return kernel_.pixels().pixels_simulated() * (2 + cfg_.multisampling.samplings);
   }
