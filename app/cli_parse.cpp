@@ -92,7 +92,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");
   sim->add_flag("--tick,--no-event-skip", sim_opt.tick, "With --kernel-only: evaluate every clock cycle (event skipping off)");
   sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
-  sim->add_flag("--dense,--no-sparse", sim_opt.dense, "Simulate every pixel (sparse pixels off: no window around the beam)");
+  sim->add_flag("--dense,--no-sparse", sim_opt.dense, "Simulate every pixel one by one (sparse pixels off: no window around the beam; tof-spad: background-only pixels not drawn as one class)");
   sim->add_flag("--no-aggregate", sim_opt.no_aggregate,
                 "tof-lockin: run the N_acc accumulation periods one by one instead of one draw of their sum;\n"
                 "tof-spad: run the laser cycles one by one (aggregation runs only where cycles are independent)");

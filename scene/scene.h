@@ -15,6 +15,7 @@
 //                tof-spad step: step_distance_m, step_column
 //   [beam]       ls-conventional: power_W, reference_distance_m, column_offset_px
 //                ls-demodulation: signal_A, first_column_px, columns_per_frame
+//                tof-spad: first_row, rows, first_column, columns (the lit pixels; default all)
 //   [light]      tof-lockin: signal_photocurrent_A, reference_distance_m, background_photocurrent_A
 //   [rates]      tof-spad: signal_Hz, reference_distance_m, background_Hz
 //   [background] ls-conventional: irradiance_W_per_m2; ls-demodulation: photocurrent_A

@@ -234,7 +234,6 @@ class SpadCosimTop : public sc_core::sc_module {
   // makes of each (TdcGroupKernel); plus simulate_group itself for the cross-check.
   RowPlan plan_row(int rr) {
     RowPlan p;
-    const double period_s = 1.0 / s_.cfg.laser.repetition_rate_Hz;
     const double lsb = s_.cfg.tdc.lsb_s;
     const int npb = kernel_.phase_bins();
     const long long L = kernel_.laser_cycles();
@@ -246,18 +245,18 @@ class SpadCosimTop : public sc_core::sc_module {
     TdcGroupKernel tdc(npb, kernel_.codes(), block_event_, block_overflow_, L, kCpt);
     for (;;) {
       int who = -1;
-      double t = SpadPixelKernel::kNever;
+      SpadTime t = SpadTime::never_time();
       for (int k = 0; k < kCpt; ++k)
         if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
       if (who < 0) break;
       px[static_cast<size_t>(who)].pop();
-      if (t < 0) {
+      if (t.cycle < 0) {
         ++p.dropped;
         continue;
       }
-      const long long lc = static_cast<long long>(t / period_s);
+      const long long lc = t.cycle;  // laser cycle and phase within it (relative times)
       if (lc >= L) break;
-      const double ph = t - static_cast<double>(lc) * period_s;
+      const double ph = t.offset_s;
       const int bin = kernel_.phase_bin(ph);
       const int coarse = std::min(static_cast<int>(ph / lsb), npb - 1);
       const int cr = bin - coarse;

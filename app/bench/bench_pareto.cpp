@@ -35,12 +35,15 @@ std::vector<Setting> settings(bool quick) {
       {"tof-spad", "tof-spad-plane.toml", "kernel, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},
       {"tof-spad", "tof-spad-plane.toml", "kernel, 4 frames", "kernel", {"--kernel-only", "--frames", "4"}},
       {"tof-spad", "tof-spad-plane.toml", "SystemC module, 1 frame", "systemc", {"--frames", "1"}},
+      // Beam spot: the window (512 pixels, 448 background-only) against the whole array one by one.
+      {"tof-spad", "tof-spad-spot.toml", "kernel, beam spot, sparse", "kernel", {"--kernel-only"}},
   };
   if (!quick) {
     s.push_back({"ls-demodulation", "ls-demodulation-plane.toml", "kernel, per clock, 1 frame", "kernel",
                  {"--kernel-only", "--no-event-skip", "--frames", "1"}});
     s.push_back({"tof-lockin", "tof-lockin-plane.toml", "kernel, no aggregation", "kernel", {"--kernel-only", "--no-aggregate"}});
     s.push_back({"tof-spad", "tof-spad-plane.toml", "kernel, 16 frames", "kernel", {"--kernel-only", "--frames", "16"}});
+    s.push_back({"tof-spad", "tof-spad-spot.toml", "kernel, beam spot, dense", "kernel", {"--kernel-only", "--dense"}});
   }
   std::stable_sort(s.begin(), s.end(), [](const Setting& a, const Setting& b) { return a.sensor < b.sensor; });
   return s;

@@ -50,6 +50,7 @@ struct SpadScene {
   double reference_distance_m = 2.0;  // signal falls as (reference / distance)^2
   double background_Hz = 1e5;         // ambient count rate per pixel
   int first_row = 62, rows = 4, first_column = 56, columns = 16;  // default simulated window
+  int beam_first_row = 0, beam_rows = 0, beam_first_column = 0, beam_columns = 0;  // lit pixels (the echo's footprint)
 
   std::vector<double> depth_map_m;  // depth_map: depth of every pixel of the array, row-major
   int map_columns = 0;               // depth_map: array columns
@@ -58,10 +59,15 @@ struct SpadScene {
     if (shape == "depth_map") return depth_map_m[static_cast<size_t>(row) * map_columns + column];
     return shape == "step" && column >= step_column ? step_distance_m : distance_m;
   }
+  bool lit(int row, int column) const {
+    return row >= beam_first_row && row < beam_first_row + beam_rows && column >= beam_first_column &&
+           column < beam_first_column + beam_columns;
+  }
+  // Outside the beam's footprint a pixel receives background only (signal 0).
   PixelRates rates(int row, int column) const {
     const double d = distance_at(row, column);
     const double r = reference_distance_m / d;
-    return {signal_Hz * r * r, background_Hz, 2 * d / phys::kSpeedOfLight_m_per_s};
+    return {lit(row, column) ? signal_Hz * r * r : 0.0, background_Hz, 2 * d / phys::kSpeedOfLight_m_per_s};
   }
 };
 
@@ -110,6 +116,10 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
   s.columns = get_int("window.columns", std::min(16, array_columns), cpt, array_columns);
   if (s.columns % cpt != 0)
     throw UserError(fmt::format("{}: window.columns = {}: allowed a multiple of tdc.columns_per_tdc = {}", path, s.columns, cpt));
+  s.beam_rows = get_int("beam.rows", array_rows, 1, array_rows);
+  s.beam_first_row = get_int("beam.first_row", 0, 0, array_rows - s.beam_rows);
+  s.beam_columns = get_int("beam.columns", array_columns, 1, array_columns);
+  s.beam_first_column = get_int("beam.first_column", 0, 0, array_columns - s.beam_columns);
   const int default_first = ((array_columns - s.columns) / 2) / cpt * cpt;
   s.first_column = get_int("window.first_column", default_first, 0, array_columns - s.columns);
   if (s.first_column % cpt != 0)
@@ -146,6 +156,9 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   // Laser cycles drawn at once where they are independent (systemc/tof_spad/spad_aggregation.h); the
   // preset's dead time and afterpulses make them dependent, so its default run is per cycle.
   kopt.aggregate = !opt.tick && !opt.no_aggregate;
+  // Sparse pixels: TDC groups outside the beam (background only) as one class, in closed form where
+  // exact (spad_aggregation.h); --dense simulates every pixel of the array one by one.
+  kopt.sparse = !opt.tick && !opt.dense;
   if (opt.noise_free) kopt.noise = systemc::spad::SpadNoise::none();
   const systemc::spad::TofSpadKernel kernel(cfg, array_rows, array_columns, kopt);
   systemc::spad::PixelSelection sel;
@@ -167,6 +180,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   std::vector<std::vector<double>> sum(static_cast<size_t>(sc.rows), std::vector<double>(static_cast<size_t>(sc.columns), 0.0));
   std::vector<std::vector<int>> cnt(static_cast<size_t>(sc.rows), std::vector<int>(static_cast<size_t>(sc.columns), 0));
   long long points_total = 0, detected = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;
+  long long groups_bg = 0, groups_bg_cyc = 0, background_points = 0, background_detections = 0;
   RangeErrorStats err_stats;
   bool timing_matches = true;
   std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events\n";
@@ -177,16 +191,19 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
                      f.phase_cycles[1] == gt.phases[1].cycles;
     photons += f.photons, avalanches += f.avalanches;
     groups_agg += f.groups_aggregated, groups_cyc += f.groups_per_cycle;
+    groups_bg += f.groups_background, groups_bg_cyc += f.groups_background_per_cycle;
     for (const auto& p : f.pixels) {
       const double truth = sc.distance_at(p.row, p.column);
       long long ev = 0;
       for (long long e : p.events) ev += e;
       ++points_total;
       double err = NAN;
+      const bool lit = sc.lit(p.row, p.column);
+      background_points += !lit;
+      if (p.time_s && !lit) ++background_detections;  // a spurious peak: no echo to range (no error)
       if (p.time_s) {
         ++detected;
-        err = p.range_m - truth;
-        err_stats.add(err);
+        if (lit) err = p.range_m - truth, err_stats.add(err);
         const auto r = static_cast<size_t>(p.row - sc.first_row), c = static_cast<size_t>(p.column - sc.first_column);
         sum[r][c] += p.range_m, ++cnt[r][c];
       }
@@ -229,6 +246,7 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
       {"event_skipping", !opt.tick},
       {"sparse", !opt.dense},
       {"window", {{"first_row", sc.first_row}, {"rows", sc.rows}, {"first_column", sc.first_column}, {"columns", sc.columns}}},
+      {"beam", {{"first_row", sc.beam_first_row}, {"rows", sc.beam_rows}, {"first_column", sc.beam_first_column}, {"columns", sc.beam_columns}}},
       {"noise", !opt.noise_free},
       {"seed", opt.seed},
       {"frames", static_cast<long long>(res.frames.size())},
@@ -260,6 +278,12 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
         {"groups_aggregated", groups_agg},
         {"groups_per_cycle", groups_cyc},
         {"blocker", kernel.aggregation_blocker()}}},
+      {"background_only",
+       {{"points", background_points},
+        {"detections", background_detections},
+        {"groups_class", groups_bg},
+        {"groups_per_cycle", groups_bg_cyc},
+        {"blocker", kernel.background_blocker()}}},
   };
   err_stats.to_json(j, false);
   out.write("range_map.csv", range_csv);
@@ -281,11 +305,16 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   report.range_maps_per_s = frame_rate_Hz / static_cast<double>(gt.frames_per_range_map);
   report.frames_per_range_map = gt.frames_per_range_map;
   report.points_line = fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), detected);
+  if (background_points > 0)
+    report.points_line += fmt::format(" ({} of {} background-only points: spurious, not in the error)", background_detections, background_points);
   report.error = err_stats;
   report.wall_time_s = wall_s;
   report.wall_note = fmt::format("{:.3g} photons/s simulated; laser cycles: {} group rows aggregated, {} per cycle{}",
                                  static_cast<double>(photons) / sim_wall_s, groups_agg, groups_cyc,
                                  kopt.aggregate && !kernel.aggregation_blocker().empty() ? " (" + kernel.aggregation_blocker() + ")" : "");
+  if (groups_bg + groups_bg_cyc > 0)
+    report.wall_note += fmt::format("; background-only group rows: {} as a class, {} per cycle{}", groups_bg, groups_bg_cyc,
+                                    groups_bg_cyc > 0 && !kernel.background_blocker().empty() ? " (" + kernel.background_blocker() + ")" : "");
   return finish_simulate(opt, out, trace, j, warning, report);
 }
 

@@ -40,4 +40,20 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
                                     const std::vector<PixelRates>& pixels, long long laser_cycles, std::uint64_t seed,
                                     std::uint64_t frame, int row, int first_column);
 
+// Background-only groups (issue 6 "sparse pixels"; docs/tof-spad-clock.md "Background-only
+// pixels"): no pixel of the group receives an echo (signal 0) and all have the same background,
+// so every laser cycle of every such group has the same arrival rate and these groups form one
+// class. Where pure-background cycles are independent (empty blocker: no afterpulse, dead time 0,
+// no jitter, TDC re-armed by the next START) the L cycles are one multinomial over (column, code)
+// + overflow + none with the Coates probabilities of the uniform rate (closed form, exact, O(Np)
+// per group); with a uniform rate of 0 the histogram is empty whatever the configuration.
+std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int phase_bins, int codes,
+                                    int block_event_bins, int block_overflow_bins);
+bool spad_group_background_only(const std::vector<PixelRates>& pixels);
+// The histogram of one background-only group (same fields as the per-cycle path; background_class
+// set). Random stream keyed by (seed ^ salt, frame, row, first column of the group).
+GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& noise, const golden::spad::TdcBins& bins,
+                                     const std::vector<PixelRates>& pixels, long long laser_cycles, std::uint64_t seed,
+                                     std::uint64_t frame, int row, int first_column);
+
 }  // namespace rangesim::systemc::spad

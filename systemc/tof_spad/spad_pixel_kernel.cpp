@@ -29,7 +29,7 @@ long long poisson_by_pieces(pcg32& rng, double mu) {
 SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, const SpadNoise& n, long long laser_cycles,
                                  std::uint64_t seed, std::uint64_t frame, std::uint32_t row, std::uint32_t column)
     : period_s_(1.0 / cfg.laser.repetition_rate_Hz),
-      end_s_(static_cast<double>(laser_cycles) / cfg.laser.repetition_rate_Hz),
+      laser_cycles_(laser_cycles),
       signal_per_cycle_(r.signal_Hz / cfg.laser.repetition_rate_Hz),
       uniform_rate_Hz_((n.background ? r.background_Hz : 0.0) + (n.dark ? cfg.spad.dark_count_rate_Hz : 0.0)),
       round_trip_s_(r.round_trip_s),
@@ -48,13 +48,27 @@ SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, 
   advance();
 }
 
+SpadTime SpadPixelKernel::shifted(SpadTime t, double dt_s) const {
+  if (t.never()) return t;
+  double o = t.offset_s + dt_s;
+  if (o >= 0 && o < period_s_) return {t.cycle, o};
+  const double k = std::floor(o / period_s_);
+  // Far past any integration (a gap of a vanishing rate): never.
+  if (!(std::fabs(k) < 4e18) || (k > 0 && static_cast<double>(t.cycle) + k > 4e18)) return SpadTime::never_time();
+  o -= k * period_s_;
+  long long c = t.cycle + static_cast<long long>(k);
+  if (o < 0) o += period_s_, --c;  // rounding of k x period
+  if (o >= period_s_) o -= period_s_, ++c;
+  return {c, o};
+}
+
 void SpadPixelKernel::next_signal_cycle() {
   signal_buf_.clear();
   if (!(signal_per_cycle_ > 0)) return;
   // Cycles without a photon are skipped: the gap is geometric with P(photon) = 1 - exp(-mu).
   const double skip = std::floor(exp_gap(signal_rng_) / signal_per_cycle_);
   const double cycle = static_cast<double>(signal_cycle_) + 1.0 + skip;
-  if (cycle * period_s_ >= end_s_) {
+  if (cycle >= static_cast<double>(laser_cycles_)) {
     signal_cycle_ = -2;  // exhausted
     return;
   }
@@ -72,30 +86,32 @@ void SpadPixelKernel::next_signal_cycle() {
     // of 0 (probability e^-mu) is drawn again.
     do k = poisson_by_pieces(signal_rng_, mu); while (k == 0);
   }
-  const double t0 = static_cast<double>(signal_cycle_) * period_s_ + round_trip_s_;
-  for (long long i = 0; i < k; ++i) signal_buf_.push_back(t0 + pulse_sigma_s_ * standard_normal(signal_rng_));
-  std::sort(signal_buf_.begin(), signal_buf_.end(), std::greater<double>());
+  // Offsets within the photon's own cycle: the echo (possibly beyond a period) around the round trip.
+  const SpadTime t0{signal_cycle_, 0.0};
+  for (long long i = 0; i < k; ++i) signal_buf_.push_back(shifted(t0, round_trip_s_ + pulse_sigma_s_ * standard_normal(signal_rng_)));
+  std::sort(signal_buf_.begin(), signal_buf_.end(), std::greater<SpadTime>());
 }
 
 void SpadPixelKernel::next_uniform() {
   if (!(uniform_rate_Hz_ > 0)) {
-    uniform_next_s_ = kNever;
+    uniform_next_ = SpadTime::never_time();
     return;
   }
-  const double base = uniform_next_s_ == kNever ? 0.0 : uniform_next_s_;
-  uniform_next_s_ = base + exp_gap(uniform_rng_) / uniform_rate_Hz_;
-  if (uniform_next_s_ >= end_s_) uniform_rate_Hz_ = 0;  // exhausted (keep the value for peek)
+  const SpadTime base = uniform_started_ ? uniform_next_ : SpadTime{0, 0.0};
+  uniform_started_ = true;
+  uniform_next_ = shifted(base, exp_gap(uniform_rng_) / uniform_rate_Hz_);
+  if (uniform_next_.cycle >= laser_cycles_) uniform_rate_Hz_ = 0;  // exhausted (keep the value for peek)
 }
 
 void SpadPixelKernel::advance() {
   for (;;) {
     // Earliest pending arrival among the signal buffer, the uniform process and the afterpulses.
-    const double ts = signal_buf_.empty() ? kNever : signal_buf_.back();
-    const double tu = uniform_next_s_;
-    const double ta = afterpulse_q_.empty() ? kNever : afterpulse_q_.top();
-    const double t = std::min({ts, tu, ta});
-    if (!(t < end_s_)) {
-      next_avalanche_s_ = kNever;
+    const SpadTime ts = signal_buf_.empty() ? SpadTime::never_time() : signal_buf_.back();
+    const SpadTime tu = uniform_next_;
+    const SpadTime ta = afterpulse_q_.empty() ? SpadTime::never_time() : afterpulse_q_.top();
+    const SpadTime t = std::min({ts, tu, ta});
+    if (!(t.cycle < laser_cycles_)) {
+      next_avalanche_ = SpadTime::never_time();
       return;
     }
     const bool is_afterpulse = (t == ta && ta < ts && ta < tu);
@@ -103,20 +119,20 @@ void SpadPixelKernel::advance() {
       signal_buf_.pop_back();
       if (signal_buf_.empty() && signal_cycle_ >= 0) next_signal_cycle();
     } else if (t == tu && !is_afterpulse) {
-      if (uniform_rate_Hz_ > 0) next_uniform(); else uniform_next_s_ = kNever;
+      if (uniform_rate_Hz_ > 0) next_uniform(); else uniform_next_ = SpadTime::never_time();
     } else {
       afterpulse_q_.pop();
     }
     ++photons_;
-    if (t < dead_until_s_) continue;  // SPAD still recharging: lost (non-paralysable)
-    if (t < 0) continue;              // pulse tail before the first START
+    if (t < dead_until_) continue;  // SPAD still recharging: lost (non-paralysable)
+    if (t.cycle < 0) continue;      // pulse tail before the first START
     // Geiger avalanche: quench, dead time, maybe an afterpulse, jittered output edge.
-    dead_until_s_ = t + dead_time_s_;
+    dead_until_ = shifted(t, dead_time_s_);
     const double u_ap = uniform_open01(spad_rng_), g_ap = exp_gap(spad_rng_), z = standard_normal(spad_rng_);
-    if (afterpulse_on_ && u_ap < afterpulse_p_) afterpulse_q_.push(dead_until_s_ + afterpulse_tau_s_ * g_ap);
+    if (afterpulse_on_ && u_ap < afterpulse_p_) afterpulse_q_.push(shifted(dead_until_, afterpulse_tau_s_ * g_ap));
     if (is_afterpulse) ++afterpulses_;
     ++avalanches_;
-    next_avalanche_s_ = t + (jitter_on_ ? jitter_sigma_s_ * z : 0.0);
+    next_avalanche_ = jitter_on_ ? shifted(t, jitter_sigma_s_ * z) : t;
     return;
   }
 }

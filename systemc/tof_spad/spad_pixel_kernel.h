@@ -5,6 +5,10 @@
 // The kernel jumps from arrival to arrival (exponential gaps for the uniform part, geometric
 // skips over laser cycles without a signal photon), never per clock cycle.
 //
+// Times are relative (SpadTime): an integer laser cycle and a double offset within it, so the
+// resolution of an arrival is ulp(period), not ulp(integration time), however long the
+// integration (docs/numerical-stability.md).
+//
 // Randomness (systemc/random_stream.h): three counter-based streams per pixel, keyed by
 // (seed ^ salt, frame, row, column): signal photons, uniform photons, SPAD (afterpulse + jitter).
 // A switched-off source still consumes its draws, so switching one does not move the others.
@@ -35,16 +39,32 @@ struct SpadNoise {
   static SpadNoise none() { return {false, false, false, false, false}; }
 };
 
+// A time of the row integration: laser cycle (0 = the row's first START) and offset within it,
+// normalised to 0 <= offset_s < period (a negative cycle: before the first START).
+struct SpadTime {
+  long long cycle = 0;
+  double offset_s = 0;
+  bool operator<(const SpadTime& o) const { return cycle != o.cycle ? cycle < o.cycle : offset_s < o.offset_s; }
+  bool operator>(const SpadTime& o) const { return o < *this; }
+  bool operator==(const SpadTime& o) const { return cycle == o.cycle && offset_s == o.offset_s; }
+  bool operator<=(const SpadTime& o) const { return !(o < *this); }
+  bool never() const { return cycle == std::numeric_limits<long long>::max(); }
+  static SpadTime never_time() { return {std::numeric_limits<long long>::max(), 0.0}; }
+  static SpadTime earliest_time() { return {std::numeric_limits<long long>::min(), 0.0}; }
+};
+
 class SpadPixelKernel {
  public:
-  static constexpr double kNever = std::numeric_limits<double>::infinity();
 
   // `laser_cycles` periods of `cfg.laser` starting at t = 0 (the row's first START).
   SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& rates, const SpadNoise& noise, long long laser_cycles,
                   std::uint64_t seed, std::uint64_t frame, std::uint32_t row, std::uint32_t column);
 
-  // Output time (s, from the first START) of the next avalanche, kNever when none is left.
-  double peek() const { return next_avalanche_s_; }
+  // Output time of the next avalanche (never() when none is left).
+  SpadTime peek() const { return next_avalanche_; }
+  bool done() const { return next_avalanche_.never(); }
+  // The same in seconds from the first START (diagnostics: rounds to ulp of the absolute time).
+  double peek_s() const { return static_cast<double>(next_avalanche_.cycle) * period_s_ + next_avalanche_.offset_s; }
   // Consumes the avalanche returned by peek() and finds the next one.
   void pop() { advance(); }
 
@@ -56,8 +76,11 @@ class SpadPixelKernel {
   void advance();
   void next_signal_cycle();
   void next_uniform();
+  // t + dt_s, normalised into its cycle (never() past any representable cycle).
+  SpadTime shifted(SpadTime t, double dt_s) const;
 
-  double period_s_, end_s_;           // laser period; end of the integration
+  double period_s_;                   // laser period
+  long long laser_cycles_;            // end of the integration (cycle index past the last)
   double signal_per_cycle_;           // mean signal photons per laser cycle
   double uniform_rate_Hz_;            // background + dark (switched)
   double round_trip_s_, pulse_sigma_s_, jitter_sigma_s_;  // echo centre, pulse sigma, jitter rms
@@ -65,11 +88,12 @@ class SpadPixelKernel {
   bool jitter_on_, afterpulse_on_;
   pcg32 signal_rng_, uniform_rng_, spad_rng_;  // the three keyed streams
   long long signal_cycle_ = -1;       // laser cycle of the buffered signal photons
-  std::vector<double> signal_buf_;    // signal photon times of that cycle, descending (pop_back = earliest)
-  double uniform_next_s_ = kNever;    // next uniform (background/dark) arrival
-  std::priority_queue<double, std::vector<double>, std::greater<double>> afterpulse_q_;  // pending afterpulses
-  double dead_until_s_ = -kNever;     // SPAD recharged at this time
-  double next_avalanche_s_ = kNever;  // output time of the next avalanche
+  std::vector<SpadTime> signal_buf_;  // signal photon times of that cycle, descending (pop_back = earliest)
+  SpadTime uniform_next_ = SpadTime::never_time();  // next uniform (background/dark) arrival
+  bool uniform_started_ = false;      // the first uniform gap is drawn from t = 0
+  std::priority_queue<SpadTime, std::vector<SpadTime>, std::greater<SpadTime>> afterpulse_q_;  // pending afterpulses
+  SpadTime dead_until_ = SpadTime::earliest_time();  // SPAD recharged at this time
+  SpadTime next_avalanche_ = SpadTime::never_time();  // output time of the next avalanche
   long long avalanches_ = 0, photons_ = 0, afterpulses_ = 0;
 };
 

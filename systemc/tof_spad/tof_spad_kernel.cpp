@@ -26,6 +26,18 @@ TofSpadKernel::TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, co
   laser_cycles_ = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
   cycles_per_word_ = static_cast<long long>(std::ceil(clock_Hz() / cfg.histogram.readout_word_rate_Hz - 1e-9));
   aggregation_blocker_ = spad_aggregation_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
+  background_blocker_ = spad_background_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
+}
+
+std::optional<GroupHistogram> TofSpadKernel::simulate_group_background(std::uint64_t frame, int row, int group,
+                                                                       const RateSource& rates) const {
+  const int cpt = cfg_.tdc.columns_per_tdc;
+  std::vector<PixelRates> px;
+  for (int k = 0; k < cpt; ++k) px.push_back(rates(row, group * cpt + k));
+  if (!spad_group_background_only(px)) return std::nullopt;
+  const bool no_arrivals = !(opt_.noise.background && px.front().background_Hz > 0) && !(opt_.noise.dark && cfg_.spad.dark_count_rate_Hz > 0);
+  if (!background_blocker_.empty() && !no_arrivals) return std::nullopt;
+  return background_spad_group(cfg_, opt_.noise, bins_, px, laser_cycles_, opt_.seed, frame, row, group * cpt);
 }
 
 GroupHistogram TofSpadKernel::simulate_group_aggregated(std::uint64_t frame, int row, int group, const RateSource& rates) const {
@@ -49,13 +61,14 @@ int TofSpadKernel::phase_bin(double phase_s) const {
 
 GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const {
   if (!opt_.event_skipping) return simulate_group_ticked(frame, row, group, rates);
+  if (opt_.sparse)
+    if (auto g = simulate_group_background(frame, row, group, rates)) return *g;
   if (opt_.aggregate && aggregation_blocker_.empty()) {
     std::vector<PixelRates> pr;
     for (int k = 0; k < cfg_.tdc.columns_per_tdc; ++k) pr.push_back(rates(row, group * cfg_.tdc.columns_per_tdc + k));
     if (spad_group_aggregatable(pr)) return simulate_group_aggregated(frame, row, group, rates);
   }
   const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
-  const double period_s = 1.0 / cfg_.laser.repetition_rate_Hz;
   std::vector<SpadPixelKernel> px;
   px.reserve(static_cast<size_t>(cpt));
   for (int k = 0; k < cpt; ++k) {
@@ -67,15 +80,14 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
   TdcGroupKernel tdc(np, nc, block_event_bins_, block_overflow_bins_, laser_cycles_, cpt);
   for (;;) {
     int who = -1;
-    double t = SpadPixelKernel::kNever;
+    SpadTime t = SpadTime::never_time();
     for (int k = 0; k < cpt; ++k)  // arbitration: the earliest avalanche of the group
       if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
     if (who < 0) break;
     px[static_cast<size_t>(who)].pop();
-    if (t < 0) { tdc.lose(); continue; }  // jittered before the first START
-    const long long cycle = static_cast<long long>(t / period_s);
-    if (cycle >= laser_cycles_) break;
-    tdc.hit(who, cycle, phase_bin(t - static_cast<double>(cycle) * period_s));
+    if (t.cycle < 0) { tdc.lose(); continue; }  // jittered before the first START
+    if (t.cycle >= laser_cycles_) break;
+    tdc.hit(who, t.cycle, phase_bin(t.offset_s));  // cycle and offset: exact at any integration time
   }
   GroupHistogram g = tdc.finish();
   for (const auto& p : px) g.avalanches += p.avalanches(), g.photons += p.photons();
@@ -84,7 +96,6 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
 
 GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row, int group, const RateSource& rates) const {
   const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
-  const double period_s = 1.0 / cfg_.laser.repetition_rate_Hz;
   std::vector<SpadPixelKernel> px;
   px.reserve(static_cast<size_t>(cpt));
   for (int k = 0; k < cpt; ++k) {
@@ -96,28 +107,25 @@ GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row
   g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
   g.armed.assign(static_cast<size_t>(nc), 0);
   // Arbitration: the pixel with the earliest pending avalanche (-1: none left).
-  auto earliest = [&](double& t) {
+  auto earliest = [&](SpadTime& t) {
     int who = -1;
-    t = SpadPixelKernel::kNever;
+    t = SpadTime::never_time();
     for (int k = 0; k < cpt; ++k)
       if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
     return who;
   };
   // Absolute code (cycle * Np + phase bin) of an avalanche time.
-  auto abs_bin_of = [&](double t) {
-    const long long cycle = static_cast<long long>(t / period_s);
-    return cycle * np + phase_bin(t - static_cast<double>(cycle) * period_s);
-  };
-  double t = 0;
+  auto abs_bin_of = [&](const SpadTime& t) { return t.cycle * np + phase_bin(t.offset_s); };
+  SpadTime t;
   // Avalanches jittered before the first START find the TDC not yet running.
-  for (int who = earliest(t); who >= 0 && t < 0; who = earliest(t)) px[static_cast<size_t>(who)].pop(), ++g.lost_busy;
+  for (int who = earliest(t); who >= 0 && t.cycle < 0; who = earliest(t)) px[static_cast<size_t>(who)].pop(), ++g.lost_busy;
   const long long end_bin = laser_cycles_ * np;
   long long armed_from = 0;  // TDC armed in cycles >= armed_from (busy / stopped before)
   for (long long c = 0; c < end_bin; ++c) {
     const int phase = static_cast<int>(c % np);
     const bool armed = c >= armed_from;  // state during this cycle, before its hits
     for (int who = earliest(t); who >= 0; who = earliest(t)) {
-      if (static_cast<long long>(t / period_s) >= laser_cycles_) break;  // after the integration
+      if (t.cycle >= laser_cycles_) break;  // after the integration
       const long long abs_bin = abs_bin_of(t);
       if (abs_bin > c) break;  // a later cycle
       px[static_cast<size_t>(who)].pop();
@@ -159,6 +167,20 @@ PixelResult TofSpadKernel::make_pixel(int row, int column, const GroupHistogram&
   return p;
 }
 
+void TofSpadKernel::count_group(FrameResult& f, int row, int group, const GroupHistogram& g, const RateSource& rates) const {
+  f.avalanches += g.avalanches, f.photons += g.photons;
+  if (g.background_class) {
+    ++f.groups_background;
+    return;
+  }
+  ++(g.aggregated ? f.groups_aggregated : f.groups_per_cycle);
+  if (opt_.sparse && !g.aggregated) {
+    std::vector<PixelRates> px;
+    for (int k = 0; k < cfg_.tdc.columns_per_tdc; ++k) px.push_back(rates(row, group * cfg_.tdc.columns_per_tdc + k));
+    if (spad_group_background_only(px)) ++f.groups_background_per_cycle;
+  }
+}
+
 FrameResult TofSpadKernel::run_frame(std::uint64_t frame, const PixelSelection& sel, const RateSource& rates) const {
   FrameResult f;
   f.frame = static_cast<long long>(frame);
@@ -171,8 +193,7 @@ FrameResult TofSpadKernel::run_frame(std::uint64_t frame, const PixelSelection& 
       for (int gi = sel.first_group; gi < sel.first_group + sel.groups; ++gi) {
         const GroupHistogram g = simulate_group(frame, row, gi, rates);
         starts = g.starts;
-        f.avalanches += g.avalanches, f.photons += g.photons;
-        ++(g.aggregated ? f.groups_aggregated : f.groups_per_cycle);
+        count_group(f, row, gi, g, rates);
         for (int k = 0; k < cpt; ++k) f.pixels.push_back(make_pixel(row, gi * cpt + k, g, k));
       }
     }

@@ -22,6 +22,7 @@ struct TofSpadKernelOptions {
   SpadNoise noise;              // noise switches
   bool event_skipping = true;   // false: the TDC group is clocked every cycle (simulate_group_ticked)
   bool aggregate = false;       // true: groups whose laser cycles are independent drawn at once (spad_aggregation.h)
+  bool sparse = false;          // true: background-only groups (no echo) as one class, in closed form where exact
 };
 
 // Histogram memory of one TDC group after one row integration.
@@ -34,6 +35,7 @@ struct GroupHistogram {
   long long avalanches = 0;                    // all avalanches of the group
   long long photons = 0;                       // photon + dark arrivals of the group (incl. lost)
   bool aggregated = false;                     // drawn by aggregate_spad_group (else cycle by cycle)
+  bool background_class = false;               // background-only group drawn by background_spad_group
 };
 
 // One pixel's result in a frame.
@@ -53,6 +55,8 @@ struct FrameResult {
   std::vector<PixelResult> pixels;          // simulated pixels, row-major
   long long avalanches = 0, photons = 0;    // over the simulated pixels
   long long groups_aggregated = 0, groups_per_cycle = 0;  // which path ran, per simulated TDC group
+  long long groups_background = 0;          // background-only groups drawn as a class (sparse)
+  long long groups_background_per_cycle = 0;  // background-only groups run per cycle (blocker)
 };
 
 // Pixel subset: rows and TDC groups (columns [g cpt, (g+1) cpt)) simulated; the other rows only
@@ -82,10 +86,17 @@ class TofSpadKernel {
   GroupHistogram simulate_group_aggregated(std::uint64_t frame, int row, int group, const RateSource& rates) const;
   // Why this configuration needs the per-cycle path (empty: aggregation exact for identical pixels).
   const std::string& aggregation_blocker() const { return aggregation_blocker_; }
+  // Why background-only groups need the per-cycle path (empty: the class's closed form is exact).
+  const std::string& background_blocker() const { return background_blocker_; }
+  // The sparse path of a background-only group: the class's closed form when exact (blocker empty
+  // or no background at all), else nullopt (the caller runs the group per cycle).
+  std::optional<GroupHistogram> simulate_group_background(std::uint64_t frame, int row, int group, const RateSource& rates) const;
   // Estimator of the golden model on one pixel's histogram.
   std::optional<double> estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const;
   PixelResult make_pixel(int row, int column, const GroupHistogram& g, int index) const;
 
+  // Adds a simulated group to the frame's totals and path counters.
+  void count_group(FrameResult& f, int row, int group, const GroupHistogram& g, const RateSource& rates) const;
   // Whole frame: every row in turn (integration then readout), cycles counted by the sequencer.
   FrameResult run_frame(std::uint64_t frame, const PixelSelection& sel, const RateSource& rates) const;
 
@@ -113,7 +124,7 @@ class TofSpadKernel {
   double share_;
   long long laser_cycles_, cycles_per_word_;
   int block_event_bins_, block_overflow_bins_;
-  std::string aggregation_blocker_;
+  std::string aggregation_blocker_, background_blocker_;
 };
 
 }  // namespace rangesim::systemc::spad

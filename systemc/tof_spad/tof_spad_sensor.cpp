@@ -42,8 +42,7 @@ void TofSpadSensor::sequencer() {
         for (int gi = sel_.first_group; gi < sel_.first_group + sel_.groups; ++gi) {
           groups.push_back(kernel_.simulate_group(static_cast<std::uint64_t>(fr), row, gi, rates_));
           starts = groups.back().starts;
-          f.avalanches += groups.back().avalanches, f.photons += groups.back().photons;
-          ++(groups.back().aggregated ? f.groups_aggregated : f.groups_per_cycle);
+          kernel_.count_group(f, row, gi, groups.back(), rates_);
         }
       }
       // Event skipping: the integration is one wait of its whole length.

@@ -22,14 +22,15 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);  // stdout is the JSON and nothing else
   for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
-                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "threads2_vs_1", "realtime_factor"}) {
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "sparse_vs_dense_spad", "threads2_vs_1",
+                          "realtime_factor"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_number() || j[key].is_null()) << key;
     EXPECT_TRUE(j["targets"].contains(key)) << key;
     if (j[key].is_null()) EXPECT_TRUE(j["details"][key].contains("note")) << key << ": a missing figure says why";
   }
   for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel",
-                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "realtime_factor"}) {
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "sparse_vs_dense_spad", "realtime_factor"}) {
     ASSERT_TRUE(j[key].is_number()) << key << " is measured by the bench itself";
     EXPECT_GT(j[key].get<double>(), 0.0) << key;
   }
@@ -37,7 +38,9 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   EXPECT_TRUE(j["checks_passed"].get<bool>()) << j["checks"].dump();
   for (const char* check : {"sparse_equals_dense", "rtl_equals_model", "systemc_equals_kernel",
                             "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical",
-                            "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle"}) {
+                            "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle",
+                            "spad_sparse_cycles_identical", "spad_sparse_lit_pixels_identical",
+                            "spad_sparse_background_statistically_identical"}) {
     ASSERT_TRUE(j["checks"].contains(check)) << check;
     EXPECT_TRUE(j["checks"][check].get<bool>()) << check;
   }
@@ -109,6 +112,30 @@ TEST(SkippingSwitches, SpadPresetRunsPerCycleAndNoAggregateChangesNothing) {
   EXPECT_GT(a["aggregation"]["groups_per_cycle"].get<long long>(), 0);
   EXPECT_EQ(a["range_error_rms_m"], b["range_error_rms_m"]);
   EXPECT_EQ(a["avalanches_simulated"], b["avalanches_simulated"]);
+}
+
+// tof-spad background-only pixels (outside the [beam] spot of tof-spad-spot.toml): with the
+// preset's dependent cycles they run per cycle and the summary says why; their spurious
+// detections stay out of the range error. Noise-free they have no arrivals, so the class's
+// (empty) histograms are exact: sparse and --dense (the whole array, one by one) give the same
+// range error over the lit pixels and no background detection.
+TEST(SkippingSwitches, SpadBackgroundOnlyPixelsOfABeamSpot) {
+  const std::string s = "tof-spad --scene '" + scene("tof-spad-spot.toml") + "' --kernel-only";
+  const auto a = simulate(s);
+  EXPECT_TRUE(a["sparse"].get<bool>());
+  EXPECT_EQ(a["background_only"]["points"].get<long long>(), 16 * 32 - 8 * 8);
+  EXPECT_EQ(a["background_only"]["groups_per_cycle"].get<long long>(), (16 * 32 - 8 * 8) / 4);
+  EXPECT_EQ(a["background_only"]["groups_class"].get<long long>(), 0);
+  EXPECT_NE(a["background_only"]["blocker"].get<std::string>().find("afterpulses"), std::string::npos);
+  EXPECT_LT(a["range_error_rms_m"].get<double>(), 0.05);  // lit pixels only
+  const auto q = simulate(s + " --noise-free"), d = simulate(s + " --noise-free --dense");
+  EXPECT_EQ(q["background_only"]["groups_class"].get<long long>(), (16 * 32 - 8 * 8) / 4);
+  EXPECT_EQ(d["background_only"]["groups_class"].get<long long>(), 0);
+  EXPECT_EQ(d["background_only"]["points"].get<long long>(), 128 * 128 - 8 * 8);
+  EXPECT_EQ(q["range_error_rms_m"], d["range_error_rms_m"]);
+  EXPECT_EQ(q["cycles"], d["cycles"]);
+  EXPECT_EQ(q["background_only"]["detections"].get<long long>(), 0);
+  EXPECT_EQ(d["background_only"]["detections"].get<long long>(), 0);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 //   - kernel histograms are consistent (events <= armed cycles <= STARTs) at any rate;
 //   - 95% confidence intervals of the kernel's events per histogram cover golden's exact mean;
 //   - hazards: zero-truncated Poisson inversion underflow at > 745 photons per cycle (kernel);
+//     photon phases exact after 100 s of integration (relative times, kernel);
 //     Coates hazard rounding to 1 read as an empty bin (golden estimator).
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -205,7 +206,7 @@ TEST(SpadHazards, ManyPhotonsPerCycleArePoisson) {
   const double mu = 1000, cycles = 50;
   SpadPixelKernel px(cfg, {mu * cfg.laser.repetition_rate_Hz, 0, 10e-9}, SpadNoise::none(), static_cast<long long>(cycles), 5, 0, 0, 0);
   long long n = 0;
-  while (px.peek() < SpadPixelKernel::kNever && n < 100000000) px.pop(), ++n;
+  while (!px.done() && n < 100000000) px.pop(), ++n;
   EXPECT_NEAR(static_cast<double>(px.photons()), mu * cycles, 5 * std::sqrt(mu * cycles));
 }
 
@@ -244,6 +245,58 @@ TEST(SpadKernelStress, ConfidenceIntervalsCoverTheMean) {
   }
   RecordProperty("covered_of_200", covered);
   EXPECT_GE(covered, 182);
+}
+
+// Hazard: photon times were absolute double seconds, so the phase within the laser cycle kept
+// only ulp(t) (1.4e-14 s at 100 s). Times are now (laser cycle, offset): a delta echo 1-5 fs past a
+// bin edge lands in that bin at any cycle of a 100 s integration (4e9 laser cycles, reached by
+// geometric skips), exactly as at t = 0; the absolute form put every photon past 64 s in the bin
+// below (counted here as the test's proof of power).
+TEST(SpadHazards, PhotonPhaseExactAfterHundredSeconds) {
+  TofSpadConfig cfg;
+  cfg.spad.dead_time_s = 0;
+  cfg.tdc.busy_time_s = 0;
+  cfg.tdc.columns_per_tdc = 1;
+  cfg.histogram.integration_time_s = 100.0;
+  TofSpadKernelOptions o;
+  o.noise = SpadNoise::none();  // delta echo, no background: every avalanche is the echo
+  const TofSpadKernel k(cfg, 1, 1, o);
+  ASSERT_GE(k.laser_cycles(), 4000000000LL);
+  // An echo just past a bin edge, placed so that the absolute form rounds it below the edge: in
+  // [64 s, 128 s) a double holds multiples of q = 2^-46 s (1.4e-14 s) and cycle x period is on that
+  // grid, so the old phase t - cycle x period was the echo offset rounded to a multiple of q.
+  const double q = std::ldexp(1.0, -46);
+  int code = -1;
+  double rt = 0;
+  for (int i = 10; i < k.codes() - 10 && code < 0; ++i) {
+    const double e = k.bins().edges_s[static_cast<size_t>(i)], below = std::fmod(e, q);
+    if (below > 0.1 * q && below < 0.4 * q) code = i, rt = e - below + 0.45 * q;  // e < rt; rt rounds to e - below
+  }
+  ASSERT_GE(code, 0);
+  ASSERT_EQ(k.phase_bin(rt), code);
+  const PixelRates r{400.0 / cfg.histogram.integration_time_s, 0, rt};  // ~400 photons over 100 s
+  SpadPixelKernel px(cfg, r, o.noise, k.laser_cycles(), o.seed, 0, 0, 0);  // the stream simulate_group uses
+  const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
+  long long n = 0, late = 0, off = 0, absolute_off = 0;
+  for (; !px.done(); px.pop(), ++n) {
+    const SpadTime t = px.peek();
+    off += k.phase_bin(t.offset_s) != code;
+    late += t.cycle > k.laser_cycles() * 9 / 10;
+    // What the absolute form made of it (shows that this test catches the hazard).
+    const double t_abs = static_cast<double>(t.cycle) * period_s + t.offset_s;
+    const double cycle_abs = std::floor(t_abs / period_s);
+    absolute_off += k.phase_bin(t_abs - cycle_abs * period_s) != code;
+  }
+  EXPECT_GT(n, 300);
+  EXPECT_GT(late, 20);  // photons near 90-100 s were checked
+  EXPECT_EQ(off, 0);
+  EXPECT_GT(absolute_off, n / 5);  // the photons past 64 s, in the absolute form
+  // The whole TDC path: every event of the 100 s histogram in that code.
+  const GroupHistogram g = k.simulate_group(0, 0, 0, [&](int, int) { return r; });
+  long long in_code = g.events[0][code], total = 0;
+  for (long long e : g.events[0]) total += e;
+  EXPECT_EQ(total, n);
+  EXPECT_EQ(in_code, n);
 }
 
 }  // namespace

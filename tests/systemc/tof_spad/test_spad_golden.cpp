@@ -177,8 +177,8 @@ TEST(SpadGolden, DeadTimeAndAfterpulses) {
   SpadPixelKernel px(cfg, {0, 5e6, 0}, noise, std::llround(2e-3 * cfg.laser.repetition_rate_Hz), 3, 0, 0, 0);
   double last = -1;
   long long n = 0;
-  while (px.peek() < SpadPixelKernel::kNever) {
-    const double t = px.peek();
+  while (!px.done()) {
+    const double t = px.peek_s();
     if (last >= 0) {
       EXPECT_GE(t - last, cfg.spad.dead_time_s * (1 - 1e-9));
     }
