@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -21,6 +23,23 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// CPU time of the whole process (all threads, finished ones included).
+double process_cpu_s() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// A sweep on `threads` threads; `cpu_s` receives the process CPU time it took.
+mc::McSweepResult timed_sweep(const mc::McModel& model, const std::vector<mc::McSweepPoint>& points,
+                              mc::McSweepOptions opt, int threads, double& cpu_s) {
+  opt.threads = threads;
+  const double cpu0 = process_cpu_s();
+  mc::McSweepResult r = mc::run_mc_sweep(model, points, opt, nullptr);
+  cpu_s = process_cpu_s() - cpu0;
+  return r;
+}
 
 }  // namespace
 
@@ -42,16 +61,19 @@ McBenchFigures measure_mc_bench(bool quick) {
   opt.seed = 7;
 
   McBenchFigures f;
+  double load[1];
+  if (getloadavg(load, 1) == 1) f.load_average_1min = load[0];
   // Warm-up (page faults, caches, CPU frequency) on a tenth of the trials, not measured.
   opt.threads = 1;
   opt.trials /= 10;
   mc::run_mc_sweep(model, points, opt, nullptr);
   opt.trials *= 10;
-  const mc::McSweepResult r1 = mc::run_mc_sweep(model, points, opt, nullptr);
+  const mc::McSweepResult r1 = timed_sweep(model, points, opt, 1, f.sweep_1thread_cpu_s);
   f.sweep_1thread_s = r1.wall_s;
-  opt.threads = 2;
-  const mc::McSweepResult r2 = mc::run_mc_sweep(model, points, opt, nullptr);
+  const mc::McSweepResult r2 = timed_sweep(model, points, opt, 2, f.sweep_2threads_cpu_s);
   f.sweep_2threads_s = r2.wall_s;
+  f.cpu_share_2threads = f.sweep_2threads_cpu_s / (2 * f.sweep_2threads_s);
+  f.cpu_2threads_vs_1 = f.sweep_2threads_cpu_s / f.sweep_1thread_cpu_s;
   for (std::size_t i = 0; i < points.size(); ++i)
     if (r1.stats[i]->to_record() != r2.stats[i]->to_record())
       throw std::runtime_error("bench_mc: 1- and 2-thread sweeps differ at point " + std::to_string(i));

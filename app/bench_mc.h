@@ -17,6 +17,13 @@ struct McBenchFigures {
   double bare_variates_per_s = 0;  // variates drawn by the bare loop per second
   double sweep_1thread_s = 0;      // wall time of the sweep on 1 thread
   double sweep_2threads_s = 0;     // wall time of the same sweep on 2 threads
+  // Why threads2_vs_1 falls short of 2, apart: the process CPU time of each sweep; cpu_share_2threads
+  // = sweep_2threads_cpu_s / (2 sweep_2threads_s) is ~1 when the machine gave the sweep two cores
+  // throughout (lower: other load, or workers idle at the end); cpu_2threads_vs_1 = CPU time on 2
+  // threads over 1 is ~1 unless the threads slow each other down (caches, allocator, SMT siblings).
+  double sweep_1thread_cpu_s = 0, sweep_2threads_cpu_s = 0;
+  double cpu_share_2threads = 0, cpu_2threads_vs_1 = 0;
+  double load_average_1min = -1;   // of the machine just before the sweeps (-1: unknown)
 };
 
 // Throws std::runtime_error if the 1- and 2-thread sweeps differ in any bit.

@@ -62,6 +62,9 @@ class LsConventionalSensorKernel {
   std::vector<FrameResult> run_frames(long long frames, long long cycle_budget = 0);
 
   const std::vector<FrameResult>& results() const { return results_; }
+  // Forgets the stored results: a caller that takes each frame from run_frames() (Monte Carlo
+  // trials, one frame each) keeps memory bounded instead of growing by one result per frame.
+  void clear_results() { results_.clear(); }
   const std::vector<std::string>& errors() const { return errors_; }  // protocol violations
   long long cycle() const { return sequencer_.cycle(); }
   long long ticks() const { return ticks_; }  // clock edges actually evaluated (tick mode)

@@ -18,6 +18,11 @@ McBenchHookResult mc_bench_hook(bool quick) {
                  {"bare_variates_per_s", f.bare_variates_per_s},
                  {"sweep_1thread_s", f.sweep_1thread_s},
                  {"sweep_2threads_s", f.sweep_2threads_s},
+                 {"sweep_1thread_cpu_s", f.sweep_1thread_cpu_s},
+                 {"sweep_2threads_cpu_s", f.sweep_2threads_cpu_s},
+                 {"cpu_share_2threads", f.cpu_share_2threads},
+                 {"cpu_2threads_vs_1", f.cpu_2threads_vs_1},
+                 {"load_average_1min", f.load_average_1min},
                  {"threads_identical", true}};
   } catch (const std::exception& e) {
     // measure_mc_bench throws when the 1- and 2-thread sweeps differ: an identity failure.

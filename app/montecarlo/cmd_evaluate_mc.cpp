@@ -17,6 +17,7 @@
 #include "app/evaluation_output.h"
 #include "app/montecarlo/mc_model.h"
 #include "app/montecarlo/mc_output.h"
+#include "app/montecarlo/mc_stuck_hook.h"
 #include "app/montecarlo/mc_sweep.h"
 #include "app/output_dir.h"
 #include "app/plot.h"
@@ -103,7 +104,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   // Validate everything before computing or touching the output directory.
   const ParamSet params = evaluate_params(opt);
   mc::McSweepOptions sopt = sweep_options(opt);
-  const std::unique_ptr<mc::McModel> model = mc::make_mc_model(params);
+  const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(mc::make_mc_model(params), sopt.seed);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
   OutputDir out(dir, "--out");
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
@@ -126,11 +127,15 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
     long long have = 0;  // records in the journal (read only: abandoned workers may still append)
     std::ifstream in(journal.path());
     for (std::string line; std::getline(in, line);) have += line.rfind("P ", 0) == 0;
-    fmt::print(stderr,
-               "\nrangesim evaluate: {}: {} of {} points finished and kept in {}; nothing else written.\n"
-               "To continue, run:\n  {}\n",
+    fmt::print(stderr, "\nrangesim evaluate: {}: {} of {} points finished and kept in {}; nothing else written.\n",
                r.out_of_time ? fmt::format("--max-seconds {} exceeded", sopt.max_seconds) : "interrupted", have,
-               points.size(), journal.path(), resume_command(opt, dir));
+               points.size(), journal.path());
+    for (std::size_t k : r.stuck_points)
+      fmt::print(stderr,
+                 "rangesim evaluate: abandoned a trial still running {:g} s after the stop (signal {:g} {}, "
+                 "background {:g} {}): ending the process now\n",
+                 sopt.stop_grace_s, points[k].signal, ev.signal.unit, points[k].background, ev.background.unit);
+    fmt::print(stderr, "To continue, run:\n  {}\n", resume_command(opt, dir));
     if (r.abandoned) {
       std::fflush(stderr);
       std::_Exit(r.out_of_time ? kExitBudget : kExitInterrupted);  // workers still running: no unwinding

@@ -29,10 +29,11 @@ class Runner : public McPointRunner {
   }
 
   McTrial trial(long long t) override {
-    if (static_cast<std::size_t>(t) != kernel_.results().size())
-      throw std::logic_error("LsConventionalMc: trials out of order");
+    if (t != next_trial_) throw std::logic_error("LsConventionalMc: trials out of order");
+    ++next_trial_;
     // The kernel's own budget (2 frame accesses' worth) bounds the trial.
     const systemc::FrameResult r = kernel_.run_frames(1).front();
+    kernel_.clear_results();  // memory stays bounded however many trials a point takes
     McTrial out;
     const auto& row = r.rows.front();
     out.detected = row.count > 0;
@@ -67,6 +68,7 @@ class Runner : public McPointRunner {
   SpotPlacement spot_;
   double signal_V_, background_V_;
   systemc::LsConventionalSensorKernel kernel_;
+  long long next_trial_ = 0;  // = the kernel's frame counter: trial t is frame access t
 };
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "app/montecarlo/mc_sweep.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -100,6 +101,7 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
     std::vector<std::size_t> todo;
     std::vector<std::optional<McPointStats>> stats;
     std::vector<long long> point_variates;
+    std::vector<std::size_t> in_progress;  // entries of `points` being computed (under mutex)
   };
   auto sh = std::make_shared<Shared>();
   sh->todo = todo;
@@ -115,7 +117,15 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
         const std::size_t k = sh->next.fetch_add(1);
         if (k >= sh->todo.size()) break;
         const std::size_t i = sh->todo[k];
+        {
+          std::lock_guard<std::mutex> lock(sh->mutex);
+          sh->in_progress.push_back(i);
+        }
         PointOutcome o = run_point(model, points[i], opt, sh->halt);
+        {
+          std::lock_guard<std::mutex> lock(sh->mutex);
+          sh->in_progress.erase(std::find(sh->in_progress.begin(), sh->in_progress.end(), i));
+        }
         if (!o.finished) break;
         if (journal) journal->append(points[i].index, o.stats.to_record());
         sh->stats[i] = o.stats;  // distinct element per point: no race
@@ -153,6 +163,8 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
       if (sh->halt && !sh->failure && halted_at >= 0 && elapsed - halted_at > opt.stop_grace_s) {
         for (auto& t : pool) t.detach();
         res.abandoned = true;
+        res.stuck_points = sh->in_progress;
+        std::sort(res.stuck_points.begin(), res.stuck_points.end());
         res.wall_s = elapsed;
         return res;
       }

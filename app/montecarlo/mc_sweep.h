@@ -47,6 +47,7 @@ struct McSweepResult {
   bool out_of_time = false;        // max_seconds exceeded
   bool abandoned = false;          // workers did not return within stop_grace_s of a stop: the
                                    // caller must end the process now (std::_Exit); journal is safe
+  std::vector<std::size_t> stuck_points;  // abandoned: entries of `points` whose trials were still running
   long long trials_run = 0;        // trials run in this process (not from the journal)
   long long variates = 0;          // random variates drawn in this process (-1: not counted)
   long long points_from_journal = 0;

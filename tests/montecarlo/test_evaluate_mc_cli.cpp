@@ -1,7 +1,8 @@
 // `rangesim evaluate --trials` end to end through the built binary: byte-identical output for 1
 // and 2 threads on every sensor; a sweep killed with SIGKILL part-way and restarted with --resume
 // gives byte-identical output; Ctrl-C (SIGINT) stops cleanly, keeps the journal and prints the
-// command that resumes; a journal of other options is refused; the time budget ends with exit 4.
+// command that resumes; a journal of other options is refused; the time budget ends with exit 4;
+// a stuck trial is abandoned after the grace time.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -173,6 +174,38 @@ TEST(EvaluateMcCli, TimeBudgetEndsWithExit4AndKeepsTheJournal) {
   EXPECT_NE(r.err.find("--resume"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir + "/.staging-sweep/evaluate.journal"));
   EXPECT_FALSE(fs::exists(dir + "/summary.json"));
+}
+
+// A trial stuck beyond every budget (injected: RANGESIM_TEST_STUCK_POINT, app/montecarlo/mc_stuck_hook.h
+// makes trial 0 of the last grid point never return): after --max-seconds the process waits the
+// 10 s grace time, names the abandoned point, exits 4 with the finished points in the journal, and
+// the printed --resume command (without the hook) completes byte-identical to an uninterrupted run.
+TEST(EvaluateMcCli, StuckTrialIsAbandonedWithExit4AndResumeCompletes) {
+  const std::string sweep =
+      "evaluate ls-conventional --signal 0.05:0.2:3 --background 0.003:0.003:1 --trials 50 --no-plots --threads 1";
+  const std::string tmp = make_temp_dir(), dir = tmp + "/s";
+  const CommandResult ref = run_command(kBin + " " + sweep + " --out " + tmp + "/ref");
+  ASSERT_EQ(ref.exit_code, 0) << ref.err;
+  const auto t0 = std::chrono::steady_clock::now();
+  const CommandResult r =
+      run_command("RANGESIM_TEST_STUCK_POINT=2 " + kBin + " " + sweep + " --max-seconds 1 --out " + dir);
+  const double took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_GE(took_s, 10.0);  // the grace time was granted
+  EXPECT_LT(took_s, 120.0);
+  EXPECT_NE(r.err.find("--max-seconds 1 exceeded: 2 of 3 points finished"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("abandoned a trial still running 10 s after the stop (signal 0.2 V, background 0.003 V)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(journal_records(dir), 2);
+  EXPECT_FALSE(fs::exists(dir + "/summary.json"));
+  const size_t at = r.err.find("  rangesim evaluate ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const std::string cmd = r.err.substr(at + 2, r.err.find('\n', at) - at - 2);
+  const CommandResult resumed = run_command(kBin + cmd.substr(std::string("rangesim").size()));
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("resuming: 2 points"), std::string::npos) << resumed.err;
+  EXPECT_EQ(files_of(dir), files_of(tmp + "/ref"));
 }
 
 TEST(EvaluateMcCli, TrialCapIsReported) {
