@@ -361,9 +361,80 @@ CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::
   return run_periodic(cfg, period, periods, mean_current_A(period));
 }
 
+CorrelatorOutput correlate_stepped(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
+                                   double lpf_start_A) {
+  return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+}
+
+// Transient periods stepped (their noise kernels kept: O(M S)), then the N - M identical periods
+// in the periodic state aggregated (PeriodicShotNoise), their G at the start continued backwards
+// through the stepped ones. M: the periods until the LPF's distance from its periodic state,
+// |x - x_ss| e^{-m T0 / tau}, is below 1e-17 of the currents (rounding of the periodic state).
 CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
                                 double lpf_start_A) {
-  return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+  const size_t S = period.size();
+  if (S == 0 || periods <= 0) return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+  const double tau = cfg.suppression.lpf_time_constant_s, dc0 = period.front().dc_A;
+  const double x_ss = lpf_periodic_offset_A(cfg, period), x0 = lpf_start_A - dc0;
+  double T0 = 0, ref = std::fabs(x_ss);
+  for (const auto& s : period) T0 += s.duration_s, ref = std::max(ref, std::fabs((s.dc_A - dc0) + s.ac_A));
+  const double gap = std::fabs(x0 - x_ss);
+  const double m = gap > 1e-17 * ref ? std::ceil(tau / T0 * std::log(gap / (1e-17 * std::max(ref, 1e-300)))) : 0.0;
+  const long long M = static_cast<long long>(std::min<double>(m, periods));
+  if (M >= periods) return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+  const long long R = periods - M;
+  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
+  CorrelatorOutput out;
+  std::vector<double> k(static_cast<size_t>(M) * S);
+  double x = x0, T = 0, clipped = 0;
+  for (size_t j = 0; j < k.size(); ++j) {  // the transient, segment by segment
+    const Segment& s = period[j % S];
+    const LogIntegral li = segment_log_integral(cfg, s, x, dc0, s.duration_s);
+    const double C = capacitance_F(cfg, s.branch);
+    (s.branch > 0 ? out.plus_V : out.minus_V) += gain_V(cfg) / C * li.ln_s;
+    k[j] = s.branch * gain_V(cfg) / C * li.inv_s_per_A / s.duration_s;
+    out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(out.plus_V), std::fabs(out.minus_V)});
+    clipped += li.clipped_s;
+    x = lpf_offset_after_A(cfg, x, s, dc0, s.duration_s);
+    T += s.duration_s;
+  }
+  // The R periodic periods: N x one period as in correlate_periodic, after the transient's swings.
+  const CorrelatorOutput p = run_periodic(cfg, period, 1, 0.0);
+  const double Rd = static_cast<double>(R);
+  double plus1 = 0, minus1 = 0;  // swing at the end of each segment of one periodic period
+  std::vector<double> dplus(S), dminus(S);
+  {
+    double xs = x_ss;
+    for (size_t j = 0; j < S; ++j) {
+      const Segment& s = period[j];
+      const LogIntegral li = segment_log_integral(cfg, s, xs, dc0, s.duration_s);
+      (s.branch > 0 ? plus1 : minus1) += gain_V(cfg) / capacitance_F(cfg, s.branch) * li.ln_s;
+      dplus[j] = plus1, dminus[j] = minus1;
+      xs = lpf_offset_after_A(cfg, xs, s, dc0, s.duration_s);
+    }
+  }
+  for (size_t j = 0; j < S; ++j)  // convex along the periods: the first or the last peaks
+    out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(out.plus_V + dplus[j]), std::fabs(out.minus_V + dminus[j]),
+                               std::fabs(out.plus_V + (Rd - 1) * plus1 + dplus[j]),
+                               std::fabs(out.minus_V + (Rd - 1) * minus1 + dminus[j])});
+  out.plus_V += Rd * plus1, out.minus_V += Rd * minus1;
+  out.diff_V = out.plus_V - out.minus_V;
+  out.clipped_fraction = (clipped + Rd * p.clipped_fraction * T0) / (T + Rd * T0);
+  out.lpf_end_A = p.lpf_end_A;
+  // Noise: the periodic part's variance and G at its start, then backwards through the transient.
+  const PeriodicShotNoise noise(cfg, period, period_noise_kernel(cfg, period, x_ss), R);
+  const PeriodicShotNoise::Window w = noise.window(R);
+  out.shot_var_plus_V2 = w.plus_V2, out.shot_var_minus_V2 = w.minus_V2;
+  const double q = phys::kElementaryCharge_C;
+  double G = w.g_start;
+  for (size_t jj = k.size(); jj-- > 0;) {
+    const Segment& s = period[jj % S];
+    (s.branch > 0 ? out.shot_var_plus_V2 : out.shot_var_minus_V2) +=
+        segment_var(q * s.photocurrent_A, k[jj], alpha, eps, tau, s.duration_s, G);
+  }
+  out.shot_var_past_V2 = past_shot_var_V2(cfg, lpf_start_A, G);
+  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
+  return out;
 }
 
 double ktc_variance_V2(const LsDemodulationConfig& cfg) {

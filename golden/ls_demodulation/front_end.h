@@ -82,6 +82,10 @@ CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::
 // aggregates the identical rest: O(segments x min(periods, 40 tau f0 + log periods)).
 CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
                                 double lpf_start_A);
+// The same with every segment of the window stepped: O(segments x periods) time and memory; the
+// reference the aggregated forms are tested against.
+CorrelatorOutput correlate_stepped(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
+                                   double lpf_start_A);
 
 // Periodic steady state of the LPF at the period start: I_avg(0) = b / (1 - e^{-T0/tau}).
 double lpf_periodic_start_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period);

@@ -147,7 +147,7 @@ RC_GTEST_PROP(DemodStress, NegativeLogArgumentIsFloored, ()) {
 // ---- hazard: long accumulations ------------------------------------------------------------
 // correlate_periodic stepped every segment of N periods, keeping 3N doubles: N = 1e9 (legal)
 // asked for 24 GB. It now aggregates identical periods exactly (O(log N)). Checked against the
-// segment-by-segment correlate_from at equal start (constant current: same start and same past
+// segment-by-segment correlate_stepped at equal start (constant current: same start and same past
 // level, so every output must agree to rounding), and for linearity in N up to 1e9.
 TEST(DemodHazards, AggregatedPeriodsEqualSteppedPeriods) {
   LsDemodulationConfig cfg;
@@ -158,12 +158,44 @@ TEST(DemodHazards, AggregatedPeriodsEqualSteppedPeriods) {
       cfg.suppression.lpf_time_constant_s = tau;
       const auto seg = pixel_segments(cfg, 0.0, 3e-10);
       const CorrelatorOutput a = correlate_periodic(cfg, seg, n);
-      const CorrelatorOutput b = correlate_from(cfg, seg, n, lpf_periodic_start_A(cfg, seg));
+      const CorrelatorOutput b = correlate_stepped(cfg, seg, n, lpf_periodic_start_A(cfg, seg));
       EXPECT_NEAR(a.diff_V, b.diff_V, 1e-12 * std::fabs(b.diff_V)) << tau << " " << n;
       EXPECT_NEAR(a.peak_abs_V, b.peak_abs_V, 1e-12 * b.peak_abs_V) << tau << " " << n;
       EXPECT_NEAR(a.shot_var_V2, b.shot_var_V2, 1e-9 * b.shot_var_V2) << tau << " " << n;
       EXPECT_NEAR(a.clipped_fraction, b.clipped_fraction, 1e-12);
     }
+}
+
+// Hazard: correlate_from (transients after a background step) stepped all N x S segments and
+// kept their noise kernels: O(N) memory. It now steps only the periods until the LPF transient is
+// below rounding and aggregates the rest. Against the fully stepped window, off the periodic
+// state (a step of the background, with a beam), for LPFs from 0.3 to 1200 periods.
+TEST(DemodHazards, TransientThenAggregatedEqualsStepped) {
+  LsDemodulationConfig cfg;
+  cfg.suppression.mirror_mismatch = 0.03;
+  for (double tau : {3e-6, 1e-4, 1.2e-2})
+    for (int n : {1, 7, 400, 3000}) {
+      cfg.suppression.lpf_time_constant_s = tau;
+      const auto seg = pixel_segments(cfg, 2e-11, 3e-10);
+      for (double start : {0.0, 1e-9}) {  // LPF from a dark or a brighter past
+        const CorrelatorOutput a = correlate_from(cfg, seg, n, start), b = correlate_stepped(cfg, seg, n, start);
+        const double scale = std::max(std::fabs(b.plus_V), std::fabs(b.minus_V));
+        EXPECT_NEAR(a.diff_V, b.diff_V, 1e-11 * scale) << tau << " " << n << " " << start;
+        EXPECT_NEAR(a.peak_abs_V, b.peak_abs_V, 1e-11 * b.peak_abs_V) << tau << " " << n;
+        EXPECT_NEAR(a.shot_var_V2, b.shot_var_V2, 1e-9 * b.shot_var_V2) << tau << " " << n << " " << start;
+        EXPECT_NEAR(a.shot_var_plus_V2, b.shot_var_plus_V2, 1e-9 * b.shot_var_V2) << tau << " " << n;
+        EXPECT_NEAR(a.lpf_end_A, b.lpf_end_A, 1e-12 * std::fabs(b.lpf_end_A) + 1e-24) << tau << " " << n;
+        EXPECT_NEAR(a.clipped_fraction, b.clipped_fraction, 1e-12);
+      }
+    }
+  // N = 1e9 with the preset's 120-period LPF: only the transient (~5000 periods) is stepped.
+  cfg.suppression.lpf_time_constant_s = 1.2e-3;
+  const auto seg = pixel_segments(cfg, 2e-11, 3e-10);
+  const CorrelatorOutput big = correlate_from(cfg, seg, 1000000000, 0.0), per = correlate_periodic(cfg, seg, 1000000000);
+  EXPECT_TRUE(std::isfinite(big.shot_var_V2));
+  // The transient changes D by a finite amount against a window of 1e9 periods.
+  EXPECT_NEAR(big.diff_V, per.diff_V, 1e-4 * std::fabs(per.diff_V));
+  EXPECT_NE(big.diff_V, per.diff_V);
 }
 
 // Hazard: a piece of the window that starts at the clip point has f = floor there; rounding of
