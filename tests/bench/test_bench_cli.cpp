@@ -99,8 +99,8 @@ TEST(SkippingSwitches, NoAggregateIsRefusedWithoutAnAggregatedPath) {
 // ls-demodulation: the switch through the binary. Noise-free, aggregated and per-period windows
 // give the same decisions (so positions and error) and cycles (DemodAggregation.* for D and noise).
 TEST(SkippingSwitches, DemodNoAggregateStepsPeriodsWithTheSameResult) {
-  const std::string s = "ls-demodulation --scene '" + scene("ls-demodulation-plane.toml") + "' --kernel-only --noise-free --frames 3";
-  const auto a = simulate(s), b = simulate(s + " --no-aggregate"), t = simulate(s + " --tick --frames 1");
+  const std::string s = "ls-demodulation --scene '" + scene("ls-demodulation-plane.toml") + "' --kernel-only --noise-free --frames ";
+  const auto a = simulate(s + "3"), b = simulate(s + "3 --no-aggregate"), t = simulate(s + "1 --tick");
   EXPECT_EQ(a["aggregation"]["path"], "aggregated");
   EXPECT_EQ(b["aggregation"]["path"], "per_period");
   EXPECT_EQ(t["aggregation"]["path"], "per_period");  // ticking implies per period

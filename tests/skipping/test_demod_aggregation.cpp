@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "../systemc/ls_demodulation/demod_test_helpers.h"
 #include "app/bench/bench_stats.h"
@@ -95,6 +96,7 @@ TEST(DemodAggregation, StatisticallyIdenticalToPerPeriod) {
   ASSERT_EQ(agg.size(), 6000u);
   ASSERT_EQ(per.size(), agg.size());
   const TwoSampleComparison c = compare_samples(agg, per);
+  std::printf("aggregated vs per period: %s\n", describe(c).c_str());
   EXPECT_TRUE(c.indistinguishable()) << describe(c);
   EXPECT_GT(c.var_a, 0.0);  // noise really on
 }
@@ -102,6 +104,7 @@ TEST(DemodAggregation, StatisticallyIdenticalToPerPeriod) {
 TEST(DemodAggregation, TestRejectsThreePercentMoreSignal) {
   const std::vector<double> agg = noisy_samples(true, 3e-12, 61), more = noisy_samples(true, 3.09e-12, 63);
   const TwoSampleComparison c = compare_samples(agg, more);
+  std::printf("aggregated vs 3%% more beam: %s\n", describe(c).c_str());
   EXPECT_FALSE(c.indistinguishable()) << describe(c);
 }
 
