@@ -299,7 +299,7 @@ PeriodicShotNoise::Map PeriodicShotNoise::power(long long n) const {
   return acc;
 }
 
-double PeriodicShotNoise::g_end_A(long long after) const { return power(after).a; }
+double PeriodicShotNoise::g_end(long long after) const { return power(after).a; }
 
 double PeriodicShotNoise::segment_var_V2(std::size_t j, double& G) const {
   return segment_var(phys::kElementaryCharge_C * period_[j].photocurrent_A, k_[j], alpha_, eps_, tau_,

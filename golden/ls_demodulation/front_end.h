@@ -109,8 +109,8 @@ class PeriodicShotNoise {
   // k: the noise kernel per segment of one period (V per A s of i_mod; golden's forward pass).
   PeriodicShotNoise(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, std::vector<double> k,
                     long long periods);
-  // G at the end of a period that `after` more periods follow (G = 0 at the window end).
-  double g_end_A(long long after) const;
+  // G (V per A s, as k) at the end of a period that `after` more periods follow (G = 0 at the window end).
+  double g_end(long long after) const;
   // Variance added to D by segment j's shot noise given G at its end; G becomes G at its start.
   double segment_var_V2(std::size_t j, double& G) const;
   // `periods` periods ending the window: variance on C1, on C2, and G at their start.

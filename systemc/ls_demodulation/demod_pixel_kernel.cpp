@@ -71,13 +71,13 @@ void DemodPixelKernel::reset(double beam_A, double background_A, pcg32& rng, con
   noise_.emplace(cfg_, period_, golden::period_noise_kernel(cfg_, period_, lpf_offset_A_), sched_.periods);
   double mean_A = 0, T = 0;
   for (const auto& s : period_) mean_A += s.photocurrent_A * s.duration_s, T += s.duration_s;
-  plus_V_ += n_past * std::sqrt(golden::past_shot_var_V2(cfg_, mean_A / T, noise_->g_end_A(sched_.periods)));
+  plus_V_ += n_past * std::sqrt(golden::past_shot_var_V2(cfg_, mean_A / T, noise_->g_end(sched_.periods)));
   begin_period();
 }
 
 void DemodPixelKernel::begin_period() {
   if (!noise_) return;
-  double G = noise_->g_end_A(sched_.periods - 1 - period_index_);
+  double G = noise_->g_end(sched_.periods - 1 - period_index_);
   shot_sd_V_.resize(period_.size());
   for (std::size_t jj = period_.size(); jj-- > 0;) shot_sd_V_[jj] = std::sqrt(std::max(0.0, noise_->segment_var_V2(jj, G)));
 }
