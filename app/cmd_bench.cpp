@@ -81,7 +81,7 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
 
 // Journal indices of the figure groups (Pareto rows use 0, 1, ...).
 constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002, kJournalSpad = 1003,
-                    kJournalDemod = 1004;
+                    kJournalDemod = 1005;  // 1004: kJournalSpadSparse on main (s10-spad)
 
 json mc_hook_json(const McBenchHookResult& m) {
   return {{"mc_vs_bare_rng", m.mc_vs_bare_rng ? json(*m.mc_vs_bare_rng) : json(nullptr)},
