@@ -94,6 +94,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
   sim->add_flag("--dense,--no-sparse", sim_opt.dense, "Simulate every pixel one by one (sparse pixels off: no window around the beam; tof-spad: background-only pixels not drawn as one class)");
   sim->add_flag("--no-aggregate", sim_opt.no_aggregate,
+                "ls-demodulation: step the N correlation periods of each window one by one instead of one jump\n"
+                "(golden's exact sum, one shot-noise draw per integrator; --tick always steps them);\n"
                 "tof-lockin: run the N_acc accumulation periods one by one instead of one draw of their sum;\n"
                 "tof-spad: run the laser cycles one by one (aggregation runs only where cycles are independent)");
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");

@@ -44,6 +44,7 @@ const FigureSpec kFigures[] = {
     {"aggregated_vs_per_clock_lockin", ">= 1000", "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
     {"aggregated_vs_per_clock_spad", ">= 1000", "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
     {"sparse_vs_dense_spad", ">= 5", "tof-spad beam spot: dense / sparse CPU time per frame (background-only groups as one class), lit pixels identical"},
+    {"aggregated_vs_per_clock_demod", ">= 1000", "ls-demodulation per-period frame time / aggregated frame time (N = 10,000 periods), statistically identical"},
     {"threads2_vs_1", ">= 1.8", "Monte Carlo sweep time with 1 thread / with 2 threads"},
     {"realtime_factor", "report (chip 1.0)", "simulated time / CPU time of the ls-conventional map (full 375 frame accesses)"},
 };
@@ -81,7 +82,8 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
 }
 
 // Journal indices of the figure groups (Pareto rows use 0, 1, ...).
-constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002, kJournalSpad = 1003, kJournalSpadSparse = 1004;
+constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002, kJournalSpad = 1003,
+                    kJournalSpadSparse = 1004, kJournalDemod = 1005;
 
 json mc_hook_json(const McBenchHookResult& m) {
   return {{"mc_vs_bare_rng", m.mc_vs_bare_rng ? json(*m.mc_vs_bare_rng) : json(nullptr)},
@@ -130,7 +132,7 @@ int run_bench(const BenchOptions& opt) {
   };
 
   std::vector<ParetoRow> pareto;
-  json ls, lockin, spad, spad_sparse, mc_json;
+  json ls, lockin, spad, spad_sparse, demod, mc_json;
   try {
     pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
     if (sigint_flag()) return interrupted();
@@ -141,6 +143,7 @@ int run_bench(const BenchOptions& opt) {
     spad = group(kJournalSpad, [&] { return bench_aggregation_spad(opt.quick); });
     if (sigint_flag()) return interrupted();
     spad_sparse = group(kJournalSpadSparse, [&] { return bench_sparse_spad(opt.quick); });
+    demod = group(kJournalDemod, [&] { return bench_aggregation_demod(opt.quick); });
     if (sigint_flag()) return interrupted();
     mc_json = group(kJournalMc, [&] {
       progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
@@ -182,6 +185,8 @@ int run_bench(const BenchOptions& opt) {
   checks["spad_sparse_cycles_identical"] = spad_sparse["cycles_identical"].get<bool>();
   checks["spad_sparse_lit_pixels_identical"] = spad_sparse["lit_pixels_identical"].get<bool>();
   checks["spad_sparse_background_statistically_identical"] = spad_sparse["background_statistically_identical"].get<bool>();
+  details["aggregated_vs_per_clock_demod"] = demod;
+  checks["demod_aggregated_statistically_identical"] = demod["statistically_identical"].get<bool>();
   details["mc_vs_bare_rng"] = json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
   details["threads2_vs_1"] = json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
   if (!mc.details.is_null()) details["monte_carlo"] = mc.details;

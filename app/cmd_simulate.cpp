@@ -59,8 +59,8 @@ int run_simulate(const SimulateOptions& opt) {
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   sc_core::sc_report_handler::set_handler(report_to_stderr);
   ParamSet params = load_modelled_preset(opt.sensor, "simulate");
-  if (opt.no_aggregate && params.sensor_id() != "tof-lockin" && params.sensor_id() != "tof-spad")
-    throw UserError(fmt::format("--no-aggregate: {} has no aggregated path to switch off; allowed with tof-lockin, tof-spad",
+  if (opt.no_aggregate && params.sensor_id() == "ls-conventional")
+    throw UserError(fmt::format("--no-aggregate: {} has no aggregated path to switch off; allowed with ls-demodulation, tof-lockin, tof-spad",
                                 params.sensor_id()));
   if (params.sensor_id() == "ls-demodulation") return run_simulate_ls_demodulation(opt, params);
   if (params.sensor_id() == "tof-lockin") return run_simulate_tof_lockin(opt, params);

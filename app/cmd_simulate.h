@@ -20,7 +20,7 @@ struct SimulateOptions {
   bool tick = false;                // --tick / --no-event-skip: evaluate every clock cycle (no event skipping; kernel only)
   bool noise_free = false;          // --noise-free: all noise sources off
   bool dense = false;               // --dense / --no-sparse: simulate every pixel (no sparse window)
-  bool no_aggregate = false;        // --no-aggregate: tof-lockin accumulation periods / tof-spad laser cycles one by one
+  bool no_aggregate = false;        // --no-aggregate: ls-demodulation correlation periods / tof-lockin accumulation periods / tof-spad laser cycles one by one
   bool no_plots = false;            // --no-plots: skip range_map.png
 };
 

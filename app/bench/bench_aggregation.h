@@ -20,4 +20,10 @@ nlohmann::json bench_aggregation_lockin(bool quick);
 // timed frames.
 nlohmann::json bench_aggregation_spad(bool quick);
 
+// ls-demodulation: the N correlation periods of each window in one jump (DemodKernelOptions::
+// aggregate) vs the same frame stepped period by period (event skipping, one exact step per
+// segment), N = 10,000 periods. Keys as for lock-in; statistically_identical from the stated test
+// on D (N = 20, many pixels), the noise-free identity and equal cycles.
+nlohmann::json bench_aggregation_demod(bool quick);
+
 }  // namespace rangesim::app::bench

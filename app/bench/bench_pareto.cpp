@@ -30,6 +30,8 @@ std::vector<Setting> settings(bool quick) {
       {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, event skipping, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},
       {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, event skipping, 4 frames", "kernel", {"--kernel-only", "--frames", "4"}},
       {"ls-demodulation", "ls-demodulation-plane.toml", "SystemC module, 1 frame", "systemc", {"--frames", "1"}},
+      {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, per period (no aggregation)", "kernel",
+       {"--kernel-only", "--no-aggregate", "--frames", "1"}},
       {"tof-lockin", "tof-lockin-plane.toml", "kernel, aggregated", "kernel", {"--kernel-only"}},
       {"tof-lockin", "tof-lockin-plane.toml", "SystemC module", "systemc", {}},
       {"tof-spad", "tof-spad-plane.toml", "kernel, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},

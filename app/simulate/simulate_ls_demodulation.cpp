@@ -163,6 +163,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
 
   systemc::DemodKernelOptions kopt;
   kopt.event_skipping = !opt.tick;
+  kopt.aggregate = !opt.tick && !opt.no_aggregate;  // ticking steps every period anyway
   kopt.seed = opt.seed;
   if (opt.noise_free) kopt.noise = systemc::DemodNoiseSwitches::none();
   const systemc::DemodStimulusSource source = [&optics](std::uint64_t f, systemc::DemodStimulus& s) { optics.stimulus(f, s); };
@@ -249,6 +250,9 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
       {"target_shape", sc.shape},
       {"harness", opt.kernel_only ? "kernel" : "systemc"},
       {"event_skipping", !opt.tick},
+      {"aggregation", {{"requested", kopt.aggregate},
+                       {"path", kopt.aggregate ? "aggregated" : "per_period"},
+                       {"periods_per_window", cfg.correlator.cycles}}},
       {"noise", !opt.noise_free},
       {"seed", opt.seed},
       {"frames", static_cast<long long>(res.frames.size())},
@@ -285,7 +289,7 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   SimulateSummary report;
   report.headline = fmt::format("{} on scene '{}' ({}): {} frame{}, {}{}, {}", params.sensor_id(), sc.name, sc.shape, res.frames.size(),
                              res.frames.size() == 1 ? "" : "s", opt.kernel_only ? "bare kernels" : "SystemC",
-                             opt.tick ? " (ticking)" : " (event skipping)",
+                             opt.tick ? " (ticking)" : kopt.aggregate ? " (event skipping, periods aggregated)" : " (event skipping, period by period)",
                              opt.noise_free ? "noise-free" : fmt::format("noise seed {}", opt.seed));
   report.phases = phases;
   report.frame_label = "frame";

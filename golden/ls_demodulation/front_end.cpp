@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/physics.h"
 
@@ -125,10 +126,10 @@ std::vector<Segment> period_segments(const LsDemodulationConfig& cfg, double dc_
     const double len = e[i + 1] - e[i];
     if (len < 1e-12) continue;
     const double t = 0.5 * (e[i] + e[i + 1]);  // midpoint decides which levels are on
-    double I = dc_A;
+    double ac = 0;
     for (const auto& c : comps)
-      if (frac(t * c.harmonic - c.delay_periods) < c.duty) I += c.amplitude_A;
-    seg.push_back({len * T0, I, frac(t - ref0) < Dr ? +1 : -1});
+      if (frac(t * c.harmonic - c.delay_periods) < c.duty) ac += c.amplitude_A;
+    seg.push_back({len * T0, dc_A + ac, frac(t - ref0) < Dr ? +1 : -1, dc_A, ac});
   }
   return seg;
 }
@@ -138,108 +139,197 @@ std::vector<Segment> pixel_segments(const LsDemodulationConfig& cfg, double beam
                          {SquareComponent{beam_A, 1, cfg.modulation.source_duty_cycle, 0.0}});
 }
 
-double lpf_periodic_start_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period) {
-  const double tau = cfg.suppression.lpf_time_constant_s;
-  double b = 0, T0 = 0;  // I_avg after one period from 0
+double lpf_offset_after_A(const LsDemodulationConfig& cfg, double x, const Segment& s, double dc0, double L) {
+  const double target = (s.dc_A - dc0) + s.ac_A;
+  return target + (x - target) * std::exp(-L / cfg.suppression.lpf_time_constant_s);
+}
+
+double lpf_periodic_offset_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period) {
+  if (period.empty()) return 0;
+  const double dc0 = period.front().dc_A;
+  double b = 0, T0 = 0;  // the offset after one period from 0
   for (const auto& s : period) {
-    b = s.photocurrent_A + (b - s.photocurrent_A) * std::exp(-s.duration_s / tau);
+    b = lpf_offset_after_A(cfg, b, s, dc0, s.duration_s);
     T0 += s.duration_s;
   }
-  return b / -std::expm1(-T0 / tau);
+  return b / -std::expm1(-T0 / cfg.suppression.lpf_time_constant_s);
+}
+
+double lpf_periodic_start_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period) {
+  return period.empty() ? 0 : period.front().dc_A + lpf_periodic_offset_A(cfg, period);
 }
 
 namespace {
 
+// The log stage's integral over one segment with the LPF at offset x from dc0 at its start.
+LogIntegral segment_log_integral(const LsDemodulationConfig& cfg, const Segment& s, double x, double dc0, double L) {
+  const auto& lg = cfg.log_converter;
+  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
+  const double I = s.photocurrent_A;
+  // I_off + I_mod = c0 + c1 e^{-s/tau}: c0 its limit, c1 = -alpha (I_avg - I_pd) the LPF's lag.
+  return log_integral(lg.offset_current_A + alpha * eps * I, -alpha * lpf_lag_A(x, s, dc0),
+                      cfg.suppression.lpf_time_constant_s, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
+}
+
+double gain_V(const LsDemodulationConfig& cfg) {  // g_m beta s
+  return cfg.correlator.transconductance_S * cfg.log_converter.gain * cfg.log_converter.slope_V;
+}
+
+double capacitance_F(const LsDemodulationConfig& cfg, int branch) {
+  return branch > 0 ? cfg.correlator.capacitance_plus_F : cfg.correlator.capacitance_minus_F;
+}
+
+// Shot-noise variance of one segment [a, b] with G = G(b): K(u) = alpha (1+eps) k - alpha G(u) =
+// A + B e^{-(b-u)/tau}, A = alpha eps k, B = alpha (k - G(b)); G becomes G(a).
+double segment_var(double q_I, double k, double alpha, double eps, double tau, double L, double& G) {
+  const double e1 = -std::expm1(-L / tau), e2 = -std::expm1(-2 * L / tau);
+  const double A = alpha * eps * k, B = alpha * (k - G);
+  G = k * e1 + G * (1 - e1);
+  return q_I * (A * A * L + 2 * A * B * tau * e1 + B * B * 0.5 * tau * e2);
+}
+
 CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods, double start_A,
                      double past_mean_A) {
-  const auto& sup = cfg.suppression;
-  const auto& lg = cfg.log_converter;
-  const auto& co = cfg.correlator;
-  const double alpha = sup.mirror_gain, eps = sup.mirror_mismatch, tau = sup.lpf_time_constant_s;
-  const double gain_V = co.transconductance_S * lg.gain * lg.slope_V;  // g_m beta s
+  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
+  const double tau = cfg.suppression.lpf_time_constant_s;
   const size_t S = period.size(), n = S * static_cast<size_t>(std::max(periods, 0));
   std::vector<double> k(n);  // noise kernel per segment, V / (A s) per A of i_mod
   CorrelatorOutput out;
-  double Iavg = start_A, T = 0;
+  const double dc0 = S ? period.front().dc_A : 0;
+  double x = start_A - dc0, T = 0;  // the LPF as its offset from dc0
   for (size_t j = 0; j < n; ++j) {
     const Segment& s = period[j % S];
-    const double I = s.photocurrent_A, L = s.duration_s;
-    const double c0 = lg.offset_current_A + alpha * eps * I;  // I_off + I_mod as t -> infinity
-    const double c1 = -alpha * (Iavg - I);                    // the LPF's lag behind I_pd
-    const LogIntegral li = log_integral(c0, c1, tau, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
-    const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
-    (s.branch > 0 ? out.plus_V : out.minus_V) += gain_V / C * li.ln_s;
-    k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
+    const double L = s.duration_s;
+    const LogIntegral li = segment_log_integral(cfg, s, x, dc0, L);
+    const double C = capacitance_F(cfg, s.branch);
+    (s.branch > 0 ? out.plus_V : out.minus_V) += gain_V(cfg) / C * li.ln_s;
+    k[j] = s.branch * gain_V(cfg) / C * li.inv_s_per_A / L;
     out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(out.plus_V), std::fabs(out.minus_V)});
     out.clipped_fraction += li.clipped_s;
-    Iavg = I + (Iavg - I) * std::exp(-L / tau);
+    x = lpf_offset_after_A(cfg, x, s, dc0, L);
     T += L;
   }
   out.diff_V = out.plus_V - out.minus_V;
   out.clipped_fraction = T > 0 ? out.clipped_fraction / T : 0;
-  out.lpf_end_A = Iavg;
+  out.lpf_end_A = dc0 + x;
 
-  // Shot noise, backwards: G(u) = int_u^T k(t) e^{-(t-u)/tau} dt / tau; on a segment [a, b]
-  // K(u) = alpha (1+eps) k - alpha G(u) = A + B e^{-(b-u)/tau}, A = alpha eps k, B = alpha (k - G(b)).
+  // Shot noise, backwards: G(u) = int_u^T k(t) e^{-(t-u)/tau} dt / tau.
   const double q = phys::kElementaryCharge_C;
-  double G = 0, var = 0;
+  double G = 0;
   for (size_t jj = n; jj-- > 0;) {
     const Segment& s = period[jj % S];
-    const double L = s.duration_s, e1 = -std::expm1(-L / tau), e2 = -std::expm1(-2 * L / tau);
-    const double A = alpha * eps * k[jj], B = alpha * (k[jj] - G);
-    var += q * s.photocurrent_A * (A * A * L + 2 * A * B * tau * e1 + B * B * 0.5 * tau * e2);
-    G = k[jj] * e1 + G * (1 - e1);
+    (s.branch > 0 ? out.shot_var_plus_V2 : out.shot_var_minus_V2) +=
+        segment_var(q * s.photocurrent_A, k[jj], alpha, eps, tau, s.duration_s, G);
   }
-  // Before the window only the LPF path sees the noise: K(u) = -alpha G(0) e^{u/tau}, u < 0.
-  var += q * past_mean_A * alpha * alpha * G * G * 0.5 * tau;
-  out.shot_var_V2 = var;
+  out.shot_var_past_V2 = past_shot_var_V2(cfg, past_mean_A, G);
+  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
   return out;
 }
 
+}  // namespace
+
+double past_shot_var_V2(const LsDemodulationConfig& cfg, double past_mean_A, double G) {
+  // Before the window only the LPF path sees the noise: K(u) = -alpha G(0) e^{u/tau}, u < 0.
+  const double alpha = cfg.suppression.mirror_gain;
+  return phys::kElementaryCharge_C * past_mean_A * alpha * alpha * G * G * 0.5 * cfg.suppression.lpf_time_constant_s;
+}
+
+std::vector<double> period_noise_kernel(const LsDemodulationConfig& cfg, const std::vector<Segment>& period,
+                                        double x) {
+  std::vector<double> k(period.size());
+  const double dc0 = period.empty() ? 0 : period.front().dc_A;
+  for (size_t j = 0; j < period.size(); ++j) {
+    const Segment& s = period[j];
+    const LogIntegral li = segment_log_integral(cfg, s, x, dc0, s.duration_s);
+    k[j] = s.branch * gain_V(cfg) / capacitance_F(cfg, s.branch) * li.inv_s_per_A / s.duration_s;
+    x = lpf_offset_after_A(cfg, x, s, dc0, s.duration_s);
+  }
+  return k;
+}
+
 // Periodic steady state: every period repeats the first, so the window is aggregated exactly in
-// O(S log N) time and O(S) memory (correlator.cycles goes to 1e9: the segment-by-segment loop
-// needed 3N doubles and N x S steps). Means: N x one period. Shot noise: one period of the
+// O(S log N) time and O(S + log N) memory (correlator.cycles goes to 1e9: the segment-by-segment
+// loop needed 3N doubles and N x S steps). Means: N x one period. Shot noise: one period of the
 // backward recursion is an affine map of G (at the period's end -> at its start) and adds a
 // quadratic in G to the variance; N periods are that map composed N times (binary powering).
-struct PeriodMap {
-  double a = 0, c = 1;             // G_start = a + c G_end
-  double v0 = 0, v1 = 0, v2 = 0;  // variance added: v0 + v1 G_end + v2 G_end^2
-};
+PeriodicShotNoise::PeriodicShotNoise(const LsDemodulationConfig& cfg, const std::vector<Segment>& period,
+                                     std::vector<double> k, long long periods)
+    : period_(period),
+      k_(std::move(k)),
+      alpha_(cfg.suppression.mirror_gain),
+      eps_(cfg.suppression.mirror_mismatch),
+      tau_(cfg.suppression.lpf_time_constant_s) {
+  const double q = phys::kElementaryCharge_C;
+  Map one;  // one period backwards, with G_j = a + c G_end at each segment's end
+  for (size_t jj = period_.size(); jj-- > 0;) {
+    const Segment& s = period_[jj];
+    const double L = s.duration_s, e1 = -std::expm1(-L / tau_), e2 = -std::expm1(-2 * L / tau_);
+    const double A = alpha_ * eps_ * k_[jj], b0 = alpha_ * (k_[jj] - one.a), b1 = -alpha_ * one.c;  // B = b0 + b1 G_end
+    const double w = q * s.photocurrent_A;
+    const int br = s.branch > 0 ? 0 : 1;
+    one.v0[br] += w * (A * A * L + 2 * A * b0 * tau_ * e1 + b0 * b0 * 0.5 * tau_ * e2);
+    one.v1[br] += w * (2 * A * b1 * tau_ * e1 + b0 * b1 * tau_ * e2);
+    one.v2[br] += w * b1 * b1 * 0.5 * tau_ * e2;
+    one.a = k_[jj] * e1 + one.a * (1 - e1);
+    one.c *= 1 - e1;
+  }
+  pow2_.push_back(one);
+  for (long long n = std::max(periods, 1LL); n > 1; n >>= 1) pow2_.push_back(compose(pow2_.back(), pow2_.back()));
+}
+
 // `later` (closer to the window end) first, then `earlier`.
-PeriodMap compose(const PeriodMap& later, const PeriodMap& earlier) {
-  PeriodMap m;
+PeriodicShotNoise::Map PeriodicShotNoise::compose(const Map& later, const Map& earlier) {
+  Map m;
   m.a = earlier.a + earlier.c * later.a;
   m.c = earlier.c * later.c;
-  m.v0 = later.v0 + earlier.v0 + earlier.v1 * later.a + earlier.v2 * later.a * later.a;
-  m.v1 = later.v1 + earlier.v1 * later.c + 2 * earlier.v2 * later.a * later.c;
-  m.v2 = later.v2 + earlier.v2 * later.c * later.c;
+  for (int b = 0; b < 2; ++b) {
+    m.v0[b] = later.v0[b] + earlier.v0[b] + earlier.v1[b] * later.a + earlier.v2[b] * later.a * later.a;
+    m.v1[b] = later.v1[b] + earlier.v1[b] * later.c + 2 * earlier.v2[b] * later.a * later.c;
+    m.v2[b] = later.v2[b] + earlier.v2[b] * later.c * later.c;
+  }
   return m;
 }
 
+PeriodicShotNoise::Map PeriodicShotNoise::power(long long n) const {
+  Map acc;  // identity
+  for (size_t i = 0; n > 0; n >>= 1, ++i) {
+    if (i >= pow2_.size()) throw std::logic_error("PeriodicShotNoise: more periods than built for");
+    if (n & 1) acc = compose(acc, pow2_[i]);
+  }
+  return acc;
+}
+
+double PeriodicShotNoise::g_end(long long after) const { return power(after).a; }
+
+double PeriodicShotNoise::segment_var_V2(std::size_t j, double& G) const {
+  return segment_var(phys::kElementaryCharge_C * period_[j].photocurrent_A, k_[j], alpha_, eps_, tau_,
+                     period_[j].duration_s, G);
+}
+
+PeriodicShotNoise::Window PeriodicShotNoise::window(long long periods) const {
+  const Map m = power(periods);  // G = 0 at the window end
+  return {std::max(0.0, m.v0[0]), std::max(0.0, m.v0[1]), m.a};
+}
+
+namespace {
+
 CorrelatorOutput run_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
-                              double start_A, double past_mean_A) {
-  const auto& sup = cfg.suppression;
-  const auto& lg = cfg.log_converter;
-  const auto& co = cfg.correlator;
-  const double alpha = sup.mirror_gain, eps = sup.mirror_mismatch, tau = sup.lpf_time_constant_s;
-  const double gain_V = co.transconductance_S * lg.gain * lg.slope_V;
+                              double past_mean_A) {
   const size_t S = period.size();
   const double N = std::max(periods, 0);
   CorrelatorOutput out;
-  std::vector<double> k(S), dplus(S), dminus(S);
-  double Iavg = start_A, T = 0, plus = 0, minus = 0;
+  std::vector<double> dplus(S), dminus(S);
+  const double dc0 = S ? period.front().dc_A : 0;
+  const double x0 = lpf_periodic_offset_A(cfg, period);
+  double x = x0, T = 0, plus = 0, minus = 0;
   for (size_t j = 0; j < S; ++j) {
     const Segment& s = period[j];
-    const double I = s.photocurrent_A, L = s.duration_s;
-    const LogIntegral li = log_integral(lg.offset_current_A + alpha * eps * I, -alpha * (Iavg - I), tau, L,
-                                        lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
-    const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
-    (s.branch > 0 ? plus : minus) += gain_V / C * li.ln_s;
+    const LogIntegral li = segment_log_integral(cfg, s, x, dc0, s.duration_s);
+    (s.branch > 0 ? plus : minus) += gain_V(cfg) / capacitance_F(cfg, s.branch) * li.ln_s;
     dplus[j] = plus, dminus[j] = minus;  // swings at the end of segment j of the first period
-    k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
     out.clipped_fraction += li.clipped_s;
-    Iavg = I + (Iavg - I) * std::exp(-L / tau);
-    T += L;
+    x = lpf_offset_after_A(cfg, x, s, dc0, s.duration_s);
+    T += s.duration_s;
   }
   if (periods <= 0) return out;
   out.plus_V = N * plus, out.minus_V = N * minus;
@@ -249,29 +339,13 @@ CorrelatorOutput run_periodic(const LsDemodulationConfig& cfg, const std::vector
     out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(dplus[j]), std::fabs(dminus[j]),
                                std::fabs((N - 1) * plus + dplus[j]), std::fabs((N - 1) * minus + dminus[j])});
   out.clipped_fraction = T > 0 ? out.clipped_fraction / T : 0;
-  out.lpf_end_A = Iavg;
-
-  // One period backwards, G_end -> G_start, with G_j = a_j + c_j G_end at each segment's end.
-  const double q = phys::kElementaryCharge_C;
-  PeriodMap one;
-  for (size_t jj = S; jj-- > 0;) {
-    const Segment& s = period[jj];
-    const double L = s.duration_s, e1 = -std::expm1(-L / tau), e2 = -std::expm1(-2 * L / tau);
-    const double A = alpha * eps * k[jj], b0 = alpha * (k[jj] - one.a), b1 = -alpha * one.c;  // B = b0 + b1 G_end
-    const double w = q * s.photocurrent_A;
-    one.v0 += w * (A * A * L + 2 * A * b0 * tau * e1 + b0 * b0 * 0.5 * tau * e2);
-    one.v1 += w * (2 * A * b1 * tau * e1 + b0 * b1 * tau * e2);
-    one.v2 += w * b1 * b1 * 0.5 * tau * e2;
-    one.a = k[jj] * e1 + one.a * (1 - e1);
-    one.c *= 1 - e1;
-  }
-  PeriodMap acc, pw = one;  // acc = identity
-  for (long long n = periods; n > 0; n >>= 1) {
-    if (n & 1) acc = compose(acc, pw);
-    pw = compose(pw, pw);
-  }
-  const double G = acc.a;  // G at the window start (G = 0 at its end)
-  out.shot_var_V2 = std::max(0.0, acc.v0) + q * past_mean_A * alpha * alpha * G * G * 0.5 * tau;
+  out.lpf_end_A = dc0 + x;
+  const PeriodicShotNoise noise(cfg, period, period_noise_kernel(cfg, period, x0), periods);
+  const PeriodicShotNoise::Window w = noise.window(periods);
+  out.shot_var_plus_V2 = w.plus_V2;
+  out.shot_var_minus_V2 = w.minus_V2;
+  out.shot_var_past_V2 = past_shot_var_V2(cfg, past_mean_A, w.g_start);
+  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
   return out;
 }
 
@@ -284,12 +358,83 @@ double mean_current_A(const std::vector<Segment>& period) {
 }  // namespace
 
 CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods) {
-  return run_periodic(cfg, period, periods, lpf_periodic_start_A(cfg, period), mean_current_A(period));
+  return run_periodic(cfg, period, periods, mean_current_A(period));
 }
 
+CorrelatorOutput correlate_stepped(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
+                                   double lpf_start_A) {
+  return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+}
+
+// Transient periods stepped (their noise kernels kept: O(M S)), then the N - M identical periods
+// in the periodic state aggregated (PeriodicShotNoise), their G at the start continued backwards
+// through the stepped ones. M: the periods until the LPF's distance from its periodic state,
+// |x - x_ss| e^{-m T0 / tau}, is below 1e-17 of the currents (rounding of the periodic state).
 CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
                                 double lpf_start_A) {
-  return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+  const size_t S = period.size();
+  if (S == 0 || periods <= 0) return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+  const double tau = cfg.suppression.lpf_time_constant_s, dc0 = period.front().dc_A;
+  const double x_ss = lpf_periodic_offset_A(cfg, period), x0 = lpf_start_A - dc0;
+  double T0 = 0, ref = std::fabs(x_ss);
+  for (const auto& s : period) T0 += s.duration_s, ref = std::max(ref, std::fabs((s.dc_A - dc0) + s.ac_A));
+  const double gap = std::fabs(x0 - x_ss);
+  const double m = gap > 1e-17 * ref ? std::ceil(tau / T0 * std::log(gap / (1e-17 * std::max(ref, 1e-300)))) : 0.0;
+  const long long M = static_cast<long long>(std::min<double>(m, periods));
+  if (M >= periods) return run(cfg, period, periods, lpf_start_A, lpf_start_A);
+  const long long R = periods - M;
+  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
+  CorrelatorOutput out;
+  std::vector<double> k(static_cast<size_t>(M) * S);
+  double x = x0, T = 0, clipped = 0;
+  for (size_t j = 0; j < k.size(); ++j) {  // the transient, segment by segment
+    const Segment& s = period[j % S];
+    const LogIntegral li = segment_log_integral(cfg, s, x, dc0, s.duration_s);
+    const double C = capacitance_F(cfg, s.branch);
+    (s.branch > 0 ? out.plus_V : out.minus_V) += gain_V(cfg) / C * li.ln_s;
+    k[j] = s.branch * gain_V(cfg) / C * li.inv_s_per_A / s.duration_s;
+    out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(out.plus_V), std::fabs(out.minus_V)});
+    clipped += li.clipped_s;
+    x = lpf_offset_after_A(cfg, x, s, dc0, s.duration_s);
+    T += s.duration_s;
+  }
+  // The R periodic periods: N x one period as in correlate_periodic, after the transient's swings.
+  const CorrelatorOutput p = run_periodic(cfg, period, 1, 0.0);
+  const double Rd = static_cast<double>(R);
+  double plus1 = 0, minus1 = 0;  // swing at the end of each segment of one periodic period
+  std::vector<double> dplus(S), dminus(S);
+  {
+    double xs = x_ss;
+    for (size_t j = 0; j < S; ++j) {
+      const Segment& s = period[j];
+      const LogIntegral li = segment_log_integral(cfg, s, xs, dc0, s.duration_s);
+      (s.branch > 0 ? plus1 : minus1) += gain_V(cfg) / capacitance_F(cfg, s.branch) * li.ln_s;
+      dplus[j] = plus1, dminus[j] = minus1;
+      xs = lpf_offset_after_A(cfg, xs, s, dc0, s.duration_s);
+    }
+  }
+  for (size_t j = 0; j < S; ++j)  // convex along the periods: the first or the last peaks
+    out.peak_abs_V = std::max({out.peak_abs_V, std::fabs(out.plus_V + dplus[j]), std::fabs(out.minus_V + dminus[j]),
+                               std::fabs(out.plus_V + (Rd - 1) * plus1 + dplus[j]),
+                               std::fabs(out.minus_V + (Rd - 1) * minus1 + dminus[j])});
+  out.plus_V += Rd * plus1, out.minus_V += Rd * minus1;
+  out.diff_V = out.plus_V - out.minus_V;
+  out.clipped_fraction = (clipped + Rd * p.clipped_fraction * T0) / (T + Rd * T0);
+  out.lpf_end_A = p.lpf_end_A;
+  // Noise: the periodic part's variance and G at its start, then backwards through the transient.
+  const PeriodicShotNoise noise(cfg, period, period_noise_kernel(cfg, period, x_ss), R);
+  const PeriodicShotNoise::Window w = noise.window(R);
+  out.shot_var_plus_V2 = w.plus_V2, out.shot_var_minus_V2 = w.minus_V2;
+  const double q = phys::kElementaryCharge_C;
+  double G = w.g_start;
+  for (size_t jj = k.size(); jj-- > 0;) {
+    const Segment& s = period[jj % S];
+    (s.branch > 0 ? out.shot_var_plus_V2 : out.shot_var_minus_V2) +=
+        segment_var(q * s.photocurrent_A, k[jj], alpha, eps, tau, s.duration_s, G);
+  }
+  out.shot_var_past_V2 = past_shot_var_V2(cfg, lpf_start_A, G);
+  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
+  return out;
 }
 
 double ktc_variance_V2(const LsDemodulationConfig& cfg) {

@@ -19,6 +19,7 @@
 // k = +-g_m beta s / (C I_log) (0 where clipped). With k constant per segment (its segment mean:
 // first order in the LPF ripple L / tau) K is A + B e^{-(b-u)/tau} per segment and
 // Var = q sum I_j int K^2 du in closed form, plus the LPF's memory of noise before the window.
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -26,11 +27,15 @@
 
 namespace rangesim::golden {
 
-// One piece of a period: constant photocurrent, one integrator connected.
+// One piece of a period: constant photocurrent, one integrator connected. I_dc and I_ac are kept
+// apart beside their rounded sum: the LPF state is carried as its offset from I_dc, so the lag
+// I_avg - I_pd (the beam's share) is exact to ulp(I_ac), not ulp(I_dc), under a huge background.
 struct Segment {
   double duration_s = 0;
-  double photocurrent_A = 0;  // I_pd = I_dc + I_ac on this piece (dark current included)
+  double photocurrent_A = 0;  // I_pd = I_dc + I_ac on this piece (dark current included), rounded
   int branch = +1;            // +1: MPY+ (C1) integrates, -1: MPY- (C2)
+  double dc_A = 0;            // I_dc: the level that is constant over the period (background + dark)
+  double ac_A = 0;            // I_ac: the modulated part on this piece (beam)
 };
 
 // A square-wave current component: on with `amplitude_A` for `duty` of each of its periods,
@@ -59,6 +64,11 @@ struct CorrelatorOutput {
   double shot_var_V2 = 0;     // shot-noise variance of diff_V
   double clipped_fraction = 0;  // fraction of the window where I_off + I_mod sat on the floor
   double lpf_end_A = 0;       // I_avg at the end of the window
+  // shot_var_V2 split by where the noise enters D (the clock-level kernel draws each part once
+  // when it aggregates the window): charge on C1, on C2, and the LPF's memory of before the window.
+  double shot_var_plus_V2 = 0;
+  double shot_var_minus_V2 = 0;
+  double shot_var_past_V2 = 0;
 };
 
 // The period repeated `periods` times with the LPF in its periodic steady state (the beam and
@@ -67,13 +77,71 @@ struct CorrelatorOutput {
 CorrelatorOutput correlate_periodic(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods);
 
 // Same, with the LPF starting from `lpf_start_A` at the window start (transients, e.g. a
-// background step); noise from before the window is taken at the level lpf_start_A. Steps every
-// segment of the window: O(segments x periods) time and memory.
+// background step); noise from before the window is taken at the level lpf_start_A. Steps the
+// periods until the LPF transient is below rounding (at most ~40 tau f0 periods), then
+// aggregates the identical rest: O(segments x min(periods, 40 tau f0 + log periods)).
 CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
                                 double lpf_start_A);
+// The same with every segment of the window stepped: O(segments x periods) time and memory; the
+// reference the aggregated forms are tested against.
+CorrelatorOutput correlate_stepped(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
+                                   double lpf_start_A);
 
 // Periodic steady state of the LPF at the period start: I_avg(0) = b / (1 - e^{-T0/tau}).
 double lpf_periodic_start_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period);
+// The same as an offset from the period's I_dc (period[0].dc_A): I_avg(0) = dc_A + this, exactly
+// the LPF of the I_ac parts (and of dc_A differences between segments).
+double lpf_periodic_offset_A(const LsDemodulationConfig& cfg, const std::vector<Segment>& period);
+
+// The LPF lag I_avg - I_pd on a segment from the LPF state held as its offset from period[0].dc_A.
+inline double lpf_lag_A(double lpf_offset_A, const Segment& s, double dc0_A) {
+  return lpf_offset_A - ((s.dc_A - dc0_A) + s.ac_A);
+}
+// The LPF offset after segment s (exact exponential relaxation towards I_pd - dc0).
+double lpf_offset_after_A(const LsDemodulationConfig& cfg, double lpf_offset_A, const Segment& s, double dc0_A,
+                          double duration_s);
+
+// Shot noise of a periodic window, for the clock-level kernel: one period of golden's backward
+// recursion G(end of period) -> G(start) with its variance, and its powers for N periods
+// (binary powering: O(S log N) time, O(S + log N) memory).
+class PeriodicShotNoise {
+ public:
+  // k: the noise kernel per segment of one period (V per A s of i_mod; golden's forward pass).
+  PeriodicShotNoise(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, std::vector<double> k,
+                    long long periods);
+  // G (V per A s, as k) at the end of a period that `after` more periods follow (G = 0 at the window end).
+  double g_end(long long after) const;
+  // Variance added to D by segment j's shot noise given G at its end; G becomes G at its start.
+  double segment_var_V2(std::size_t j, double& G) const;
+  // `periods` periods ending the window: variance on C1, on C2, and G at their start.
+  struct Window {
+    double plus_V2 = 0, minus_V2 = 0, g_start = 0;
+  };
+  Window window(long long periods) const;
+
+ private:
+  // One or more periods backwards: G_start = a + c G_end; variance added (per branch: 0 = C1,
+  // 1 = C2) v0 + v1 G_end + v2 G_end^2.
+  struct Map {
+    double a = 0, c = 1;
+    double v0[2] = {0, 0}, v1[2] = {0, 0}, v2[2] = {0, 0};
+  };
+  static Map compose(const Map& later, const Map& earlier);
+  Map power(long long n) const;
+
+  std::vector<Segment> period_;  // one period
+  std::vector<double> k_;        // noise kernel per segment
+  double alpha_ = 0, eps_ = 0, tau_ = 0;
+  std::vector<Map> pow2_;        // the one-period map composed 2^i times, i < log2(periods) + 1
+};
+
+// Noise kernel k_j of the linearised chain per segment of one period with the LPF starting at
+// offset `lpf_offset_A` from period[0].dc_A (golden's forward pass, exposed for the kernel).
+std::vector<double> period_noise_kernel(const LsDemodulationConfig& cfg, const std::vector<Segment>& period,
+                                        double lpf_offset_A);
+// The variance of the LPF's memory of shot noise from before the window (at mean current
+// `past_mean_A`), given G at the window start.
+double past_shot_var_V2(const LsDemodulationConfig& cfg, double past_mean_A, double g_start);
 
 // int_0^L ln(max(c0 + c1 e^{-s/tau}, floor) / ref) ds, the same of 1/(c0 + c1 e^{-s/tau}) over
 // the unclipped part, and the clipped time (exposed for tests).

@@ -38,13 +38,15 @@ DemodWindowSchedule demod_window_schedule(const LsDemodulationConfig& cfg) {
 DemodPixelKernel::DemodPixelKernel(const LsDemodulationConfig& cfg, const DemodWindowSchedule& sched)
     : cfg_(cfg), sched_(sched) {}
 
-void DemodPixelKernel::reset(double beam_A, double background_A, pcg32& rng, const DemodNoiseSwitches& noise) {
-  const auto period = golden::pixel_segments(cfg_, beam_A, background_A);
-  if (period.size() != sched_.segment_cycles.size())
+void DemodPixelKernel::reset(double beam_A, double background_A, pcg32& rng, const DemodNoiseSwitches& noise,
+                             bool aggregate) {
+  period_ = golden::pixel_segments(cfg_, beam_A, background_A);
+  if (period_.size() != sched_.segment_cycles.size())
     throw std::logic_error("DemodPixelKernel: pixel segments differ from the window schedule");
-  segments_.clear();
-  for (int p = 0; p < sched_.periods; ++p) segments_.insert(segments_.end(), period.begin(), period.end());
-  lpf_A_ = seg_start_lpf_A_ = golden::lpf_periodic_start_A(cfg_, period);
+  dc0_A_ = period_.front().dc_A;
+  lpf_offset_A_ = golden::lpf_periodic_offset_A(cfg_, period_);
+  aggregate_ = aggregate;
+  period_index_ = 0;
   seg_index_ = 0;
   seg_cycle_ = 0;
   rng_ = &rng;
@@ -55,76 +57,82 @@ void DemodPixelKernel::reset(double beam_A, double background_A, pcg32& rng, con
   plus_V_ = noise.ktc ? n_ktc_p * std::sqrt(kT / cfg_.correlator.capacitance_plus_F) : 0.0;
   minus_V_ = noise.ktc ? n_ktc_m * std::sqrt(kT / cfg_.correlator.capacitance_minus_F) : 0.0;
   if (noise.fixed_pattern) plus_V_ += n_fpn * cfg_.noise.fixed_pattern_rms_V;
-  shot_sd_V_.assign(segments_.size(), 0.0);
+  noise_.reset();
+  if (aggregate_) {
+    // The whole window in closed form now; step() adds it at the window's end.
+    window_ = golden::correlate_periodic(cfg_, period_, sched_.periods);
+    if (shot_) plus_V_ += n_past * std::sqrt(window_.shot_var_past_V2);
+    return;
+  }
   if (!shot_) return;
-  // Closed-form shot-noise variance per segment: golden front_end's forward pass for the noise
-  // kernel k_j (segment mean of the log stage's small-signal gain), then its backward recursion.
-  const auto& sup = cfg_.suppression;
-  const auto& lg = cfg_.log_converter;
-  const auto& co = cfg_.correlator;
-  const double alpha = sup.mirror_gain, eps = sup.mirror_mismatch, tau = sup.lpf_time_constant_s;
-  const double gain_V = co.transconductance_S * lg.gain * lg.slope_V;
-  std::vector<double> k(segments_.size());
-  double Iavg = lpf_A_, mean_A = 0, T = 0;
-  for (std::size_t j = 0; j < segments_.size(); ++j) {
-    const auto& s = segments_[j];
-    const double I = s.photocurrent_A, L = s.duration_s;
-    const auto li = golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * (Iavg - I), tau, L,
-                                         lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
-    const double C = s.branch > 0 ? co.capacitance_plus_F : co.capacitance_minus_F;
-    k[j] = s.branch * gain_V / C * li.inv_s_per_A / L;
-    Iavg = I + (Iavg - I) * std::exp(-L / tau);
-    if (j < period.size()) mean_A += I * L, T += L;
-  }
-  mean_A /= T;
-  const double q = phys::kElementaryCharge_C;
-  double G = 0;
-  for (std::size_t jj = segments_.size(); jj-- > 0;) {
-    const auto& s = segments_[jj];
-    const double L = s.duration_s, e1 = -std::expm1(-L / tau), e2 = -std::expm1(-2 * L / tau);
-    const double A = alpha * eps * k[jj], B = alpha * (k[jj] - G);
-    shot_sd_V_[jj] = std::sqrt(std::max(0.0, q * s.photocurrent_A * (A * A * L + 2 * A * B * tau * e1 + B * B * 0.5 * tau * e2)));
-    G = k[jj] * e1 + G * (1 - e1);
-  }
-  plus_V_ += n_past * std::sqrt(q * mean_A * alpha * alpha * G * G * 0.5 * tau);
+  // Closed-form shot-noise variance per segment: golden front_end's noise kernel k_j of one period
+  // (periodic steady state: the same in every period) and its backward recursion, G at each
+  // period's end by binary powering (begin_period), so memory stays O(S + log N).
+  noise_.emplace(cfg_, period_, golden::period_noise_kernel(cfg_, period_, lpf_offset_A_), sched_.periods);
+  double mean_A = 0, T = 0;
+  for (const auto& s : period_) mean_A += s.photocurrent_A * s.duration_s, T += s.duration_s;
+  plus_V_ += n_past * std::sqrt(golden::past_shot_var_V2(cfg_, mean_A / T, noise_->g_end(sched_.periods)));
+  begin_period();
 }
 
-int DemodPixelKernel::cycles_to_edge() const {
+void DemodPixelKernel::begin_period() {
+  if (!noise_) return;
+  double G = noise_->g_end(sched_.periods - 1 - period_index_);
+  shot_sd_V_.resize(period_.size());
+  for (std::size_t jj = period_.size(); jj-- > 0;) shot_sd_V_[jj] = std::sqrt(std::max(0.0, noise_->segment_var_V2(jj, G)));
+}
+
+long long DemodPixelKernel::cycles_to_edge() const {
   if (window_done()) return 0;
-  return sched_.segment_cycles[static_cast<std::size_t>(seg_index_) % sched_.segment_cycles.size()] - seg_cycle_;
+  if (aggregate_) return sched_.window_cycles();
+  return sched_.segment_cycles[seg_index_] - seg_cycle_;
 }
 
-void DemodPixelKernel::step(int cycles) {
-  const int left = cycles_to_edge();
+void DemodPixelKernel::step(long long cycles) {
+  const long long left = cycles_to_edge();
   if (cycles < 1 || cycles > left) throw std::logic_error("DemodPixelKernel::step: beyond the segment edge");
-  const auto& s = segments_[static_cast<std::size_t>(seg_index_)];
+  if (aggregate_) {
+    if (cycles != left) throw std::logic_error("DemodPixelKernel::step: an aggregated window is one step");
+    plus_V_ += window_.plus_V;
+    minus_V_ += window_.minus_V;
+    if (shot_) {  // C1 first, then C2 (independent sums of independent Gaussians)
+      plus_V_ += standard_normal(*rng_) * std::sqrt(window_.shot_var_plus_V2);
+      minus_V_ -= standard_normal(*rng_) * std::sqrt(window_.shot_var_minus_V2);
+    }
+    lpf_offset_A_ = window_.lpf_end_A - dc0_A_;
+    period_index_ = sched_.periods;
+    return;
+  }
+  const auto& s = period_[seg_index_];
+  // A whole segment uses golden's duration (bit-identical to golden); a piece, cycles / clock.
+  const bool whole = seg_cycle_ == 0 && cycles == left;
+  const double L = whole ? s.duration_s : static_cast<double>(cycles) / sched_.clock_Hz;
   const auto& lg = cfg_.log_converter;
   const double alpha = cfg_.suppression.mirror_gain, eps = cfg_.suppression.mirror_mismatch;
   const double tau = cfg_.suppression.lpf_time_constant_s;
   const double I = s.photocurrent_A;
-  // A whole segment uses golden's duration (bit-identical to golden); a piece, cycles / clock.
-  const bool whole = seg_cycle_ == 0 && cycles == left;
-  const double L = whole ? s.duration_s : cycles / sched_.clock_Hz;
-  const auto li = golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * (lpf_A_ - I), tau, L,
-                                       lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
+  const auto li = golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * golden::lpf_lag_A(lpf_offset_A_, s, dc0_A_),
+                                       tau, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
   const double gain_V = cfg_.correlator.transconductance_S * lg.gain * lg.slope_V;
   if (s.branch > 0)
     plus_V_ += gain_V / cfg_.correlator.capacitance_plus_F * li.ln_s;
   else
     minus_V_ += gain_V / cfg_.correlator.capacitance_minus_F * li.ln_s;
-  lpf_A_ = I + (lpf_A_ - I) * std::exp(-L / tau);
+  lpf_offset_A_ = golden::lpf_offset_after_A(cfg_, lpf_offset_A_, s, dc0_A_, L);
   seg_cycle_ += cycles;
   if (cycles_to_edge() == 0) end_segment();
 }
 
 void DemodPixelKernel::end_segment() {
-  const auto& s = segments_[static_cast<std::size_t>(seg_index_)];
+  const auto& s = period_[seg_index_];
   if (shot_) {
-    const double n = standard_normal(*rng_) * shot_sd_V_[static_cast<std::size_t>(seg_index_)];
+    const double n = standard_normal(*rng_) * shot_sd_V_[seg_index_];
     if (s.branch > 0) plus_V_ += n; else minus_V_ -= n;  // adds n to D either way
   }
-  ++seg_index_;
   seg_cycle_ = 0;
+  if (++seg_index_ < period_.size()) return;
+  seg_index_ = 0;
+  if (++period_index_ < sched_.periods) begin_period();
 }
 
 }  // namespace rangesim::systemc

@@ -28,7 +28,7 @@ void DemodSensor::on_clock() {
   // (next_trigger on an edge time, also for n = 1: a timed wake-up runs in the first delta of
   // that time, before the clock's posedge delta, which a fall-back to the static sensitivity
   // would catch as a second trigger in the same cycle); otherwise one tick per clock edge.
-  const int n = event_skipping_ ? kernel_.advance() : (kernel_.tick(), 1);
+  const long long n = event_skipping_ ? kernel_.advance() : (kernel_.tick(), 1LL);
   span_end_ = sc_core::sc_time_stamp() + n * period_;
   if (event_skipping_) next_trigger(n * period_);
   phase_o.write(static_cast<int>(kernel_.phase()));
@@ -39,7 +39,7 @@ void DemodSensor::on_clock() {
   frame_done_o.write(kernel_.frame_done());
   frame_o.write(static_cast<int>(results_.size()));
   decision_o.write(kernel_.decision());
-  phase_cycle_o.write(kernel_.phase_cycle());
+  phase_cycle_o.write(static_cast<int>(kernel_.phase_cycle()));  // the pin is 32 bits (windows of < 2^31 cycles)
   mpy_plus_o.write(kernel_.mpy_plus());
   const AddressSearchPins pins = kernel_.search_pins();
   search_start_o.write(kernel_.phase() == DemodPhase::RowReadout && kernel_.phase_cycle() == 1);

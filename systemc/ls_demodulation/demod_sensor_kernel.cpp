@@ -88,7 +88,7 @@ void DemodSensorKernel::begin_decision() {
     for (int c = 0; c < columns_; ++c) {
       const std::size_t i = static_cast<std::size_t>(r) * columns_ + c;
       rngs_[i] = pixel_stream(pixel_stream_key(opt_.seed, key_frame, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c)));
-      pixels_[i].reset(stim_.beam_A[i], stim_.background_A[i], rngs_[i], opt_.noise);
+      pixels_[i].reset(stim_.beam_A[i], stim_.background_A[i], rngs_[i], opt_.noise, opt_.event_skipping && opt_.aggregate);
     }
   phase_ = DemodPhase::Integration;
   phase_cycle_ = 0;
@@ -143,6 +143,8 @@ void DemodSensorKernel::tick() {
   ++res_.phase_cycles[static_cast<std::size_t>(phase_)];
   switch (phase_) {
     case DemodPhase::Integration:
+      if (pixels_.front().aggregated())
+        throw std::logic_error("DemodSensorKernel::tick: the window is aggregated; tick with aggregate or event_skipping off");
       for (auto& p : pixels_) p.step(1);
       if (++phase_cycle_ == sched_.window_cycles()) phase_ = DemodPhase::Decision, phase_cycle_ = 0;
       break;
@@ -177,14 +179,14 @@ void DemodSensorKernel::tick() {
   if (phase_ == DemodPhase::Done) res_.end_cycle = cycle_;
 }
 
-int DemodSensorKernel::advance() {
+long long DemodSensorKernel::advance() {
   if (!opt_.event_skipping || phase_ == DemodPhase::Decision) {
     tick();
     return 1;
   }
   if (phase_ == DemodPhase::Done) throw std::logic_error("DemodSensorKernel::advance: no frame started");
   row_strobe_ = false;
-  int n = 0;
+  long long n = 0;
   if (phase_ == DemodPhase::Integration) {
     n = pixels_.front().cycles_to_edge();  // the same schedule for every pixel
     for (auto& p : pixels_) p.step(n);
@@ -218,7 +220,7 @@ DemodFrameResult DemodSensorKernel::run_frame(std::uint64_t frame, const DemodSt
 
 bool DemodSensorKernel::mpy_plus() const {
   if (phase_ != DemodPhase::Integration) return false;
-  int c = phase_cycle_ % sched_.period_cycles;
+  int c = static_cast<int>(phase_cycle_ % sched_.period_cycles);
   for (std::size_t i = 0; i < sched_.segment_cycles.size(); ++i) {
     if (c < sched_.segment_cycles[i]) return sched_.segment_branch[i] > 0;
     c -= sched_.segment_cycles[i];

@@ -17,6 +17,10 @@
 // piecewise-exponential step per segment); a row's readout is evaluated in closed form
 // (AddressSearchKernel::evaluate). Ticking evaluates every edge. Both give the same cycles and,
 // up to floating-point rounding of the analogue values, the same outputs.
+// Aggregation (on by default, with event skipping): the N identical correlation periods of a
+// window in one jump of W cycles (DemodPixelKernel, golden::correlate_periodic), the shot noise
+// one draw per integrator of the exact summed variance: the same cycles, the same noise-free
+// outputs to rounding, statistically identical noisy ones. Off, or ticking: period by period.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -38,6 +42,7 @@ using DemodStimulusSource = std::function<void(std::uint64_t frame, DemodStimulu
 
 struct DemodKernelOptions {
   bool event_skipping = true;         // jump to the next edge (false: tick every cycle)
+  bool aggregate = true;              // with event skipping: the N periods of a window in one jump
   std::uint64_t seed = 1;             // key of the noise streams
   DemodNoiseSwitches noise;           // sources on/off
   bool keep_analogue = false;         // keep D of every pixel and decision in the frame result (tests)
@@ -77,11 +82,12 @@ class DemodSensorKernel {
 
   // Starts frame `frame` with its light; the next edge is the first integration edge.
   void start_frame(std::uint64_t frame, const DemodStimulus& stim);
-  // One rising clock edge (always cycle by cycle, whatever the event-skipping switch).
+  // One rising clock edge (cycle by cycle; an aggregated window cannot be ticked: throws
+  // std::logic_error during its integration, so tick with event skipping or aggregation off).
   void tick();
-  // Jumps as far as the switch allows (event skipping: to the next edge that changes state;
-  // otherwise one tick); returns the cycles advanced.
-  int advance();
+  // Jumps as far as the switches allow (event skipping: to the next edge that changes state,
+  // aggregated: over the whole integration; otherwise one tick); returns the cycles advanced.
+  long long advance();
   bool frame_done() const { return phase_ == DemodPhase::Done; }
   // Runs a started frame to its end with advance() and returns its result.
   DemodFrameResult finish_frame();
@@ -100,7 +106,7 @@ class DemodSensorKernel {
 
   // Read-only views for waveforms (DemodSensor::trace); they do not change the state.
   int decision() const { return decision_; }        // decision index within the frame
-  int phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
+  long long phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
   bool mpy_plus() const;                            // integration: MPY+ (C1) selected at this cycle
 
   const LsDemodulationConfig& config() const { return cfg_; }
@@ -126,7 +132,7 @@ class DemodSensorKernel {
   DemodFrameResult res_;               // result being built
   DemodPhase phase_ = DemodPhase::Done;  // sequencer state
   int decision_ = 0;                   // decision index within the frame
-  int phase_cycle_ = 0;                // cycles done in the current phase / row
+  long long phase_cycle_ = 0;          // cycles done in the current phase / row
   int row_ = 0;                        // row being read out
   std::uint64_t bits_ = 0;             // streamed address bits of the row
   bool row_strobe_ = false;            // a row result completed at the last edge

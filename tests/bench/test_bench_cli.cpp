@@ -22,15 +22,16 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);  // stdout is the JSON and nothing else
   for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
-                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "sparse_vs_dense_spad", "threads2_vs_1",
-                          "realtime_factor"}) {
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
+                          "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_number() || j[key].is_null()) << key;
     EXPECT_TRUE(j["targets"].contains(key)) << key;
     if (j[key].is_null()) EXPECT_TRUE(j["details"][key].contains("note")) << key << ": a missing figure says why";
   }
   for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel",
-                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "sparse_vs_dense_spad", "realtime_factor"}) {
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
+                          "sparse_vs_dense_spad", "realtime_factor"}) {
     ASSERT_TRUE(j[key].is_number()) << key << " is measured by the bench itself";
     EXPECT_GT(j[key].get<double>(), 0.0) << key;
   }
@@ -40,7 +41,8 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
                             "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical",
                             "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle",
                             "spad_sparse_cycles_identical", "spad_sparse_lit_pixels_identical",
-                            "spad_sparse_background_statistically_identical"}) {
+                            "spad_sparse_background_statistically_identical",
+                            "demod_aggregated_statistically_identical"}) {
     ASSERT_TRUE(j["checks"].contains(check)) << check;
     EXPECT_TRUE(j["checks"][check].get<bool>()) << check;
   }
@@ -96,6 +98,19 @@ TEST(SkippingSwitches, NoEventSkipTicksWithIdenticalResult) {
 TEST(SkippingSwitches, NoAggregateIsRefusedWithoutAnAggregatedPath) {
   const auto e = simulate("ls-conventional --scene '" + scene("plane.toml") + "' --kernel-only --no-aggregate", 2);
   EXPECT_NE(e["err"].get<std::string>().find("--no-aggregate"), std::string::npos);
+}
+
+// ls-demodulation: the switch through the binary. Noise-free, aggregated and per-period windows
+// give the same decisions (so positions and error) and cycles (DemodAggregation.* for D and noise).
+TEST(SkippingSwitches, DemodNoAggregateStepsPeriodsWithTheSameResult) {
+  const std::string s = "ls-demodulation --scene '" + scene("ls-demodulation-plane.toml") + "' --kernel-only --noise-free --frames ";
+  const auto a = simulate(s + "3"), b = simulate(s + "3 --no-aggregate"), t = simulate(s + "1 --tick");
+  EXPECT_EQ(a["aggregation"]["path"], "aggregated");
+  EXPECT_EQ(b["aggregation"]["path"], "per_period");
+  EXPECT_EQ(t["aggregation"]["path"], "per_period");  // ticking implies per period
+  EXPECT_EQ(a["cycles"], b["cycles"]);
+  EXPECT_EQ(a["range_error_rms_m"], b["range_error_rms_m"]);
+  EXPECT_EQ(a["points_detected"], b["points_detected"]);
 }
 
 // tof-spad: the preset's dead time, afterpulses, jitter and busy time make its laser cycles

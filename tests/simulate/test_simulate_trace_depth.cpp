@@ -171,7 +171,10 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
   const std::string dir = make_temp_dir();
-  const std::string base = "simulate ls-demodulation --scene " + kScenes + "/ls-demodulation-plane.toml --frames 1 --json --no-plots";
+  // --no-aggregate: the periods stepped one by one, so the trace shows every MPY edge (aggregated,
+  // the integration is one jump and mpy_plus shows none of them).
+  const std::string base =
+      "simulate ls-demodulation --scene " + kScenes + "/ls-demodulation-plane.toml --frames 1 --json --no-plots --no-aggregate";
   const CommandResult a = rangesim_cmd(base + " --trace " + dir + "/a.vcd --out " + dir + "/a");
   const CommandResult b = rangesim_cmd(base + " --trace " + dir + "/b.fst --out " + dir + "/b");
   ASSERT_EQ(a.exit_code, 0) << a.err;
