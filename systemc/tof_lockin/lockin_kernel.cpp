@@ -98,18 +98,37 @@ long long LockinGateKernel::finish_all() {
 
 double LockinPixelKernel::generated_e(const TofLockinConfig &cfg,
                                       const LockinPixelStimulus &s, bool led_on,
-                                      double t_a, double t_b) {
+                                      double t_a, double t_b, long long period,
+                                      double time_step_s) {
   const double q = phys::kElementaryCharge_C;
   const double T0 = cfg.source.pulse_width_s;
   const double Trep = golden::repetition_period_s(cfg.source);
   double e = s.background_A * (t_b - t_a);
   if (led_on && s.signal_A != 0.0) {
     const double eta = cfg.pixel.charge_separation;
-    const double overlap =
-        golden::pulse_area_before_s(cfg.source, t_b - s.delay_s) -
-        golden::pulse_area_before_s(cfg.source, t_a - s.delay_s);
-    e += eta * s.signal_A * overlap +
+    const double light = golden::window_light_in_period_s(
+        cfg.source, s.delay_s, t_a, t_b, period, time_step_s);
+    e += eta * s.signal_A * light +
          (1.0 - eta) * s.signal_A * T0 / Trep * (t_b - t_a);
+  }
+  return e / q;
+}
+
+double LockinPixelKernel::frame_generated_e(const TofLockinConfig &cfg,
+                                            const LockinPixelStimulus &s,
+                                            bool led_on, double t_a, double t_b,
+                                            long long n, double time_step_s) {
+  const double q = phys::kElementaryCharge_C;
+  const double T0 = cfg.source.pulse_width_s;
+  const double Trep = golden::repetition_period_s(cfg.source);
+  const double nd = static_cast<double>(n);
+  double e = s.background_A * nd * (t_b - t_a);
+  if (led_on && s.signal_A != 0.0) {
+    const double eta = cfg.pixel.charge_separation;
+    const double light = golden::window_light_in_frame_s(
+        cfg.source, s.delay_s, t_a, t_b, n, time_step_s);
+    e += eta * s.signal_A * light +
+         (1.0 - eta) * s.signal_A * T0 / Trep * nd * (t_b - t_a);
   }
   return e / q;
 }
@@ -132,9 +151,10 @@ void LockinPixelKernel::reset(const TofLockinConfig &cfg,
 }
 
 void LockinPixelKernel::collect(const TofLockinConfig &cfg,
+                                const LockinSimOptions &o,
                                 const LockinPixelStimulus &s, bool led_on,
-                                double t_open, double t_now) {
-  pg_e_ = generated_e(cfg, s, led_on, t_open, t_now);
+                                double t_open, double t_now, long long period) {
+  pg_e_ = generated_e(cfg, s, led_on, t_open, t_now, period, o.time_step_s);
 }
 
 double LockinPixelKernel::draw_poisson(const LockinSimOptions &o, double mean) {
@@ -166,10 +186,10 @@ void LockinPixelKernel::transfer(const TofLockinConfig &cfg,
   pg_e_ = 0;
 }
 
-void LockinPixelKernel::aggregate(const LockinSimOptions &o, long long n,
-                                  const double m_per_period[2]) {
+void LockinPixelKernel::aggregate(const LockinSimOptions &o,
+                                  const double m_total[2]) {
   for (int k = 0; k < 2; ++k)
-    fd_e_[k] += draw_poisson(o, static_cast<double>(n) * m_per_period[k]);
+    fd_e_[k] += draw_poisson(o, m_total[k]);
 }
 
 double LockinPixelKernel::adc_input_V(const TofLockinConfig &cfg,
@@ -265,26 +285,27 @@ bool TofLockinSensorKernel::step() {
     const bool on = led_on();
     if (opt_.event_skipping && opt_.aggregate && gates_.accumulation() == 0 &&
         gates_.cycle_in_period() == 0) {
-      // N_acc identical periods in one event: per-period means of every window,
-      // Poisson of the total.
+      // A frame's N_acc periods in one event: the total mean of every window
+      // over the frame, Poisson of the total (a sum of independent Poisson
+      // counts). Periods differ only by the tail of the previous pulse.
       const long long n = gates_.accumulations();
       const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
       const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
-      const double dark =
-          cfg_.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
+      const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A *
+                          period_s / phys::kElementaryCharge_C;
       double t[3][2];
       for (int w = 0; w < 3; ++w)
         t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
         t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
+      const double h = opt_.time_step_s;
       for (std::size_t p = 0; p < pixels_.size(); ++p) {
-        const double g1 = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
-                                                         t[0][0], t[0][1]);
-        const double g2 = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
-                                                         t[1][0], t[1][1]);
-        const double gd = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
-                                                         t[2][0], t[2][1]);
-        const double m[2] = {g1 + (leak * gd + dark), g2 + (leak * gd + dark)};
-        pixels_[p].aggregate(opt_, n, m);
+        double g[3];
+        for (int w = 0; w < 3; ++w)
+          g[w] = LockinPixelKernel::frame_generated_e(cfg_, stim_[p], on,
+                                                      t[w][0], t[w][1], n, h);
+        const double m[2] = {g[0] + (leak * g[2] + dark),
+                             g[1] + (leak * g[2] + dark)};
+        pixels_[p].aggregate(opt_, m);
       }
       rec.cycles[0] += n * gates_.t0_cycles();
       rec.cycles[1] += n * gates_.t0_cycles();
@@ -294,6 +315,7 @@ bool TofLockinSensorKernel::step() {
       const int w = static_cast<int>(phase_) - 1;
       const long long n = opt_.event_skipping ? gates_.cycles_to_edge() : 1;
       const long long pos = gates_.cycle_in_period() + n;
+      const long long period = gates_.accumulation();
       gates_.advance(n);
       gate_cycles_ += n;
       rec.cycles[w] += n;
@@ -306,7 +328,7 @@ bool TofLockinSensorKernel::step() {
       const bool empty_drain =
           closed && w == 1 && gates_.period_cycles() == 2 * gates_.t0_cycles();
       for (std::size_t p = 0; p < pixels_.size(); ++p) {
-        pixels_[p].collect(cfg_, stim_[p], on, t_open, t_now);
+        pixels_[p].collect(cfg_, opt_, stim_[p], on, t_open, t_now, period);
         if (closed)
           pixels_[p].transfer(cfg_, opt_, w, period_s);
         if (empty_drain)
