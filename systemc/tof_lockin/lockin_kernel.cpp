@@ -11,6 +11,7 @@
 #include "core/user_error.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/tap_charge.h"
+#include "systemc/poisson_sampler.h"
 #include "systemc/random_stream.h"
 
 namespace rangesim::systemc::lockin {
@@ -133,21 +134,30 @@ double LockinPixelKernel::frame_generated_e(const TofLockinConfig &cfg,
   return e / q;
 }
 
-void LockinPixelKernel::reset(const TofLockinConfig &cfg,
-                              const LockinSimOptions &o, std::uint64_t frame,
-                              std::uint32_t row, std::uint32_t column) {
+LockinPixelKernel::ResetNoise
+LockinPixelKernel::ResetNoise::of(const TofLockinConfig &cfg) {
+  ResetNoise n;
+  for (int k = 0; k < 2; ++k)
+    n.ktc_fd_V[k] = golden::ktc_noise_V(cfg, k) / cfg.pixel.source_follower_gain;
+  n.read_V = cfg.noise.read_noise_V;
+  return n;
+}
+
+void LockinPixelKernel::reset(const ResetNoise &n, const LockinSimOptions &o,
+                              std::uint64_t frame, std::uint32_t row,
+                              std::uint32_t column) {
   fd_e_[0] = fd_e_[1] = 0, pg_e_ = 0;
   ktc_V_[0] = ktc_V_[1] = read_V_[0] = read_V_[1] = 0;
   if (!o.noise)
     return;
   rng_ = pixel_stream(pixel_stream_key(o.seed, frame, row, column));
-  // Draw order: kTC FD1, kTC FD2, read FD1, read FD2 (always consumed), then
-  // the Poisson counts.
+  // Draw order: the pair (kTC FD1, kTC FD2), the pair (read FD1, read FD2)
+  // (always consumed), then the Poisson counts.
+  double z[4];
+  standard_normal_pair(rng_, z[0], z[1]);
+  standard_normal_pair(rng_, z[2], z[3]);
   for (int k = 0; k < 2; ++k)
-    ktc_V_[k] = standard_normal(rng_) * golden::ktc_noise_V(cfg, k) /
-                cfg.pixel.source_follower_gain;
-  for (int k = 0; k < 2; ++k)
-    read_V_[k] = standard_normal(rng_) * cfg.noise.read_noise_V;
+    ktc_V_[k] = z[k] * n.ktc_fd_V[k], read_V_[k] = z[2 + k] * n.read_V;
 }
 
 void LockinPixelKernel::collect(const TofLockinConfig &cfg,
@@ -166,9 +176,9 @@ double LockinPixelKernel::draw_poisson(const LockinSimOptions &o, double mean) {
   // integer draw overflows (undefined), and long before that a count is not exact in a double.
   // From 1e15 electrons on the Poisson law is Normal(mean, mean) to a skewness of 3e-8.
   if (mean > 1e15)
-    return std::max(0.0, std::round(mean + std::sqrt(mean) *
-                                               std::normal_distribution<double>()(rng_)));
-  return static_cast<double>(std::poisson_distribution<long long>(mean)(rng_));
+    return std::max(0.0,
+                    std::round(mean + std::sqrt(mean) * standard_normal(rng_)));
+  return static_cast<double>(PoissonSampler(mean)(rng_));
 }
 
 void LockinPixelKernel::transfer(const TofLockinConfig &cfg,
@@ -223,7 +233,8 @@ TofLockinSensorKernel::TofLockinSensorKernel(
     int sim_columns, std::vector<LockinPixelStimulus> stimulus,
     long long frames)
     : cfg_(cfg), opt_(opt), rows_(sim_rows), cols_(sim_columns),
-      stim_(std::move(stimulus)), frames_(frames), gates_(cfg), adc_(cfg) {
+      stim_(std::move(stimulus)), frames_(frames), gates_(cfg), adc_(cfg),
+      reset_noise_(LockinPixelKernel::ResetNoise::of(cfg)) {
   assert(rows_ >= 0 && rows_ <= cfg.pixel.rows && cols_ >= 0 &&
          cols_ <= cfg.pixel.columns);
   assert(stim_.size() == static_cast<std::size_t>(rows_) * cols_);
@@ -251,7 +262,7 @@ void TofLockinSensorKernel::begin_frame() {
   for (int r = 0; r < rows_; ++r)
     for (int c = 0; c < cols_; ++c)
       pixels_[static_cast<std::size_t>(r) * cols_ + c].reset(
-          cfg_, opt_, static_cast<std::uint64_t>(frame_),
+          reset_noise_, opt_, static_cast<std::uint64_t>(frame_),
           static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c));
   gates_.start();
   phase_ = gates_.phase();

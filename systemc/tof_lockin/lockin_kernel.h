@@ -124,9 +124,16 @@ public:
                                   const LockinPixelStimulus &s, bool led_on,
                                   double t_a, double t_b, long long n,
                                   double time_step_s);
+  // Noise amplitudes of the reset, fixed per configuration (computed once, not
+  // per pixel and frame).
+  struct ResetNoise {
+    double ktc_fd_V[2] = {0, 0}; // kTC rms on FD1 / FD2, at the FD
+    double read_V = 0;           // read noise rms per sample
+    static ResetNoise of(const TofLockinConfig &cfg);
+  };
   // Reset of both FDs at the frame start; draws kTC and read noise (always
   // consumed).
-  void reset(const TofLockinConfig &cfg, const LockinSimOptions &o,
+  void reset(const ResetNoise &n, const LockinSimOptions &o,
              std::uint64_t frame, std::uint32_t row, std::uint32_t column);
   // Photogate charge of the open window recomputed from its opening time (tick
   // and skip agree bit for bit).
@@ -245,6 +252,7 @@ private:
   LockinGateKernel gates_;
   LockinColumnAdcKernel adc_;
   std::vector<LockinPixelKernel> pixels_;
+  LockinPixelKernel::ResetNoise reset_noise_;
   std::vector<long long> codes_; // per frame, pixel, tap
   std::vector<double> inputs_;   // ADC inputs, same layout
   std::vector<LockinFrameRecord> records_;

@@ -72,6 +72,28 @@ TEST(LockinCharge, PulseTailPastThePeriodGoesToTheNextPhase1) {
   EXPECT_NEAR(d.light_common_e, 0.05 * is * n * r / 2 / q, 1e-6);
 }
 
+// The numerical integration behind the time-step knob: a ramp is integrated with an O(h^2)
+// error, which falls with every step and vanishes in the limit; outside the pulse it is 0; step 0
+// is the closed form.
+TEST(LockinPulse, NumericalOverlapConvergesToTheClosedForm) {
+  TofLockinConfig cfg = lockin_config();
+  cfg.source.rise_time_s = 8e-9;  // ramps [0, 10 ns] and [100, 110 ns]
+  const double a = 3.3e-9, b = 104.1e-9;  // a window cutting both ramps
+  const double exact = pulse_area_before_s(cfg.source, b) - pulse_area_before_s(cfg.source, a);
+  EXPECT_EQ(pulse_area_between_s(cfg.source, a, b, 0.0), exact);
+  double prev = INFINITY;
+  for (double h : {20e-9, 2e-9, 0.2e-9, 0.02e-9}) {
+    const double e = std::fabs(pulse_area_between_s(cfg.source, a, b, h) - exact);
+    EXPECT_LT(e, prev) << h;
+    EXPECT_LE(e, 2 * h * h / (10e-9 * 8)) << h;  // midpoint rule: <= kinks x slope jump x h^2 / 8
+    prev = e;
+  }
+  EXPECT_LT(prev, 1e-22);
+  EXPECT_EQ(pulse_area_between_s(cfg.source, 120e-9, 300e-9, 1e-9), 0.0);
+  EXPECT_EQ(pulse_area_between_s(cfg.source, -50e-9, -1e-9, 1e-9), 0.0);
+  EXPECT_NEAR(pulse_area_between_s(cfg.source, -50e-9, 300e-9, 1e-9), 100e-9, 1e-21);  // whole area
+}
+
 TEST(LockinCharge, IdealPixelCollectsEq217SignalAndTwoWindowsOfBackground) {
   const TofLockinConfig cfg = lockin_config();
   const double q = phys::kElementaryCharge_C, n = 50, T0 = 100e-9;
