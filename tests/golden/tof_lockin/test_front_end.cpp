@@ -85,10 +85,10 @@ TEST(LockinPulse, NumericalOverlapConvergesToTheClosedForm) {
   for (double h : {20e-9, 2e-9, 0.2e-9, 0.02e-9}) {
     const double e = std::fabs(pulse_area_between_s(cfg.source, a, b, h) - exact);
     EXPECT_LT(e, prev) << h;
-    EXPECT_LE(e, 2 * h * h / (10e-9 * 8)) << h;  // midpoint rule: <= kinks x slope jump x h^2 / 8
+    EXPECT_LE(e, 1.001 * 2 * h * h / (10e-9 * 8)) << h;  // midpoint rule: <= kinks x slope jump x h^2 / 8
     prev = e;
   }
-  EXPECT_LT(prev, 1e-22);
+  EXPECT_LT(prev, 1e-18);  // 1e-11 of the area: rounding of the 5000-term sum
   EXPECT_EQ(pulse_area_between_s(cfg.source, 120e-9, 300e-9, 1e-9), 0.0);
   EXPECT_EQ(pulse_area_between_s(cfg.source, -50e-9, -1e-9, 1e-9), 0.0);
   EXPECT_NEAR(pulse_area_between_s(cfg.source, -50e-9, 300e-9, 1e-9), 100e-9, 1e-21);  // whole area
