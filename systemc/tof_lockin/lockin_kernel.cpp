@@ -300,24 +300,28 @@ bool TofLockinSensorKernel::step() {
       // over the frame, Poisson of the total (a sum of independent Poisson
       // counts). Periods differ only by the tail of the previous pulse.
       const long long n = gates_.accumulations();
-      const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
-      const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
-      const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A *
-                          period_s / phys::kElementaryCharge_C;
-      double t[3][2];
-      for (int w = 0; w < 3; ++w)
-        t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
-        t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
-      const double h = opt_.time_step_s;
-      for (std::size_t p = 0; p < pixels_.size(); ++p) {
-        double g[3];
+      std::vector<double> &mean = frame_mean_e_[on ? 1 : 0];
+      if (mean.empty()) {
+        const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
+        const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
+        const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A *
+                            period_s / phys::kElementaryCharge_C;
+        double t[3][2];
         for (int w = 0; w < 3; ++w)
-          g[w] = LockinPixelKernel::frame_generated_e(cfg_, stim_[p], on,
-                                                      t[w][0], t[w][1], n, h);
-        const double m[2] = {g[0] + (leak * g[2] + dark),
-                             g[1] + (leak * g[2] + dark)};
-        pixels_[p].aggregate(opt_, m);
+          t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
+          t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
+        mean.resize(2 * pixels_.size());
+        for (std::size_t p = 0; p < pixels_.size(); ++p) {
+          double g[3];
+          for (int w = 0; w < 3; ++w)
+            g[w] = LockinPixelKernel::frame_generated_e(
+                cfg_, stim_[p], on, t[w][0], t[w][1], n, opt_.time_step_s);
+          mean[2 * p] = g[0] + (leak * g[2] + dark);
+          mean[2 * p + 1] = g[1] + (leak * g[2] + dark);
+        }
       }
+      for (std::size_t p = 0; p < pixels_.size(); ++p)
+        pixels_[p].aggregate(opt_, &mean[2 * p]);
       rec.cycles[0] += n * gates_.t0_cycles();
       rec.cycles[1] += n * gates_.t0_cycles();
       rec.cycles[2] += n * (gates_.period_cycles() - 2 * gates_.t0_cycles());

@@ -253,6 +253,9 @@ private:
   LockinColumnAdcKernel adc_;
   std::vector<LockinPixelKernel> pixels_;
   LockinPixelKernel::ResetNoise reset_noise_;
+  // Aggregation: each pixel's mean frame totals per tap, LED frame [1] and
+  // ambient frame [0]; stimulus and gates are fixed, so computed once each.
+  std::vector<double> frame_mean_e_[2]; // 2 per pixel (FD1, FD2)
   std::vector<long long> codes_; // per frame, pixel, tap
   std::vector<double> inputs_;   // ADC inputs, same layout
   std::vector<LockinFrameRecord> records_;
