@@ -151,6 +151,8 @@ TEST(SkippingSwitches, SpadBackgroundOnlyPixelsOfABeamSpot) {
   EXPECT_EQ(q["cycles"], d["cycles"]);
   EXPECT_EQ(q["background_only"]["detections"].get<long long>(), 0);
   EXPECT_EQ(d["background_only"]["detections"].get<long long>(), 0);
+}
+
 // --time-step (tof-lockin's numerical pulse/gate overlap): out-of-range values are exit 2 naming
 // the flag and the allowed range, other sensors refuse it; a coarse step is visibly wrong and a
 // fine one gives the exact run's noise-free range error (monotone convergence with a rise time:
