@@ -99,6 +99,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                 "tof-lockin: run the N_acc accumulation periods one by one instead of one draw of their sum;\n"
                 "tof-spad: run the laser cycles one by one (aggregation runs only where cycles are independent)");
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");
+  sim->add_option("--time-step", sim_opt.time_step_s,
+                  "tof-lockin: integrate the received pulse's overlap with the gate windows numerically at this\n"
+                  "step in seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default)\n"
+                  "= exact. Error falls and cost rises as the step shrinks");
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(

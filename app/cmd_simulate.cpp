@@ -62,6 +62,10 @@ int run_simulate(const SimulateOptions& opt) {
   if (opt.no_aggregate && params.sensor_id() == "ls-conventional")
     throw UserError(fmt::format("--no-aggregate: {} has no aggregated path to switch off; allowed with ls-demodulation, tof-lockin, tof-spad",
                                 params.sensor_id()));
+  if (opt.time_step_s != 0.0 && params.sensor_id() != "tof-lockin")
+    throw UserError(fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
+                                "step; allowed with tof-lockin (or 0)",
+                                params.sensor_id()));
   if (params.sensor_id() == "ls-demodulation") return run_simulate_ls_demodulation(opt, params);
   if (params.sensor_id() == "tof-lockin") return run_simulate_tof_lockin(opt, params);
   if (params.sensor_id() == "tof-spad") return run_simulate_tof_spad(opt, params);

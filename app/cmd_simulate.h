@@ -22,6 +22,7 @@ struct SimulateOptions {
   bool dense = false;               // --dense / --no-sparse: simulate every pixel (no sparse window)
   bool no_aggregate = false;        // --no-aggregate: ls-demodulation correlation periods / tof-lockin accumulation periods / tof-spad laser cycles one by one
   bool no_plots = false;            // --no-plots: skip range_map.png
+  double time_step_s = 0;           // --time-step S: tof-lockin pulse/gate overlaps integrated at step S (0 = exact closed form)
 };
 
 // Returns the exit code; throws UserError (exit 2) for bad input, NotModelled (exit 3) for a

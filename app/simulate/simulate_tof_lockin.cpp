@@ -57,6 +57,17 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   if (opt.tick && !opt.kernel_only)
     throw UserError("--tick selects the kernel's cycle-by-cycle path; use it "
                     "with --kernel-only");
+  // Time step of the pulse/gate overlap integration: at most one step per
+  // pulse width (coarser says nothing), at least T0 / 1e5 (bounded cost);
+  // 1e-9 relative slack so the printed bounds themselves are accepted.
+  const double T0 = cfg.source.pulse_width_s;
+  if (!(opt.time_step_s == 0.0 ||
+        (opt.time_step_s >= T0 * 1e-5 * (1 - 1e-9) &&
+         opt.time_step_s <= T0 * (1 + 1e-9))))
+    throw UserError(fmt::format(
+        "--time-step {:g}: allowed 0 (exact, closed form) or {:g} <= S <= {:g} "
+        "s (source.pulse_width_s T0 / 1e5 .. T0)",
+        opt.time_step_s, T0 * 1e-5, T0));
   const lk::LockinScene sc =
       scene::to_lockin_scene(scene::load_scene(opt.scene, "tof-lockin"), cfg);
   {
@@ -72,6 +83,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   kopt.aggregate = !opt.tick && !opt.no_aggregate; // N_acc identical periods as one event, Poisson
                               // of the total mean
   kopt.seed = opt.seed;
+  kopt.time_step_s = opt.time_step_s;
 
   // ---- Run ----
   const auto t_sim = Clock::now();
@@ -214,6 +226,7 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
       {"harness", opt.kernel_only ? "kernel" : "systemc"},
       {"event_skipping", kopt.event_skipping},
       {"aggregation", kopt.aggregate},
+      {"time_step_s", kopt.time_step_s},
       {"noise", kopt.noise},
       {"seed", opt.seed},
       {"frames", frames},

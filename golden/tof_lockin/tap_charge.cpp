@@ -20,19 +20,24 @@ FrameCharge frame_charge(const TofLockinConfig& cfg, double signal_A, double bac
   const double T0 = cfg.source.pulse_width_s;
   const double Trep = repetition_period_s(cfg.source);
   const double phase3_s = Trep - 2.0 * T0;  // >= 0: duty <= 0.5 by the schema
-  const double n = static_cast<double>(cfg.gates.accumulations_per_frame);
+  const long long n_acc = cfg.gates.accumulations_per_frame;
+  const double n = static_cast<double>(n_acc);
   const double eta = cfg.pixel.charge_separation;
   const double leak = (1.0 - cfg.pixel.drain_efficiency) / 2.0;  // to each tap
-  const PulseSplit p = split_pulse(cfg.source, delay_s);
+  // Light-on time of the frame's pulse train in each window, summed over the periods (a tail past
+  // T_rep lands in the next period's PHASE1; pulse_timing.h).
+  const double light_s[3] = {window_light_in_frame_s(cfg.source, delay_s, 0.0, T0, n_acc),
+                             window_light_in_frame_s(cfg.source, delay_s, T0, 2.0 * T0, n_acc),
+                             window_light_in_frame_s(cfg.source, delay_s, 2.0 * T0, Trep, n_acc)};
 
   FrameCharge c;
-  c.signal_e[0] = eta * signal_A * p.tap1_s * n / q;
-  c.signal_e[1] = eta * signal_A * p.tap2_s * n / q;
+  c.signal_e[0] = eta * signal_A * light_s[0] / q;
+  c.signal_e[1] = eta * signal_A * light_s[1] / q;
   // Deep electrons: (1 - eta) of the pulse's charge, spread uniformly over the period.
   const double deep_e = (1.0 - eta) * signal_A * T0 * n / q;
   const double deep_per_tap_e = deep_e * T0 / Trep;
   const double deep_drained_e = deep_e * phase3_s / Trep;
-  const double signal_drained_e = eta * signal_A * p.drain_s * n / q;
+  const double signal_drained_e = eta * signal_A * light_s[2] / q;
   c.light_common_e = deep_per_tap_e + leak * (deep_drained_e + signal_drained_e);
   c.background_e = background_A * n * (T0 + leak * phase3_s) / q;
   c.dark_e = cfg.noise.dark_current_A * n * Trep / q;

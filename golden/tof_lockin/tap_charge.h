@@ -10,7 +10,9 @@
 //   background, tap k:  I_b T0 / q                           (both windows are open for T0)
 //   PHASE3 leakage:     (1 - eps) / 2 of everything generated while TXD drains goes to each tap
 //   dark:               I_dark T_rep / q into each FD (the wait until readout is not modelled)
-// times N_acc. Everything but the tap-specific signal is common to both taps. The thesis's
+// times N_acc, with one exception: t_k sums the frame's pulse train over the periods
+// (window_light_in_frame_s), so a pulse tail past T_rep counts in the next period's PHASE1 and
+// the last pulse's tail past the accumulation is not collected. Everything but the tap-specific signal is common to both taps. The thesis's
 // V_offset (eq. 2.25) is `offset_voltage_V`, a constant FD offset present in every frame.
 //
 // At the ADC input, V_k = A_sf (q N_k / C_k + V_offset). Noise per sample (one readout of a tap):

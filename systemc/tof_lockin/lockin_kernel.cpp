@@ -11,6 +11,7 @@
 #include "core/user_error.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/tap_charge.h"
+#include "systemc/poisson_sampler.h"
 #include "systemc/random_stream.h"
 
 namespace rangesim::systemc::lockin {
@@ -98,43 +99,72 @@ long long LockinGateKernel::finish_all() {
 
 double LockinPixelKernel::generated_e(const TofLockinConfig &cfg,
                                       const LockinPixelStimulus &s, bool led_on,
-                                      double t_a, double t_b) {
+                                      double t_a, double t_b, long long period,
+                                      double time_step_s) {
   const double q = phys::kElementaryCharge_C;
   const double T0 = cfg.source.pulse_width_s;
   const double Trep = golden::repetition_period_s(cfg.source);
   double e = s.background_A * (t_b - t_a);
   if (led_on && s.signal_A != 0.0) {
     const double eta = cfg.pixel.charge_separation;
-    const double overlap =
-        golden::pulse_area_before_s(cfg.source, t_b - s.delay_s) -
-        golden::pulse_area_before_s(cfg.source, t_a - s.delay_s);
-    e += eta * s.signal_A * overlap +
+    const double light = golden::window_light_in_period_s(
+        cfg.source, s.delay_s, t_a, t_b, period, time_step_s);
+    e += eta * s.signal_A * light +
          (1.0 - eta) * s.signal_A * T0 / Trep * (t_b - t_a);
   }
   return e / q;
 }
 
-void LockinPixelKernel::reset(const TofLockinConfig &cfg,
-                              const LockinSimOptions &o, std::uint64_t frame,
-                              std::uint32_t row, std::uint32_t column) {
+double LockinPixelKernel::frame_generated_e(const TofLockinConfig &cfg,
+                                            const LockinPixelStimulus &s,
+                                            bool led_on, double t_a, double t_b,
+                                            long long n, double time_step_s) {
+  const double q = phys::kElementaryCharge_C;
+  const double T0 = cfg.source.pulse_width_s;
+  const double Trep = golden::repetition_period_s(cfg.source);
+  const double nd = static_cast<double>(n);
+  double e = s.background_A * nd * (t_b - t_a);
+  if (led_on && s.signal_A != 0.0) {
+    const double eta = cfg.pixel.charge_separation;
+    const double light = golden::window_light_in_frame_s(
+        cfg.source, s.delay_s, t_a, t_b, n, time_step_s);
+    e += eta * s.signal_A * light +
+         (1.0 - eta) * s.signal_A * T0 / Trep * nd * (t_b - t_a);
+  }
+  return e / q;
+}
+
+LockinPixelKernel::ResetNoise
+LockinPixelKernel::ResetNoise::of(const TofLockinConfig &cfg) {
+  ResetNoise n;
+  for (int k = 0; k < 2; ++k)
+    n.ktc_fd_V[k] = golden::ktc_noise_V(cfg, k) / cfg.pixel.source_follower_gain;
+  n.read_V = cfg.noise.read_noise_V;
+  return n;
+}
+
+void LockinPixelKernel::reset(const ResetNoise &n, const LockinSimOptions &o,
+                              std::uint64_t frame, std::uint32_t row,
+                              std::uint32_t column) {
   fd_e_[0] = fd_e_[1] = 0, pg_e_ = 0;
   ktc_V_[0] = ktc_V_[1] = read_V_[0] = read_V_[1] = 0;
   if (!o.noise)
     return;
   rng_ = pixel_stream(pixel_stream_key(o.seed, frame, row, column));
-  // Draw order: kTC FD1, kTC FD2, read FD1, read FD2 (always consumed), then
-  // the Poisson counts.
+  // Draw order: the pair (kTC FD1, kTC FD2), the pair (read FD1, read FD2)
+  // (always consumed), then the Poisson counts.
+  double z[4];
+  standard_normal_pair(rng_, z[0], z[1]);
+  standard_normal_pair(rng_, z[2], z[3]);
   for (int k = 0; k < 2; ++k)
-    ktc_V_[k] = standard_normal(rng_) * golden::ktc_noise_V(cfg, k) /
-                cfg.pixel.source_follower_gain;
-  for (int k = 0; k < 2; ++k)
-    read_V_[k] = standard_normal(rng_) * cfg.noise.read_noise_V;
+    ktc_V_[k] = z[k] * n.ktc_fd_V[k], read_V_[k] = z[2 + k] * n.read_V;
 }
 
 void LockinPixelKernel::collect(const TofLockinConfig &cfg,
+                                const LockinSimOptions &o,
                                 const LockinPixelStimulus &s, bool led_on,
-                                double t_open, double t_now) {
-  pg_e_ = generated_e(cfg, s, led_on, t_open, t_now);
+                                double t_open, double t_now, long long period) {
+  pg_e_ = generated_e(cfg, s, led_on, t_open, t_now, period, o.time_step_s);
 }
 
 double LockinPixelKernel::draw_poisson(const LockinSimOptions &o, double mean) {
@@ -146,9 +176,9 @@ double LockinPixelKernel::draw_poisson(const LockinSimOptions &o, double mean) {
   // integer draw overflows (undefined), and long before that a count is not exact in a double.
   // From 1e15 electrons on the Poisson law is Normal(mean, mean) to a skewness of 3e-8.
   if (mean > 1e15)
-    return std::max(0.0, std::round(mean + std::sqrt(mean) *
-                                               std::normal_distribution<double>()(rng_)));
-  return static_cast<double>(std::poisson_distribution<long long>(mean)(rng_));
+    return std::max(0.0,
+                    std::round(mean + std::sqrt(mean) * standard_normal(rng_)));
+  return static_cast<double>(PoissonSampler(mean)(rng_));
 }
 
 void LockinPixelKernel::transfer(const TofLockinConfig &cfg,
@@ -166,10 +196,10 @@ void LockinPixelKernel::transfer(const TofLockinConfig &cfg,
   pg_e_ = 0;
 }
 
-void LockinPixelKernel::aggregate(const LockinSimOptions &o, long long n,
-                                  const double m_per_period[2]) {
+void LockinPixelKernel::aggregate(const LockinSimOptions &o,
+                                  const double m_total[2]) {
   for (int k = 0; k < 2; ++k)
-    fd_e_[k] += draw_poisson(o, static_cast<double>(n) * m_per_period[k]);
+    fd_e_[k] += draw_poisson(o, m_total[k]);
 }
 
 double LockinPixelKernel::adc_input_V(const TofLockinConfig &cfg,
@@ -203,7 +233,8 @@ TofLockinSensorKernel::TofLockinSensorKernel(
     int sim_columns, std::vector<LockinPixelStimulus> stimulus,
     long long frames)
     : cfg_(cfg), opt_(opt), rows_(sim_rows), cols_(sim_columns),
-      stim_(std::move(stimulus)), frames_(frames), gates_(cfg), adc_(cfg) {
+      stim_(std::move(stimulus)), frames_(frames), gates_(cfg), adc_(cfg),
+      reset_noise_(LockinPixelKernel::ResetNoise::of(cfg)) {
   assert(rows_ >= 0 && rows_ <= cfg.pixel.rows && cols_ >= 0 &&
          cols_ <= cfg.pixel.columns);
   assert(stim_.size() == static_cast<std::size_t>(rows_) * cols_);
@@ -231,7 +262,7 @@ void TofLockinSensorKernel::begin_frame() {
   for (int r = 0; r < rows_; ++r)
     for (int c = 0; c < cols_; ++c)
       pixels_[static_cast<std::size_t>(r) * cols_ + c].reset(
-          cfg_, opt_, static_cast<std::uint64_t>(frame_),
+          reset_noise_, opt_, static_cast<std::uint64_t>(frame_),
           static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c));
   gates_.start();
   phase_ = gates_.phase();
@@ -265,27 +296,32 @@ bool TofLockinSensorKernel::step() {
     const bool on = led_on();
     if (opt_.event_skipping && opt_.aggregate && gates_.accumulation() == 0 &&
         gates_.cycle_in_period() == 0) {
-      // N_acc identical periods in one event: per-period means of every window,
-      // Poisson of the total.
+      // A frame's N_acc periods in one event: the total mean of every window
+      // over the frame, Poisson of the total (a sum of independent Poisson
+      // counts). Periods differ only by the tail of the previous pulse.
       const long long n = gates_.accumulations();
-      const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
-      const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
-      const double dark =
-          cfg_.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
-      double t[3][2];
-      for (int w = 0; w < 3; ++w)
-        t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
-        t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
-      for (std::size_t p = 0; p < pixels_.size(); ++p) {
-        const double g1 = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
-                                                         t[0][0], t[0][1]);
-        const double g2 = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
-                                                         t[1][0], t[1][1]);
-        const double gd = LockinPixelKernel::generated_e(cfg_, stim_[p], on,
-                                                         t[2][0], t[2][1]);
-        const double m[2] = {g1 + (leak * gd + dark), g2 + (leak * gd + dark)};
-        pixels_[p].aggregate(opt_, n, m);
+      std::vector<double> &mean = frame_mean_e_[on ? 1 : 0];
+      if (mean.empty()) {
+        const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
+        const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
+        const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A *
+                            period_s / phys::kElementaryCharge_C;
+        double t[3][2];
+        for (int w = 0; w < 3; ++w)
+          t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
+          t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
+        mean.resize(2 * pixels_.size());
+        for (std::size_t p = 0; p < pixels_.size(); ++p) {
+          double g[3];
+          for (int w = 0; w < 3; ++w)
+            g[w] = LockinPixelKernel::frame_generated_e(
+                cfg_, stim_[p], on, t[w][0], t[w][1], n, opt_.time_step_s);
+          mean[2 * p] = g[0] + (leak * g[2] + dark);
+          mean[2 * p + 1] = g[1] + (leak * g[2] + dark);
+        }
       }
+      for (std::size_t p = 0; p < pixels_.size(); ++p)
+        pixels_[p].aggregate(opt_, &mean[2 * p]);
       rec.cycles[0] += n * gates_.t0_cycles();
       rec.cycles[1] += n * gates_.t0_cycles();
       rec.cycles[2] += n * (gates_.period_cycles() - 2 * gates_.t0_cycles());
@@ -294,6 +330,7 @@ bool TofLockinSensorKernel::step() {
       const int w = static_cast<int>(phase_) - 1;
       const long long n = opt_.event_skipping ? gates_.cycles_to_edge() : 1;
       const long long pos = gates_.cycle_in_period() + n;
+      const long long period = gates_.accumulation();
       gates_.advance(n);
       gate_cycles_ += n;
       rec.cycles[w] += n;
@@ -306,7 +343,7 @@ bool TofLockinSensorKernel::step() {
       const bool empty_drain =
           closed && w == 1 && gates_.period_cycles() == 2 * gates_.t0_cycles();
       for (std::size_t p = 0; p < pixels_.size(); ++p) {
-        pixels_[p].collect(cfg_, stim_[p], on, t_open, t_now);
+        pixels_[p].collect(cfg_, opt_, stim_[p], on, t_open, t_now, period);
         if (closed)
           pixels_[p].transfer(cfg_, opt_, w, period_s);
         if (empty_drain)

@@ -50,6 +50,9 @@ struct LockinSimOptions {
       false; // with event_skipping: one event per accumulation phase (N_acc
              // identical periods summed; Poisson of the total mean, exact)
   std::uint64_t seed = 1; // key of the noise streams
+  // 0: pulse/gate overlaps in closed form (exact). > 0: the pulse shape integrated numerically
+  // at this step (golden::pulse_area_between_s): error falls and cost rises as it shrinks.
+  double time_step_s = 0;
 };
 
 // Per-pixel stimulus from the scene.
@@ -108,29 +111,43 @@ private:
 class LockinPixelKernel {
 public:
   LockinPixelKernel() = default;
-  // Mean electrons generated on the photogate over [t_a, t_b] of a period
-  // (seconds from the period start): signal eta I_s x pulse overlap, deep
+  // Mean electrons generated on the photogate over [t_a, t_b] of period
+  // `period` (seconds from the period start): signal eta I_s x light of the
+  // pulses 0 .. period (a tail past T_rep reaches the next period), deep
   // electrons (1-eta) I_s T0 / T_rep, background.
   static double generated_e(const TofLockinConfig &cfg,
                             const LockinPixelStimulus &s, bool led_on,
-                            double t_a, double t_b);
+                            double t_a, double t_b, long long period,
+                            double time_step_s);
+  // The same window summed over the n periods of a frame (aggregation).
+  static double frame_generated_e(const TofLockinConfig &cfg,
+                                  const LockinPixelStimulus &s, bool led_on,
+                                  double t_a, double t_b, long long n,
+                                  double time_step_s);
+  // Noise amplitudes of the reset, fixed per configuration (computed once, not
+  // per pixel and frame).
+  struct ResetNoise {
+    double ktc_fd_V[2] = {0, 0}; // kTC rms on FD1 / FD2, at the FD
+    double read_V = 0;           // read noise rms per sample
+    static ResetNoise of(const TofLockinConfig &cfg);
+  };
   // Reset of both FDs at the frame start; draws kTC and read noise (always
   // consumed).
-  void reset(const TofLockinConfig &cfg, const LockinSimOptions &o,
+  void reset(const ResetNoise &n, const LockinSimOptions &o,
              std::uint64_t frame, std::uint32_t row, std::uint32_t column);
   // Photogate charge of the open window recomputed from its opening time (tick
   // and skip agree bit for bit).
-  void collect(const TofLockinConfig &cfg, const LockinPixelStimulus &s,
-               bool led_on, double t_open, double t_now);
+  void collect(const TofLockinConfig &cfg, const LockinSimOptions &o,
+               const LockinPixelStimulus &s, bool led_on, double t_open,
+               double t_now, long long period);
   // Closing edge of window w: TX1 / TX2 move the photogate charge into FD1 /
   // FD2; TXD drains it, (1 - eps) / 2 leaking into each FD, plus the dark
   // charge of the period on each FD.
   void transfer(const TofLockinConfig &cfg, const LockinSimOptions &o,
                 int window, double period_s);
-  // Aggregation: n periods in one event, mean per period m[k] per tap (all
+  // Aggregation: a frame's periods in one event, mean total m[k] per tap (all
   // windows and dark).
-  void aggregate(const LockinSimOptions &o, long long n,
-                 const double m_per_period[2]);
+  void aggregate(const LockinSimOptions &o, const double m_total[2]);
   // ADC input of tap k: A_sf min(q N / C + V_offset + v_kTC, V_sat) + v_read.
   double adc_input_V(const TofLockinConfig &cfg, int tap) const;
   double fd_e(int tap) const { return fd_e_[tap]; }
@@ -235,6 +252,10 @@ private:
   LockinGateKernel gates_;
   LockinColumnAdcKernel adc_;
   std::vector<LockinPixelKernel> pixels_;
+  LockinPixelKernel::ResetNoise reset_noise_;
+  // Aggregation: each pixel's mean frame totals per tap, LED frame [1] and
+  // ambient frame [0]; stimulus and gates are fixed, so computed once each.
+  std::vector<double> frame_mean_e_[2]; // 2 per pixel (FD1, FD2)
   std::vector<long long> codes_; // per frame, pixel, tap
   std::vector<double> inputs_;   // ADC inputs, same layout
   std::vector<LockinFrameRecord> records_;

@@ -153,4 +153,30 @@ TEST(SkippingSwitches, SpadBackgroundOnlyPixelsOfABeamSpot) {
   EXPECT_EQ(d["background_only"]["detections"].get<long long>(), 0);
 }
 
+// --time-step (tof-lockin's numerical pulse/gate overlap): out-of-range values are exit 2 naming
+// the flag and the allowed range, other sensors refuse it; a coarse step is visibly wrong and a
+// fine one gives the exact run's noise-free range error (monotone convergence with a rise time:
+// LockinTimeStep.*).
+TEST(TimeStep, BadValuesAreRefusedWithTheAllowedRange) {
+  const std::string s = "tof-lockin --scene '" + scene("tof-lockin-plane.toml") + "' --kernel-only --time-step ";
+  for (const char* v : {"-1", "nan", "1e-6", "1e-13"}) {
+    const auto e = simulate(s + v, 2);
+    const std::string err = e["err"].get<std::string>();
+    EXPECT_NE(err.find("--time-step"), std::string::npos) << v << ": " << err;
+    EXPECT_NE(err.find("1e-12 <= S <= 1e-07"), std::string::npos) << v << ": " << err;
+  }
+  const auto e = simulate("ls-conventional --scene '" + scene("plane.toml") + "' --kernel-only --time-step 1e-9", 2);
+  EXPECT_NE(e["err"].get<std::string>().find("--time-step"), std::string::npos);
+}
+
+TEST(TimeStep, FineStepMeetsTheExactNoiseFreeRun) {
+  const std::string s = "tof-lockin --scene '" + scene("tof-lockin-plane.toml") + "' --kernel-only --noise-free";
+  const auto exact = simulate(s), coarse = simulate(s + " --time-step 5e-8"), fine = simulate(s + " --time-step 1e-9");
+  EXPECT_EQ(exact["time_step_s"].get<double>(), 0.0);
+  EXPECT_EQ(fine["time_step_s"].get<double>(), 1e-9);
+  const double e0 = exact["range_error_rms_m"].get<double>();
+  EXPECT_GT(coarse["range_error_rms_m"].get<double>(), e0 + 1.0);  // whole 50 ns steps of charge misplaced
+  EXPECT_NEAR(fine["range_error_rms_m"].get<double>(), e0, 5e-3);
+}
+
 }  // namespace

@@ -50,6 +50,50 @@ TEST(LockinPulse, TrapezoidKeepsAreaAndMonotonicRatio) {
   }
 }
 
+// Duty 0.5, 8 ns rise (10 ns ramps), T_D = T0: the received pulse covers [T0, 2 T0 + r]; its
+// falling ramp [2 T0, 2 T0 + r] (area r / 2) arrives in the next period's PHASE1 and goes to FD1.
+// Periods 1 .. N-1 receive it; the last pulse's tail falls into the readout and is not collected.
+TEST(LockinCharge, PulseTailPastThePeriodGoesToTheNextPhase1) {
+  TofLockinConfig cfg = lockin_config();
+  cfg.source.duty_cycle = 0.5;
+  cfg.source.rise_time_s = 8e-9;
+  cfg.pixel.drain_efficiency = 0.9;  // a drained tail would leak 5 % into each FD
+  const double q = phys::kElementaryCharge_C, n = 50, T0 = 100e-9, r = 10e-9, is = 1e-9;
+  const FrameCharge c = frame_charge(cfg, is, 0.0, T0);
+  EXPECT_NEAR(c.signal_e[0], is * (n - 1) * r / 2 / q, 1e-9);
+  EXPECT_NEAR(c.signal_e[1], is * n * (T0 - r / 2) / q, 1e-6);
+  EXPECT_NEAR(c.light_common_e, 0.0, 1e-9);  // nothing reached the (empty) PHASE3
+  EXPECT_NEAR(window_light_in_period_s(cfg.source, T0, 0.0, T0, 0), 0.0, 1e-24);
+  EXPECT_NEAR(window_light_in_period_s(cfg.source, T0, 0.0, T0, 7), r / 2, 1e-22);
+  // Duty 0.25: PHASE3 [2 T0, 4 T0] holds the whole tail, which is drained (leak to each FD).
+  cfg.source.duty_cycle = 0.25;
+  const FrameCharge d = frame_charge(cfg, is, 0.0, T0);
+  EXPECT_NEAR(d.signal_e[0], 0.0, 1e-9);
+  EXPECT_NEAR(d.light_common_e, 0.05 * is * n * r / 2 / q, 1e-6);
+}
+
+// The numerical integration behind the time-step knob: a ramp is integrated with an O(h^2)
+// error, which falls with every step and vanishes in the limit; outside the pulse it is 0; step 0
+// is the closed form.
+TEST(LockinPulse, NumericalOverlapConvergesToTheClosedForm) {
+  TofLockinConfig cfg = lockin_config();
+  cfg.source.rise_time_s = 8e-9;  // ramps [0, 10 ns] and [100, 110 ns]
+  const double a = 3.3e-9, b = 104.1e-9;  // a window cutting both ramps
+  const double exact = pulse_area_before_s(cfg.source, b) - pulse_area_before_s(cfg.source, a);
+  EXPECT_EQ(pulse_area_between_s(cfg.source, a, b, 0.0), exact);
+  double prev = INFINITY;
+  for (double h : {20e-9, 2e-9, 0.2e-9, 0.02e-9}) {
+    const double e = std::fabs(pulse_area_between_s(cfg.source, a, b, h) - exact);
+    EXPECT_LT(e, prev) << h;
+    EXPECT_LE(e, 1.001 * 2 * h * h / (10e-9 * 8)) << h;  // midpoint rule: <= kinks x slope jump x h^2 / 8
+    prev = e;
+  }
+  EXPECT_LT(prev, 1e-18);  // 1e-11 of the area: rounding of the 5000-term sum
+  EXPECT_EQ(pulse_area_between_s(cfg.source, 120e-9, 300e-9, 1e-9), 0.0);
+  EXPECT_EQ(pulse_area_between_s(cfg.source, -50e-9, -1e-9, 1e-9), 0.0);
+  EXPECT_NEAR(pulse_area_between_s(cfg.source, -50e-9, 300e-9, 1e-9), 100e-9, 1e-21);  // whole area
+}
+
 TEST(LockinCharge, IdealPixelCollectsEq217SignalAndTwoWindowsOfBackground) {
   const TofLockinConfig cfg = lockin_config();
   const double q = phys::kElementaryCharge_C, n = 50, T0 = 100e-9;
