@@ -145,16 +145,10 @@ void finish_counts(pcg32& rng, double after_mean, long long L, int nc, GroupHist
 
 std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int np, int nc, int block_event_bins,
                                      int block_overflow_bins) {
-  if (noise.afterpulse && cfg.spad.afterpulse_probability > 0)
-    return fmt::format("afterpulses (spad.afterpulse_probability = {:g}) tie an avalanche to the next ones", cfg.spad.afterpulse_probability);
-  if (cfg.spad.dead_time_s > 0)
-    return fmt::format("SPAD dead time {:g} s: an avalanche late in a cycle blinds the next one", cfg.spad.dead_time_s);
-  if (noise.jitter && cfg.spad.jitter_sigma_s > 0)
-    return fmt::format("jitter {:g} s: avalanches cross cycle edges, the first and later cycles differ", cfg.spad.jitter_sigma_s);
-  if (nc > 0 && nc - 1 + block_event_bins > np)
-    return fmt::format("TDC blocked {} bins after an event: a late event carries into the next cycle", block_event_bins);
-  if (nc < np && np - 1 + block_overflow_bins > np)
-    return fmt::format("TDC blocked {} bins after an overflow: carries into the next cycle", block_overflow_bins);
+  // The conditions that tie one laser cycle to the next (shared with background-only groups) ...
+  if (std::string b = spad_background_blocker(cfg, noise, np, nc, block_event_bins, block_overflow_bins); !b.empty())
+    return b;
+  // ... and those that only an echo raises.
   const double sigma = noise.pulse_width ? cfg.laser.sigma_per_fwhm * cfg.laser.pulse_fwhm_s : 0.0;
   if (cfg.tdc.columns_per_tdc > 1 && !(sigma > 0))
     return "delta pulse on a shared TDC: simultaneous echoes go to the lowest column, not in equal shares";
@@ -242,7 +236,7 @@ std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& n
   if (cfg.spad.dead_time_s > 0)
     return fmt::format("SPAD dead time {:g} s: an avalanche late in a cycle blinds the next one", cfg.spad.dead_time_s);
   if (noise.jitter && cfg.spad.jitter_sigma_s > 0)
-    return fmt::format("jitter {:g} s: avalanches cross cycle edges and can leave a pixel out of order", cfg.spad.jitter_sigma_s);
+    return fmt::format("jitter {:g} s: avalanches cross cycle edges, so cycles are not independent", cfg.spad.jitter_sigma_s);
   if (nc > 0 && nc - 1 + block_event_bins > np)
     return fmt::format("TDC blocked {} bins after an event: a late event carries into the next cycle", block_event_bins);
   if (nc < np && np - 1 + block_overflow_bins > np)
