@@ -49,14 +49,12 @@ ReadoutSequencerKernel::ReadoutSequencerKernel(const FrameTimingConfig& timing, 
   events_.push_back(frame_cycles_);
   std::sort(events_.begin(), events_.end());
   events_.erase(std::unique(events_.begin(), events_.end()), events_.end());
+  pins_ = pins_at(0);
 }
 
 void ReadoutSequencerKernel::tick(bool rst) {
-  if (rst) {
-    cycle_ = 0;
-    return;
-  }
-  ++cycle_;
+  cycle_ = rst ? 0 : cycle_ + 1;
+  pins_ = pins_at(cycle_);
 }
 
 ReadoutSequencerPins ReadoutSequencerKernel::pins_at(long long cycle) const {
@@ -96,6 +94,7 @@ long long ReadoutSequencerKernel::next_event_cycle() const {
 void ReadoutSequencerKernel::advance_to(long long cycle) {
   assert(cycle >= cycle_ && "advance_to goes forward only");
   cycle_ = cycle;
+  pins_ = pins_at(cycle_);
 }
 
 }  // namespace rangesim::systemc

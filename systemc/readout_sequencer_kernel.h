@@ -52,7 +52,7 @@ class ReadoutSequencerKernel {
 
   // One rising clock edge; synchronous reset back to cycle 0 of frame 0 (which is held while rst).
   void tick(bool rst);
-  ReadoutSequencerPins pins() const { return pins_at(cycle_); }
+  const ReadoutSequencerPins& pins() const { return pins_; }  // of the current cycle (cached)
   ReadoutSequencerPins pins_at(long long cycle) const;
 
   long long cycle() const { return cycle_; }                 // cycles since reset release
@@ -73,6 +73,7 @@ class ReadoutSequencerKernel {
   long long frame_cycles_ = 0;    // F
   std::vector<long long> events_; // cycles within a frame at which pins change (sorted, ends with F)
   long long cycle_ = 0;           // current cycle since reset release
+  ReadoutSequencerPins pins_;     // pins_at(cycle_), recomputed only when the cycle moves
 };
 
 }  // namespace rangesim::systemc
