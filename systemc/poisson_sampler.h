@@ -53,14 +53,25 @@ class PoissonSampler {
       const double k = std::floor((2 * a_ / us + b_) * u + mu_ + 0.43);
       if (us >= 0.07 && v <= v_r_) return static_cast<long long>(k);  // squeeze: inside the pmf
       if (k < 0 || (us < 0.013 && v > us)) continue;
-      // Outside the squeeze: accept iff the point lies under log p(k) = -mu + k log mu - log k!.
-      if (std::log(v * inv_alpha_ / (a_ / (us * us) + b_)) <= -mu_ + k * std::log(mu_) - std::lgamma(k + 1))
-        return static_cast<long long>(k);
+      // Outside the squeeze: accept iff the point lies under log p(k).
+      if (std::log(v * inv_alpha_ / (a_ / (us * us) + b_)) <= log_pmf(mu_, k)) return static_cast<long long>(k);
     }
+  }
+
+  // log p(k) = -mu + k ln mu - ln k!. Summed directly its three terms of size mu ln mu cancel to
+  // O(ln mu): at mu = 1e12 only ~1e-2 of the result is left in doubles. For k >= 16, ln k! is
+  // taken as Stirling's k ln k - k + ln(2 pi k)/2 plus its remainder series (error < 2e-14), so
+  // with d = mu - k the result is k ln(1 + d/k) - d - ln(2 pi k)/2 - r(k): terms of size d, not mu.
+  static double log_pmf(double mu, double k) {
+    if (k < 16) return -mu + k * std::log(mu) - std::lgamma(k + 1);
+    const double d = mu - k, ik = 1 / k, ik2 = ik * ik;
+    const double r = ik * (1.0 / 12 - ik2 * (1.0 / 360 - ik2 * (1.0 / 1260 - ik2 / 1680)));
+    return k * std::log1p(d / k) - d - 0.5 * std::log(2 * kPi * k) - r;
   }
 
  private:
   static constexpr double kInversionBelow = 10;  // PTRS needs mu >= 10
+  static constexpr double kPi = 3.14159265358979323846;
   double mu_ = 0;
   double exp_neg_mu_ = 1;                                  // inversion
   double b_ = 0, a_ = 0, inv_alpha_ = 0, v_r_ = 0;  // PTRS constants (log mu only in the rare exact test)

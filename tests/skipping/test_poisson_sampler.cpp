@@ -6,6 +6,8 @@
 // two-sample KS p >= 0.001), and a companion test that the rule rejects a 3 % change of mu.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -63,6 +65,37 @@ TEST(PoissonSampler, ZeroMeanDrawsZero) {
   pcg32 rng = sc::pixel_stream(1);
   const sc::PoissonSampler s(0.0);
   for (int i = 0; i < 100; ++i) EXPECT_EQ(s(rng), 0);
+}
+
+// The rare exact acceptance test of PTRS compares against log p(k). Summed directly,
+// -mu + k ln mu - ln k! loses ~1e-2 at mu = 1e12 (aggregated lock-in charges reach 1e15 e-).
+// The pmf it gives must still sum to 1 and keep the ratio of neighbours p(k+1)/p(k) = mu/(k+1).
+TEST(PoissonSampler, LogPmfKeepsItsDigitsAtHugeMeans) {
+  for (double mu : {1e6, 1e9, 1e12, 1e14}) {
+    const double sd = std::sqrt(mu);
+    double worst_ratio = 0, worst_direct = 0;
+    for (double z = -6; z <= 6; z += 0.25) {
+      const double k = std::floor(mu + z * sd);
+      const double step = sc::PoissonSampler::log_pmf(mu, k + 1) - sc::PoissonSampler::log_pmf(mu, k);
+      worst_ratio = std::max(worst_ratio, std::abs(step - std::log(mu / (k + 1))));
+      const long double direct = -static_cast<long double>(mu) + k * std::log(static_cast<long double>(mu)) -
+                                 std::lgamma(static_cast<long double>(k) + 1);
+      worst_direct = std::max(worst_direct, static_cast<double>(std::abs(direct - sc::PoissonSampler::log_pmf(mu, k))));
+    }
+    // What is left is the rounding of terms of size d = 6 sd: d x 1e-16 (the direct sum: mu ln mu x 1e-16).
+    EXPECT_LT(worst_ratio, 1e-9 + 6 * sd * 1e-15) << "mu " << mu;
+    // long double keeps 64 bits: its own error is about mu ln mu x 1e-19.
+    EXPECT_LT(worst_direct, 1e-8 + mu * std::log(mu) * 4e-19) << "mu " << mu;
+  }
+  // Normalisation over +-9 sd at mu = 1e12 (the direct double sum is off by ~1e-2 here).
+  const double mu = 1e12, sd = 1e6;
+  long double sum = 0;
+  for (double k = std::floor(mu - 9 * sd); k <= mu + 9 * sd; k += 1) sum += std::exp(sc::PoissonSampler::log_pmf(mu, k));
+  EXPECT_NEAR(static_cast<double>(sum), 1.0, 1e-8);
+  // Small k keep the direct form; the two forms meet at k = 16.
+  for (double m : {10.0, 16.0, 40.0})
+    for (double k = 0; k <= 60; k += 1)
+      EXPECT_NEAR(sc::PoissonSampler::log_pmf(m, k), -m + k * std::log(m) - std::lgamma(k + 1), 1e-11) << m << " " << k;
 }
 
 TEST(StandardNormalPair, StatisticallyIdenticalToStdNormalAndUncorrelated) {
