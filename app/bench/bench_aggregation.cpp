@@ -81,9 +81,6 @@ json bench_aggregation_lockin(bool quick) {
   return j;
 }
 
-namespace {
-namespace sp = rangesim::systemc::spad;
-
 TofSpadConfig spad_exact_config() {
   TofSpadConfig cfg = tof_spad_from_params(load_preset_file(resolve_preset("tof-spad")));
   cfg.spad.dead_time_s = 0;
@@ -94,6 +91,9 @@ TofSpadConfig spad_exact_config() {
   cfg.histogram.integration_time_s = 1e-3;  // 40,000 laser cycles per row
   return cfg;
 }
+
+namespace {
+namespace sp = rangesim::systemc::spad;
 
 // One simulated row of `groups` TDC groups, flat wall at 2 m, 2 Mcounts/s signal, 1 Mcounts/s background.
 sp::TofSpadKernel spad_kernel(const TofSpadConfig& cfg, bool event_skipping, bool aggregate, int groups, std::uint64_t seed) {

@@ -4,6 +4,8 @@
 // clock by clock, timed in one run and compared by a stated two-sample test (bench_stats.h).
 #include <nlohmann/json.hpp>
 
+#include "core/tof_spad_config.h"
+
 namespace rangesim::app::bench {
 
 // tof-lockin: N_acc gate periods per frame as one Poisson draw of the total mean per tap
@@ -11,6 +13,11 @@ namespace rangesim::app::bench {
 // Keys: value (per-clock time / aggregated time per frame), target, identical (test passed),
 // tap statistics.
 nlohmann::json bench_aggregation_lockin(bool quick);
+
+// The tof-spad preset edited to where laser cycles are independent (no afterpulse, dead time 0,
+// no jitter, 20 ns TDC range, 4 ns busy, 1 ms = 40,000 laser cycles per row): tof-spad aggregation
+// and the background-only class are exact there (bench_sparse_spad.h uses it too).
+TofSpadConfig spad_exact_config();
 
 // tof-spad: the L laser cycles of each TDC group as one multinomial draw (TofSpadKernelOptions::
 // aggregate) vs the same frame with every TDC clock cycle ticked (event_skipping off), on the

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "app/bench/bench_aggregation.h"
 #include "app/bench/bench_stats.h"
 #include "app/bench/bench_util.h"
 #include "core/preset.h"
@@ -17,19 +18,6 @@ namespace sp = rangesim::systemc::spad;
 using nlohmann::json;
 
 constexpr int kColumns = 128, kBeam = 8;  // array width; the beam spot is kBeam x kBeam pixels in the middle
-
-// The preset where the background class's closed form is exact (pure-background laser cycles
-// independent): no afterpulse, dead time 0, no jitter, TDC re-armed by the next START.
-TofSpadConfig sparse_config() {
-  TofSpadConfig cfg = tof_spad_from_params(load_preset_file(resolve_preset("tof-spad")));
-  cfg.spad.dead_time_s = 0;
-  cfg.spad.afterpulse_probability = 0;
-  cfg.spad.jitter_sigma_s = 0;
-  cfg.tdc.full_range_s = 20e-9;
-  cfg.tdc.busy_time_s = 4e-9;
-  cfg.histogram.integration_time_s = 1e-3;  // 40,000 laser cycles per row
-  return cfg;
-}
 
 struct SpadSpot {
   int rows;
@@ -63,7 +51,7 @@ Timed run(const TofSpadConfig& cfg, int rows, bool sparse, std::uint64_t seed) {
 }  // namespace
 
 json bench_sparse_spad(bool quick) {
-  const TofSpadConfig cfg = sparse_config();
+  const TofSpadConfig cfg = spad_exact_config();  // where the background class's closed form is exact
   const int rows = quick ? 16 : 64;
   const SpadSpot spot{rows};
   progress(fmt::format("tof-spad sparse: {} x {} pixels, {} x {} beam spot, dense (every group per cycle)", rows, kColumns, kBeam, kBeam));
