@@ -188,10 +188,25 @@ double segment_var(double q_I, double k, double alpha, double eps, double tau, d
   return q_I * (A * A * L + 2 * A * B * tau * e1 + B * B * 0.5 * tau * e2);
 }
 
+// Adds the shot-noise variance of the segments k[0..] (period repeated), walked backwards from
+// G(T) = G_end, and of the shot noise before the window, to `out`.
+void add_shot_var_backwards(const LsDemodulationConfig& cfg, const std::vector<Segment>& period,
+                            const std::vector<double>& k, double G_end, double past_mean_A, CorrelatorOutput& out) {
+  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
+  const double tau = cfg.suppression.lpf_time_constant_s, q = phys::kElementaryCharge_C;
+  const size_t S = period.size();
+  double G = G_end;
+  for (size_t jj = k.size(); jj-- > 0;) {
+    const Segment& s = period[jj % S];
+    (s.branch > 0 ? out.shot_var_plus_V2 : out.shot_var_minus_V2) +=
+        segment_var(q * s.photocurrent_A, k[jj], alpha, eps, tau, s.duration_s, G);
+  }
+  out.shot_var_past_V2 = past_shot_var_V2(cfg, past_mean_A, G);
+  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
+}
+
 CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods, double start_A,
                      double past_mean_A) {
-  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
-  const double tau = cfg.suppression.lpf_time_constant_s;
   const size_t S = period.size(), n = S * static_cast<size_t>(std::max(periods, 0));
   std::vector<double> k(n);  // noise kernel per segment, V / (A s) per A of i_mod
   CorrelatorOutput out;
@@ -214,15 +229,7 @@ CorrelatorOutput run(const LsDemodulationConfig& cfg, const std::vector<Segment>
   out.lpf_end_A = dc0 + x;
 
   // Shot noise, backwards: G(u) = int_u^T k(t) e^{-(t-u)/tau} dt / tau.
-  const double q = phys::kElementaryCharge_C;
-  double G = 0;
-  for (size_t jj = n; jj-- > 0;) {
-    const Segment& s = period[jj % S];
-    (s.branch > 0 ? out.shot_var_plus_V2 : out.shot_var_minus_V2) +=
-        segment_var(q * s.photocurrent_A, k[jj], alpha, eps, tau, s.duration_s, G);
-  }
-  out.shot_var_past_V2 = past_shot_var_V2(cfg, past_mean_A, G);
-  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
+  add_shot_var_backwards(cfg, period, k, 0.0, past_mean_A, out);
   return out;
 }
 
@@ -383,7 +390,6 @@ CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vect
   const long long M = static_cast<long long>(std::min<double>(m, periods));
   if (M >= periods) return run(cfg, period, periods, lpf_start_A, lpf_start_A);
   const long long R = periods - M;
-  const double alpha = cfg.suppression.mirror_gain, eps = cfg.suppression.mirror_mismatch;
   CorrelatorOutput out;
   std::vector<double> k(static_cast<size_t>(M) * S);
   double x = x0, T = 0, clipped = 0;
@@ -425,15 +431,7 @@ CorrelatorOutput correlate_from(const LsDemodulationConfig& cfg, const std::vect
   const PeriodicShotNoise noise(cfg, period, period_noise_kernel(cfg, period, x_ss), R);
   const PeriodicShotNoise::Window w = noise.window(R);
   out.shot_var_plus_V2 = w.plus_V2, out.shot_var_minus_V2 = w.minus_V2;
-  const double q = phys::kElementaryCharge_C;
-  double G = w.g_start;
-  for (size_t jj = k.size(); jj-- > 0;) {
-    const Segment& s = period[jj % S];
-    (s.branch > 0 ? out.shot_var_plus_V2 : out.shot_var_minus_V2) +=
-        segment_var(q * s.photocurrent_A, k[jj], alpha, eps, tau, s.duration_s, G);
-  }
-  out.shot_var_past_V2 = past_shot_var_V2(cfg, lpf_start_A, G);
-  out.shot_var_V2 = out.shot_var_plus_V2 + out.shot_var_minus_V2 + out.shot_var_past_V2;
+  add_shot_var_backwards(cfg, period, k, w.g_start, lpf_start_A, out);
   return out;
 }
 

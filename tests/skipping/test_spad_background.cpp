@@ -123,16 +123,6 @@ std::vector<std::string> differences(const Samples& a, const Samples& b) {
   return bad;
 }
 
-void expect_same_histogram(const GroupHistogram& a, const GroupHistogram& b) {
-  EXPECT_EQ(a.events, b.events);
-  EXPECT_EQ(a.armed, b.armed);
-  EXPECT_EQ(a.starts, b.starts);
-  EXPECT_EQ(a.overflows, b.overflows);
-  EXPECT_EQ(a.lost_busy, b.lost_busy);
-  EXPECT_EQ(a.avalanches, b.avalanches);
-  EXPECT_EQ(a.photons, b.photons);
-}
-
 TEST(SpadBackground, ClassPathAndDeterministicPartsIdentical) {
   const TofSpadConfig exact = exact_config();
   EXPECT_EQ(kernel(exact, true, 1, 2).background_blocker(), "");
@@ -150,7 +140,7 @@ TEST(SpadBackground, ClassPathAndDeterministicPartsIdentical) {
     EXPECT_EQ(fd.groups_background, 0);
     const GroupHistogram echo_s = ks.simulate_group(0, 0, 0, spot), echo_d = kd.simulate_group(0, 0, 0, spot);
     EXPECT_FALSE(echo_s.background_class);
-    expect_same_histogram(echo_s, echo_d);
+    test::expect_same_histogram(echo_s, echo_d);
     const GroupHistogram bg_s = ks.simulate_group(0, 0, 1, spot), bg_d = kd.simulate_group(0, 0, 1, spot);
     EXPECT_EQ(bg_s.starts, bg_d.starts);
     if (cfg == &exact) {
@@ -162,14 +152,14 @@ TEST(SpadBackground, ClassPathAndDeterministicPartsIdentical) {
       EXPECT_FALSE(bg_s.background_class);
       EXPECT_EQ(fs.groups_background, 0);
       EXPECT_EQ(fs.groups_background_per_cycle, 1);
-      expect_same_histogram(bg_s, bg_d);
+      test::expect_same_histogram(bg_s, bg_d);
     }
     // No arrivals at all (noise-free, no echo): the class's empty histogram in any configuration,
     // equal to the per-cycle one bit for bit.
     const TofSpadKernel ns = kernel(*cfg, true, 7, 2, SpadNoise::none()), nd = kernel(*cfg, false, 7, 2, SpadNoise::none());
     const GroupHistogram e_s = ns.simulate_group(0, 0, 1, spot), e_d = nd.simulate_group(0, 0, 1, spot);
     EXPECT_TRUE(e_s.background_class);
-    expect_same_histogram(e_s, e_d);
+    test::expect_same_histogram(e_s, e_d);
     EXPECT_EQ(e_s.armed.front(), ns.laser_cycles());
   }
 }

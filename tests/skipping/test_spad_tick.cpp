@@ -9,16 +9,6 @@
 namespace rangesim::systemc::spad {
 namespace {
 
-void expect_same(const GroupHistogram& a, const GroupHistogram& b) {
-  EXPECT_EQ(a.events, b.events);
-  EXPECT_EQ(a.armed, b.armed);
-  EXPECT_EQ(a.starts, b.starts);
-  EXPECT_EQ(a.overflows, b.overflows);
-  EXPECT_EQ(a.lost_busy, b.lost_busy);
-  EXPECT_EQ(a.avalanches, b.avalanches);
-  EXPECT_EQ(a.photons, b.photons);
-}
-
 TEST(SpadTick, PerClockTdcEqualsEventDriven) {
   const TofSpadConfig cfg = tof_spad_from_params(test::small_preset(20e-6, 4));  // 800 laser cycles
   struct Light {
@@ -40,7 +30,7 @@ TEST(SpadTick, PerClockTdcEqualsEventDriven) {
                                             << " noise " << noise << " group " << group);
           const GroupHistogram ga = a.simulate_group(3, 1, group, rates);
           const GroupHistogram gb = b.simulate_group(3, 1, group, rates);
-          expect_same(ga, gb);
+          test::expect_same_histogram(ga, gb);
           for (const auto& e : ga.events)
             for (long long n : e) compared_events += n;
           compared_lost += ga.lost_busy;

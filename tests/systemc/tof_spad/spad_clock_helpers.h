@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <gtest/gtest.h>
+
 #include "core/params.h"
 #include "core/preset.h"
 #include "core/tof_spad_config.h"
@@ -30,6 +32,17 @@ inline ParamSet small_preset(double integration_s, long long rows) {
 
 inline RateSource flat(double signal_Hz, double background_Hz, double round_trip_s) {
   return [=](int, int) { return PixelRates{signal_Hz, background_Hz, round_trip_s}; };
+}
+
+// Two histogram memories equal field by field (each field its own failure message).
+inline void expect_same_histogram(const GroupHistogram& a, const GroupHistogram& b) {
+  EXPECT_EQ(a.events, b.events);
+  EXPECT_EQ(a.armed, b.armed);
+  EXPECT_EQ(a.starts, b.starts);
+  EXPECT_EQ(a.overflows, b.overflows);
+  EXPECT_EQ(a.lost_busy, b.lost_busy);
+  EXPECT_EQ(a.avalanches, b.avalanches);
+  EXPECT_EQ(a.photons, b.photons);
 }
 
 }  // namespace rangesim::systemc::spad::test
