@@ -11,10 +11,10 @@
 #include "app/montecarlo/mc_models.h"
 #include "app/montecarlo/mc_sweep.h"
 #include "core/preset.h"
-#include "golden/ls_conventional_eval.h"
-#include "golden/row_model.h"
-#include "systemc/poisson_sampler.h"
-#include "systemc/random_stream.h"
+#include "golden/ls_conventional/evaluation.h"
+#include "golden/common/row_model.h"
+#include "systemc/common/poisson_sampler.h"
+#include "systemc/common/random_stream.h"
 
 namespace rangesim::app {
 

@@ -42,19 +42,4 @@ GridAxis parse_grid_axis(const std::string& text, const std::string& flag) {
   return g;
 }
 
-ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command) {
-  ParamSet params = load_preset(id_or_path);
-  const SensorInfo* info = find_sensor(params.sensor_id());
-  auto has_model = [&](const SensorInfo& s) { return command == "frame-rate" ? s.timing_modelled : s.golden_modelled; };
-  if (!info || !has_model(*info)) {
-    std::string modelled;
-    for (const auto& s : sensors())
-      if (has_model(s)) modelled += (modelled.empty() ? "" : ", ") + s.id;
-    throw NotModelled{fmt::format("rangesim {}: sensor '{}' is not modelled yet (its preset loads and validates; "
-                                  "see `rangesim show {}`); modelled: {}",
-                                  command, params.sensor_id(), params.sensor_id(), modelled)};
-  }
-  return params;
-}
-
 }  // namespace rangesim::app

@@ -22,8 +22,8 @@
 #include "app/output_dir.h"
 #include "app/sweep_journal.h"
 #include "core/user_error.h"
-#include "tb/cosim_coverage.h"
-#include "tb/cosim_target.h"
+#include "tb/common/cosim_coverage.h"
+#include "tb/common/cosim_target.h"
 
 namespace rangesim::app {
 namespace {

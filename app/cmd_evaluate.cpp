@@ -13,7 +13,7 @@
 #include "app/plot.h"
 #include "core/preset.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 
 namespace rangesim::app {
 

@@ -4,11 +4,11 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
-#include "core/ls_conventional_config.h"
+#include "core/ls_conventional/config.h"
 #include "core/preset.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
-#include "golden/frame_timing.h"
+#include "golden/common/evaluate_sensor.h"
+#include "golden/common/frame_timing.h"
 
 namespace rangesim::app {
 

@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "core/preset.h"
 #include "core/user_error.h"
+#include "golden/common/evaluate_sensor.h"
 
 namespace rangesim::app {
 
@@ -13,6 +14,7 @@ int run_list(const ListOptions& opt) {
   if (!opt.json)
     fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", "preset", "thesis", "evaluate", "frame-rate", "architecture");
   for (const auto& s : sensors()) {
+    const bool modelled = golden::golden_model(s.id) != nullptr;  // evaluate, table and frame-rate
     std::string file;
     try {
       file = resolve_preset(s.id);
@@ -21,10 +23,10 @@ int run_list(const ListOptions& opt) {
     }
     if (opt.json)
       list.push_back({{"id", s.id}, {"title", s.title}, {"thesis_ref", s.thesis_ref},
-                      {"golden_modelled", s.golden_modelled}, {"timing_modelled", s.timing_modelled}, {"file", file}});
+                      {"golden_modelled", modelled}, {"timing_modelled", modelled}, {"file", file}});
     else
-      fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s.id, s.thesis_ref, s.golden_modelled ? "yes" : "not yet",
-                 s.timing_modelled ? "yes" : "not yet", s.title);
+      fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s.id, s.thesis_ref, modelled ? "yes" : "not yet",
+                 modelled ? "yes" : "not yet", s.title);
   }
   if (opt.json) fmt::print("{}\n", list.dump(2));
   return 0;
@@ -62,7 +64,7 @@ int run_show(const ShowOptions& opt) {
     nlohmann::json j;
     j["sensor"] = params.sensor_id();
     j["file"] = params.origin();
-    j["golden_modelled"] = info && info->golden_modelled;
+    j["golden_modelled"] = golden::golden_model(params.sensor_id()) != nullptr;
     nlohmann::json ps = nlohmann::json::object();
     for (const auto& spec : schema.params) {
       const ParamValue& v = params.at(spec.key);

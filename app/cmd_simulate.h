@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rangesim::app {
 
@@ -37,10 +38,15 @@ class ParamSet;
 
 namespace rangesim::app {
 
-// Per-sensor clock-level simulations (app/simulate/simulate_<sensor>.cpp); `params` is the
+// A sensor's clock-level simulation (app/simulate/simulate_<sensor>.cpp): `params` is the
 // validated preset with the command-line overrides applied.
-int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& params);
-int run_simulate_tof_lockin(const SimulateOptions& opt, const ParamSet& params);
-int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params);
+struct SimulateEntry {
+  std::string sensor;  // preset id
+  int (*run)(const SimulateOptions& opt, const ParamSet& params);
+  bool aggregation;  // has an aggregated path that --no-aggregate switches off
+  bool time_step;    // has a continuous-time integration that --time-step coarsens
+};
+// The shipped sensors' simulations (core/sensor_list.h), then any added at run time.
+std::vector<SimulateEntry>& simulate_registry();
 
 }  // namespace rangesim::app

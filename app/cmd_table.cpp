@@ -9,9 +9,9 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
-#include "app/table_data.h"
 #include "core/preset.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
+#include "golden/common/table_5_1.h"
 
 namespace rangesim::app {
 
@@ -61,18 +61,17 @@ void table_progress(int done, int total) {
                  g_sensor_index, g_sensor_count, done, total, isatty(fileno(stderr)) && done != total ? "" : "\n");
 }
 
-Column build_column(const ThesisColumn& tc) {
+Column build_column(const golden::ThesisColumn& tc) {
   Column c{tc.sensor, tc.reference, false, {}, {}};
   const ParamSet params = load_preset(tc.sensor);
-  const SensorInfo* info = find_sensor(tc.sensor);
-  c.modelled = info && info->golden_modelled;
+  c.modelled = golden::golden_model(tc.sensor) != nullptr;
   golden::EvalResult ev;
   if (c.modelled) {
     ev = golden::evaluate_sensor(params, &table_progress);
     c.published = golden::published_figures(params);
   }
-  const bool total_sbr = tc.sensor == "ls-conventional";  // eq. 3.11 there, eq. 3.23/4.11 elsewhere
-  const auto& rows = table_rows();
+  const bool total_sbr = tc.sbr_total;  // eq. 3.11, or eq. 3.23/4.11
+  const auto& rows = golden::table_rows();
   for (size_t i = 0; i < rows.size(); ++i) {
     Cell cell;
     cell.thesis = tc.cells[i].text;
@@ -80,21 +79,21 @@ Column build_column(const ThesisColumn& tc) {
     const auto& r = rows[i];
     double v = golden::kNaN;
     switch (r.row) {
-      case TableRow::Type:
+      case golden::TableRow::Type:
         cell.ours = tc.sensor.rfind("ls-", 0) == 0 ? "LS" : "TOF";
         break;
-      case TableRow::IntegrationTime: {
+      case golden::TableRow::IntegrationTime: {
         const std::string k = key_with_suffix(params, "integration_time_s");
         if (!k.empty()) v = params.real(k);
         for (const auto& [key, value] : ev.summary_extra)  // tof-lockin: accumulations x repetition period
           if (k.empty() && key == "accumulation_time_s") v = value;
         break;
       }
-      case TableRow::WellCapacity:
+      case golden::TableRow::WellCapacity:
         for (const char* k : {"pixel.pd_capacitance_F", "correlator.capacitance_plus_F", "pixel.fd1_capacitance_F"})
           if (params.has(k)) v = params.real(k);
         break;
-      case TableRow::AdcTdc: {
+      case golden::TableRow::AdcTdc: {
         const std::string bits = key_with_suffix(params, ".adc_bits");
         if (params.has("tdc.lsb_s")) {
           cell.ours = fmt::format("{:.4g} ps LSB", params.real("tdc.lsb_s") * 1e12);
@@ -105,23 +104,23 @@ Column build_column(const ThesisColumn& tc) {
         }
         break;
       }
-      case TableRow::SignalLight: v = c.modelled ? ev.signal_range.range_dB : v; break;
-      case TableRow::BackgroundLight: v = c.modelled ? ev.background_range.range_dB : v; break;
-      case TableRow::SbrMax: v = c.modelled ? (total_sbr ? ev.sbr_max_dB : ev.sbr_ratio_max_dB) : v; break;
-      case TableRow::SbrMin: v = c.modelled ? (total_sbr ? ev.sbr_min_dB : ev.sbr_ratio_min_dB) : v; break;
-      case TableRow::AccuracyMax: v = c.modelled ? ev.accuracy_max_m : v; break;
-      case TableRow::AccuracyMin: v = c.modelled ? ev.accuracy_min_m : v; break;
+      case golden::TableRow::SignalLight: v = c.modelled ? ev.signal_range.range_dB : v; break;
+      case golden::TableRow::BackgroundLight: v = c.modelled ? ev.background_range.range_dB : v; break;
+      case golden::TableRow::SbrMax: v = c.modelled ? (total_sbr ? ev.sbr_max_dB : ev.sbr_ratio_max_dB) : v; break;
+      case golden::TableRow::SbrMin: v = c.modelled ? (total_sbr ? ev.sbr_min_dB : ev.sbr_ratio_min_dB) : v; break;
+      case golden::TableRow::AccuracyMax: v = c.modelled ? ev.accuracy_max_m : v; break;
+      case golden::TableRow::AccuracyMin: v = c.modelled ? ev.accuracy_min_m : v; break;
     }
-    const bool model_row = r.row >= TableRow::SignalLight;
+    const bool model_row = r.row >= golden::TableRow::SignalLight;
     if (cell.ours.empty()) {
       cell.ours_value = v;
       cell.ours = model_row && !c.modelled ? "not modelled yet" : show(v, r.unit);
     }
-    if (r.row != TableRow::AdcTdc || cell.thesis_value == cell.ours_value)
+    if (r.row != golden::TableRow::AdcTdc || cell.thesis_value == cell.ours_value)
       cell.difference = difference(cell.ours_value, cell.thesis_value, r.unit);
     for (const auto& [id, note] : tc.notes)
       if (id == r.id) cell.note = note;
-    if ((r.row == TableRow::SbrMax || r.row == TableRow::SbrMin) && c.modelled && cell.note.empty())
+    if ((r.row == golden::TableRow::SbrMax || r.row == golden::TableRow::SbrMin) && c.modelled && cell.note.empty())
       cell.note = total_sbr ? "eq. 3.11, (V_sig + V_bg) / V_bg" : "eq. 3.23 / 4.11, signal / background";
     c.cells.push_back(cell);
   }
@@ -136,7 +135,7 @@ std::string markdown(const std::vector<Column>& cols, bool published) {
                      c.reference, c.modelled ? "" : " (golden model not yet available)");
     for (size_t i = 0; i < c.cells.size(); ++i) {
       const auto& cell = c.cells[i];
-      o << fmt::format("| {} | {} | {} | {} | {} |\n", table_rows()[i].label, cell.thesis, cell.ours, cell.difference,
+      o << fmt::format("| {} | {} | {} | {} | {} |\n", golden::table_rows()[i].label, cell.thesis, cell.ours, cell.difference,
                        cell.note);
     }
   }
@@ -167,7 +166,7 @@ std::string html(const std::vector<Column>& cols) {
     o << fmt::format("<h2>{} {}</h2><table><tr><th>row<th>thesis<th>rangesim<th>difference<th>note", c.sensor, c.reference);
     for (size_t i = 0; i < c.cells.size(); ++i) {
       const auto& cell = c.cells[i];
-      o << fmt::format("<tr><td>{}<td class=n>{}<td class=n>{}<td class=n>{}<td class=note>{}", table_rows()[i].label,
+      o << fmt::format("<tr><td>{}<td class=n>{}<td class=n>{}<td class=n>{}<td class=note>{}", golden::table_rows()[i].label,
                        html_escape(cell.thesis), html_escape(cell.ours), html_escape(cell.difference), html_escape(cell.note));
     }
     o << "</table>";
@@ -199,11 +198,15 @@ int run_table(const TableOptions& opt) {
   std::unique_ptr<OutputDir> out;
   if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out");
 
+  // The columns of the registered sensors that have one in the thesis's table, in registry order.
+  std::vector<const golden::ThesisColumn*> thesis;
+  for (const auto& s : sensors())
+    if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column) thesis.push_back(m->table_column);
   std::vector<Column> cols;
-  g_sensor_count = static_cast<int>(thesis_table_5_1().size());
-  for (const auto& tc : thesis_table_5_1()) {
+  g_sensor_count = static_cast<int>(thesis.size());
+  for (const golden::ThesisColumn* tc : thesis) {
     ++g_sensor_index;
-    cols.push_back(build_column(tc));
+    cols.push_back(build_column(*tc));
   }
 
   nlohmann::json j;
@@ -212,7 +215,7 @@ int run_table(const TableOptions& opt) {
     nlohmann::json rows = nlohmann::json::array();
     for (size_t i = 0; i < c.cells.size(); ++i) {
       const auto& cell = c.cells[i];
-      const auto& r = table_rows()[i];
+      const auto& r = golden::table_rows()[i];
       rows.push_back({{"row", r.id}, {"label", r.label}, {"unit", r.unit}, {"thesis", cell.thesis},
                       {"thesis_value", json_num(cell.thesis_value)}, {"rangesim", cell.ours},
                       {"rangesim_value", json_num(cell.ours_value)}, {"difference", cell.difference}, {"note", cell.note}});
@@ -238,7 +241,7 @@ int run_table(const TableOptions& opt) {
     for (const auto& c : cols)
       for (size_t i = 0; i < c.cells.size(); ++i) {
         const auto& cell = c.cells[i];
-        const auto& r = table_rows()[i];
+        const auto& r = golden::table_rows()[i];
         csv << fmt::format("{},{},{},{},{},{},{},{},{},{}\n", c.sensor, c.reference, r.id, r.unit, csv_field(cell.thesis),
                            num_or_empty(cell.thesis_value), csv_field(cell.ours), num_or_empty(cell.ours_value),
                            csv_field(cell.difference), csv_field(cell.note));

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/params.h"
-#include "golden/sensor_evaluation.h"
+#include "golden/common/sensor_evaluation.h"
 
 namespace rangesim::app {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "app/output_dir.h"
-#include "golden/sensor_evaluation.h"
+#include "golden/common/sensor_evaluation.h"
 
 namespace rangesim::app {
 

@@ -8,7 +8,6 @@
 #include <sstream>
 #include <toml++/toml.h>
 
-#include "core/schemas.h"
 #include "core/user_error.h"
 
 #ifndef RANGESIM_SOURCE_PRESET_DIR
@@ -21,33 +20,6 @@
 namespace fs = std::filesystem;
 
 namespace rangesim {
-
-const std::vector<SensorInfo>& sensors() {
-  static const std::vector<SensorInfo> list = {
-      {"ls-conventional", "light-section, row-parallel search, multi-sampling", "[31]", true, true},
-      {"ls-demodulation", "light-section, demodulation, background suppression", "[27]", true, true},
-      {"tof-lockin", "pulsed lock-in time-of-flight, two-tap photogate", "[12]", true, true},
-      {"tof-spad", "direct time-of-flight, SPADs with column TDCs", "[11]", true, true},
-  };
-  return list;
-}
-
-const SensorInfo* find_sensor(const std::string& id) {
-  for (const auto& s : sensors())
-    if (s.id == id) return &s;
-  return nullptr;
-}
-
-const ParamSchema& schema_for(const std::string& sensor_id, const std::string& where) {
-  if (sensor_id == "ls-conventional") return ls_conventional_schema();
-  if (sensor_id == "ls-demodulation") return ls_demodulation_schema();
-  if (sensor_id == "tof-lockin") return tof_lockin_schema();
-  if (sensor_id == "tof-spad") return tof_spad_schema();
-  throw UserError(fmt::format(
-      "{}: sensor.id = \"{}\" is not a known sensor; allowed: ls-conventional, ls-demodulation, "
-      "tof-lockin, tof-spad",
-      where, sensor_id));
-}
 
 std::vector<std::string> preset_search_path() {
   std::vector<std::string> dirs;
@@ -73,10 +45,8 @@ std::string resolve_preset(const std::string& id_or_path) {
     const fs::path p = fs::path(dir) / (id_or_path + ".toml");
     if (fs::is_regular_file(p)) return p.string();
   }
-  std::string known;
-  for (const auto& s : sensors()) known += (known.empty() ? "" : ", ") + s.id;
   throw UserError(fmt::format("'{}' is neither a preset nor a file; presets: {} (or a path to a .toml file)",
-                              id_or_path, known));
+                              id_or_path, sensor_ids()));
 }
 
 namespace {
@@ -154,9 +124,9 @@ ParamSet load_preset_text(const std::string& text, const std::string& path) {
   }
   const auto* id = root["sensor"]["id"].as_string();
   if (!id && root["sensor"]["id"])
-    throw UserError(fmt::format("{}: sensor.id must be a string; allowed: ls-conventional, ls-demodulation, tof-lockin, tof-spad",
-                                where_of(path, *root["sensor"]["id"].node())));
-  if (!id) throw UserError(fmt::format("{}: missing key sensor.id; allowed: ls-conventional, ls-demodulation, tof-lockin, tof-spad", path));
+    throw UserError(fmt::format("{}: sensor.id must be a string; allowed: {}", where_of(path, *root["sensor"]["id"].node()),
+                                sensor_ids()));
+  if (!id) throw UserError(fmt::format("{}: missing key sensor.id; allowed: {}", path, sensor_ids()));
   const ParamSchema& schema = schema_for(id->get(), path);
   ParamSet set(path, id->get());
 

@@ -4,23 +4,9 @@
 #include <vector>
 
 #include "core/params.h"
+#include "core/sensor_registry.h"
 
 namespace rangesim {
-
-struct SensorInfo {
-  std::string id;           // preset id, e.g. "ls-conventional"
-  std::string title;        // one line
-  std::string thesis_ref;   // reference number in the thesis, e.g. "[31]"
-  bool golden_modelled;     // true when `rangesim evaluate` and `table` have a model for it
-  bool timing_modelled;     // true when `rangesim frame-rate` has its clock schedule
-};
-
-// The four sensor architectures of the thesis, in thesis order.
-const std::vector<SensorInfo>& sensors();
-const SensorInfo* find_sensor(const std::string& id);
-
-// Schema for a sensor id; throws UserError for an unknown id (naming `where`).
-const ParamSchema& schema_for(const std::string& sensor_id, const std::string& where);
 
 // Directories searched for `<id>.toml`: $RANGESIM_PRESET_DIR, the installed share dir, and the
 // source tree's presets/ (so a fresh build works without installing).

@@ -6,8 +6,8 @@
 -Wall
 // Evaluate the immediate assertions (a_start_while_busy, ...); a failing one calls $error.
 --assert
-// Lint waivers: rtl/<block>.vlt, one per file, each scoped and explained, listed here.
-ls_conventional_readout.vlt
+// Lint waivers: rtl/<sensor>/<block>.vlt, one per file, each scoped and explained, listed here.
+ls_conventional/ls_conventional_readout.vlt
 // Uninitialised state is random, not zero, so a missing reset shows up in co-simulation.
 --x-assign unique
 --x-initial unique

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "core/user_error.h"
-#include "golden/pixel.h"
-#include "golden/spot.h"
+#include "golden/common/pixel.h"
+#include "golden/common/spot.h"
 
 namespace rangesim::scene {
 

@@ -27,9 +27,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/ls_conventional_config.h"
+#include "core/ls_conventional/config.h"
 #include "scene/scene.h"
-#include "systemc/frame_stimulus.h"
+#include "systemc/ls_conventional/frame_stimulus.h"
 
 namespace rangesim::scene {
 

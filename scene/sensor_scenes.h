@@ -1,7 +1,7 @@
 #pragma once
 // From the one scene (scene.h) to what each ToF sensor's model consumes: a per-pixel depth,
 // taken from the target geometry or the depth map resampled to the sensor's pixel grid.
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 #include "scene/scene.h"
 #include "systemc/tof_lockin/lockin_scene.h"
 

@@ -5,12 +5,12 @@
 #include "app/bench/bench_stats.h"
 #include "app/bench/bench_util.h"
 #include "core/preset.h"
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 #include "systemc/tof_lockin/lockin_kernel.h"
-#include "core/tof_spad_config.h"
-#include "systemc/tof_spad/tof_spad_kernel.h"
-#include "core/ls_demodulation_config.h"
-#include "systemc/ls_demodulation/demod_sensor_kernel.h"
+#include "core/tof_spad/config.h"
+#include "systemc/tof_spad/sensor_kernel.h"
+#include "core/ls_demodulation/config.h"
+#include "systemc/ls_demodulation/sensor_kernel.h"
 
 namespace rangesim::app::bench {
 

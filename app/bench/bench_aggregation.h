@@ -4,7 +4,7 @@
 // clock by clock, timed in one run and compared by a stated two-sample test (bench_stats.h).
 #include <nlohmann/json.hpp>
 
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 
 namespace rangesim::app::bench {
 

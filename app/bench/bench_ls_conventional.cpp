@@ -5,14 +5,14 @@
 #include <cmath>
 
 #include "app/bench/bench_util.h"
-#include "core/ls_conventional_config.h"
+#include "core/ls_conventional/config.h"
 #include "core/preset.h"
-#include "golden/frame_timing.h"
-#include "golden/pixel.h"
-#include "golden/spot.h"
+#include "golden/common/frame_timing.h"
+#include "golden/common/pixel.h"
+#include "golden/common/spot.h"
 #include "scene/optics.h"
 #include "scene/scene.h"
-#include "systemc/ls_conventional_sensor.h"
+#include "systemc/ls_conventional/sensor.h"
 #ifdef RANGESIM_BENCH_WITH_RTL
 #include "app/bench/bench_rtl_readout.h"
 #endif

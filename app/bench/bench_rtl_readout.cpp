@@ -10,9 +10,9 @@
 
 #include "Vls_conventional_readout.h"
 #include "app/bench/bench_util.h"
-#include "golden/frame_timing.h"
+#include "golden/ls_conventional/frame_timing.h"
 #include "rtl/ls_conventional_params.h"
-#include "tb/cosim_ports.h"
+#include "tb/common/cosim_ports.h"
 
 namespace rangesim::app::bench {
 

@@ -11,9 +11,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/ls_conventional_config.h"
-#include "systemc/address_search_kernel.h"
-#include "systemc/ls_conventional_sensor_kernel.h"
+#include "core/ls_conventional/config.h"
+#include "systemc/common/address_search_kernel.h"
+#include "systemc/ls_conventional/sensor_kernel.h"
 
 namespace rangesim::app::bench {
 

@@ -8,8 +8,8 @@
 #include "app/bench/bench_stats.h"
 #include "app/bench/bench_util.h"
 #include "core/preset.h"
-#include "core/tof_spad_config.h"
-#include "systemc/tof_spad/tof_spad_kernel.h"
+#include "core/tof_spad/config.h"
+#include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::app::bench {
 

@@ -23,7 +23,7 @@
 #include "app/plot.h"
 #include "app/sweep_journal.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 
 namespace rangesim::app {
 

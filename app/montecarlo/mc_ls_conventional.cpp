@@ -6,8 +6,8 @@
 
 #include "app/montecarlo/mc_models.h"
 #include "core/user_error.h"
-#include "golden/triangulation.h"
-#include "systemc/ls_conventional_sensor_kernel.h"
+#include "golden/common/triangulation.h"
+#include "systemc/ls_conventional/sensor_kernel.h"
 
 namespace rangesim::app::mc {
 
@@ -88,5 +88,7 @@ double LsConventionalMc::metres_per_unit() const {
 std::unique_ptr<McPointRunner> LsConventionalMc::point(double signal_V, double background_V, std::uint64_t key) const {
   return std::make_unique<Runner>(cfg_, signal_V, background_V, key, spot_);
 }
+
+std::unique_ptr<McModel> make_ls_conventional_mc(const ParamSet& params) { return std::make_unique<LsConventionalMc>(ls_conventional_from_params(params)); }
 
 }  // namespace rangesim::app::mc

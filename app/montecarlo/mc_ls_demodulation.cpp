@@ -3,8 +3,8 @@
 
 #include "app/montecarlo/mc_models.h"
 #include "golden/ls_demodulation/position.h"
-#include "golden/spot.h"
-#include "systemc/ls_demodulation/demod_sensor_kernel.h"
+#include "golden/common/spot.h"
+#include "systemc/ls_demodulation/sensor_kernel.h"
 
 namespace rangesim::app::mc {
 
@@ -65,5 +65,7 @@ double LsDemodulationMc::metres_per_unit() const { return golden::demod_range_pe
 std::unique_ptr<McPointRunner> LsDemodulationMc::point(double signal_A, double background_A, std::uint64_t key) const {
   return std::make_unique<Runner>(cfg_, signal_A, background_A, key, spot_);
 }
+
+std::unique_ptr<McModel> make_ls_demodulation_mc(const ParamSet& params) { return std::make_unique<LsDemodulationMc>(ls_demodulation_from_params(params)); }
 
 }  // namespace rangesim::app::mc

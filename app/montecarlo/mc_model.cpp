@@ -3,13 +3,34 @@
 #include <stdexcept>
 
 #include "app/montecarlo/mc_models.h"
-#include "core/ls_conventional_config.h"
-#include "core/ls_demodulation_config.h"
-#include "core/tof_lockin_config.h"
-#include "core/tof_spad_config.h"
-#include "systemc/random_stream.h"
+#include "core/sensor_list.h"
+#include "core/sensor_registry.h"
+#include "systemc/common/random_stream.h"
+
+namespace rangesim {
+// The core part of each shipped sensor (core/<sensor>/schema.cpp): its id.
+#define RANGESIM_DECLARE(s) const SensorInfo& s##_sensor_info();
+RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
+#undef RANGESIM_DECLARE
+}  // namespace rangesim
 
 namespace rangesim::app::mc {
+
+// Each shipped sensor's model, defined in mc_<sensor>.cpp.
+#define RANGESIM_DECLARE(s) std::unique_ptr<McModel> make_##s##_mc(const ParamSet& params);
+RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
+#undef RANGESIM_DECLARE
+
+namespace {
+std::vector<std::pair<std::string, McFactory>>& mc_registry() {
+  static std::vector<std::pair<std::string, McFactory>> list = {
+#define RANGESIM_ENTRY(s) {s##_sensor_info().id, &make_##s##_mc},
+      RANGESIM_FOR_EACH_SENSOR(RANGESIM_ENTRY)
+#undef RANGESIM_ENTRY
+  };
+  return list;
+}
+}  // namespace
 
 using systemc::splitmix64;
 
@@ -25,12 +46,11 @@ double trial_uniform(std::uint64_t key, std::uint64_t trial) {
 }
 
 std::unique_ptr<McModel> make_mc_model(const ParamSet& params) {
-  const std::string& id = params.sensor_id();
-  if (id == "ls-conventional") return std::make_unique<LsConventionalMc>(ls_conventional_from_params(params));
-  if (id == "ls-demodulation") return std::make_unique<LsDemodulationMc>(ls_demodulation_from_params(params));
-  if (id == "tof-lockin") return std::make_unique<TofLockinMc>(tof_lockin_from_params(params));
-  if (id == "tof-spad") return std::make_unique<TofSpadMc>(tof_spad_from_params(params));
-  throw std::logic_error("no Monte Carlo model for sensor " + id);
+  for (const auto& [id, make] : mc_registry())
+    if (id == params.sensor_id()) return make(params);
+  throw std::logic_error("no Monte Carlo model for sensor " + params.sensor_id());
 }
+
+void register_mc_model(const std::string& sensor_id, McFactory make) { mc_registry().emplace_back(sensor_id, make); }
 
 }  // namespace rangesim::app::mc

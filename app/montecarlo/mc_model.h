@@ -47,7 +47,10 @@ std::uint64_t trial_key(std::uint64_t point_key, std::uint64_t trial);
 // Uniform in [0, 1) of a trial (spot position), from its own stream.
 double trial_uniform(std::uint64_t point_key, std::uint64_t trial);
 
-// The model of the preset's sensor; throws NotModelled-style std::logic_error for others.
+// The model of the preset's sensor (each sensor's from its mc_<sensor>.cpp, or registered);
+// throws std::logic_error for a sensor without one.
 std::unique_ptr<McModel> make_mc_model(const ParamSet& params);
+using McFactory = std::unique_ptr<McModel> (*)(const ParamSet& params);
+void register_mc_model(const std::string& sensor_id, McFactory make);
 
 }  // namespace rangesim::app::mc

@@ -4,10 +4,10 @@
 #include <limits>
 
 #include "app/montecarlo/mc_model.h"
-#include "core/ls_conventional_config.h"
-#include "core/ls_demodulation_config.h"
-#include "core/tof_lockin_config.h"
-#include "core/tof_spad_config.h"
+#include "core/ls_conventional/config.h"
+#include "core/ls_demodulation/config.h"
+#include "core/tof_lockin/config.h"
+#include "core/tof_spad/config.h"
 
 namespace rangesim::app::mc {
 

@@ -9,7 +9,7 @@
 
 #include "app/montecarlo/mc_stats.h"
 #include "app/output_dir.h"
-#include "golden/sensor_evaluation.h"
+#include "golden/common/sensor_evaluation.h"
 
 namespace rangesim::app::mc {
 

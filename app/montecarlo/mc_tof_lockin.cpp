@@ -52,4 +52,6 @@ std::unique_ptr<McPointRunner> TofLockinMc::point(double signal_A, double backgr
   return std::make_unique<Runner>(cfg_, aggregate_, signal_A, background_A, key);
 }
 
+std::unique_ptr<McModel> make_tof_lockin_mc(const ParamSet& params) { return std::make_unique<TofLockinMc>(tof_lockin_from_params(params)); }
+
 }  // namespace rangesim::app::mc

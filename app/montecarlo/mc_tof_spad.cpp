@@ -3,7 +3,7 @@
 
 #include "app/montecarlo/mc_models.h"
 #include "core/physics.h"
-#include "systemc/tof_spad/tof_spad_kernel.h"
+#include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::app::mc {
 
@@ -49,5 +49,7 @@ std::unique_ptr<McPointRunner> TofSpadMc::point(double signal_Hz, double backgro
   opt.noise.afterpulse = afterpulses_;
   return std::make_unique<Runner>(cfg_, opt, signal_Hz, background_Hz);
 }
+
+std::unique_ptr<McModel> make_tof_spad_mc(const ParamSet& params) { return std::make_unique<TofSpadMc>(tof_spad_from_params(params)); }
 
 }  // namespace rangesim::app::mc

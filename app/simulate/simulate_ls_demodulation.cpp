@@ -19,13 +19,14 @@
 #include "app/simulate/simulate_output.h"
 #include "app/simulate/simulate_report.h"
 #include "app/simulate/trace_output.h"
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 #include "core/params.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
-#include "golden/frame_timing.h"
+#include "golden/common/evaluate_sensor.h"
+#include "golden/common/frame_timing.h"
 #include "scene/scene.h"
-#include "systemc/ls_demodulation/demod_sensor.h"
+#include "systemc/ls_demodulation/sensor.h"
+#include "golden/ls_demodulation/model.h"
 
 namespace rangesim::app {
 
@@ -144,6 +145,7 @@ struct DemodOptics {
 
 }  // namespace
 
+namespace {
 int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& params) {
   const auto t_start = Clock::now();
   const LsDemodulationConfig cfg = ls_demodulation_from_params(params);
@@ -304,6 +306,13 @@ int run_simulate_ls_demodulation(const SimulateOptions& opt, const ParamSet& par
   report.wall_time_s = wall_s;
   report.wall_note = fmt::format("{:.3g} simulated cycles/s", res.cycles / res.wall_time_s);
   return finish_simulate(opt, out, trace, j, warning, report);
+}
+
+}  // namespace
+
+const SimulateEntry& ls_demodulation_simulate_entry() {
+  static const SimulateEntry e{"ls-demodulation", &run_simulate_ls_demodulation, true, false};
+  return e;
 }
 
 }  // namespace rangesim::app

@@ -21,14 +21,15 @@
 #include "app/simulate/simulate_report.h"
 #include "app/simulate/trace_output.h"
 #include "core/params.h"
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "scene/scene.h"
 #include "scene/sensor_scenes.h"
 #include "systemc/tof_lockin/lockin_scene.h"
-#include "systemc/tof_lockin/tof_lockin_sensor.h"
+#include "systemc/tof_lockin/sensor.h"
+#include "golden/tof_lockin/model.h"
 
 namespace rangesim::app {
 
@@ -37,8 +38,6 @@ namespace {
 namespace fs = std::filesystem;
 namespace lk = rangesim::systemc::lockin;
 using Clock = std::chrono::steady_clock;
-
-} // namespace
 
 int run_simulate_tof_lockin(const SimulateOptions &opt,
                             const ParamSet &params) {
@@ -299,6 +298,13 @@ int run_simulate_tof_lockin(const SimulateOptions &opt,
   report.wall_time_s = wall_s;
   report.wall_note = fmt::format("{:.2f} s simulating, {} events", sim_wall_s, k->events());
   return finish_simulate(opt, out, trace, j, warning, report);
+}
+
+}  // namespace
+
+const SimulateEntry& tof_lockin_simulate_entry() {
+  static const SimulateEntry e{"tof-lockin", &run_simulate_tof_lockin, true, true};
+  return e;
 }
 
 } // namespace rangesim::app

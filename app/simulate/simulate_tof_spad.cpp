@@ -26,11 +26,12 @@
 #include "app/simulate/trace_output.h"
 #include "core/params.h"
 #include "core/physics.h"
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "scene/scene.h"
-#include "systemc/tof_spad/tof_spad_sensor.h"
+#include "systemc/tof_spad/sensor.h"
+#include "golden/tof_spad/model.h"
 
 namespace rangesim::app {
 
@@ -130,6 +131,7 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
 
 }  // namespace
 
+namespace {
 int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
   const auto t_start = Clock::now();
   const TofSpadConfig cfg = tof_spad_from_params(params);
@@ -316,6 +318,13 @@ int run_simulate_tof_spad(const SimulateOptions& opt, const ParamSet& params) {
     report.wall_note += fmt::format("; background-only group rows: {} as a class, {} per cycle{}", groups_bg, groups_bg_cyc,
                                     groups_bg_cyc > 0 && !kernel.background_blocker().empty() ? " (" + kernel.background_blocker() + ")" : "");
   return finish_simulate(opt, out, trace, j, warning, report);
+}
+
+}  // namespace
+
+const SimulateEntry& tof_spad_simulate_entry() {
+  static const SimulateEntry e{"tof-spad", &run_simulate_tof_spad, true, false};
+  return e;
 }
 
 }  // namespace rangesim::app

@@ -14,7 +14,7 @@
 #include <array>
 #include <string>
 
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 #include "golden/ls_demodulation/front_end.h"
 
 namespace rangesim::golden {

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <thread>
 
-#include "core/ls_demodulation_config.h"
-#include "golden/evaluate_sensor.h"
+#include "core/ls_demodulation/config.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/ls_demodulation/evaluation.h"
-#include "golden/ls_demodulation/figures.h"
+#include "golden/ls_demodulation/published.h"
 #include "golden/ls_demodulation/selectivity.h"
+#include "golden/ls_demodulation/model.h"
 
 namespace rangesim::golden {
 

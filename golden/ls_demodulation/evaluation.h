@@ -3,10 +3,10 @@
 // evaluate.cpp assembles into an EvalResult; exposed for the tests).
 #include <vector>
 
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 #include "golden/ls_demodulation/decision.h"
 #include "golden/ls_demodulation/position.h"
-#include "golden/sensor_evaluation.h"
+#include "golden/common/sensor_evaluation.h"
 
 namespace rangesim::golden {
 

@@ -16,9 +16,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/ls_demodulation_config.h"
-#include "golden/evaluate_sensor.h"
-#include "golden/frame_timing.h"
+#include "core/ls_demodulation/config.h"
+#include "golden/common/evaluate_sensor.h"
+#include "golden/common/frame_timing.h"
+#include "golden/ls_demodulation/model.h"
 
 namespace rangesim::golden {
 

@@ -23,7 +23,7 @@
 #include <limits>
 #include <vector>
 
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 
 namespace rangesim::golden {
 

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "golden/ls_demodulation/decision.h"
-#include "golden/position_noise.h"
-#include "golden/spot.h"
-#include "golden/triangulation.h"
+#include "golden/common/position_noise.h"
+#include "golden/common/spot.h"
+#include "golden/common/triangulation.h"
 
 namespace rangesim::golden {
 

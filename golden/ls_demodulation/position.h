@@ -11,7 +11,7 @@
 // decision detects); over o (Gauss-Hermite) the frame estimate has bias b = E[m] - x0 and
 // variance Var_o[m] + E_o[v / K_eff]. N_p frames average independently: the error is
 // b^2 + Var / N_p. accuracy = sqrt(mean over x0 of that), x0 on a midpoint grid across one pixel.
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 
 namespace rangesim::golden {
 

@@ -12,7 +12,7 @@
 //
 // Exact chain: a square-wave background component at k f0 (50% duty) through the full nonlinear
 // chain, worst phase over 32 delays, the background-only output subtracted.
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 
 namespace rangesim::golden {
 

@@ -3,12 +3,13 @@
 // the detectable ranges by bisection, SBR' both ways, sweeps and the frame schedule.
 #include <cmath>
 
-#include "core/tof_lockin_config.h"
-#include "golden/evaluate_sensor.h"
+#include "core/tof_lockin/config.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_lockin/lockin_sweeps.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/tap_charge.h"
+#include "golden/tof_lockin/model.h"
 
 namespace rangesim::golden {
 

@@ -21,9 +21,10 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
+#include "golden/tof_lockin/model.h"
 
 namespace rangesim::golden {
 

@@ -22,7 +22,7 @@
 // noise bias. Averaging N_p range images divides only the variance (independent frames).
 #include <string>
 
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 
 namespace rangesim::golden {
 

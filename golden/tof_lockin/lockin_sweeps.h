@@ -5,8 +5,8 @@
 // photocurrent that gives them (lockin_point.h).
 #include <vector>
 
-#include "core/tof_lockin_config.h"
-#include "golden/sensor_evaluation.h"
+#include "core/tof_lockin/config.h"
+#include "golden/common/sensor_evaluation.h"
 
 namespace rangesim::golden {
 

@@ -11,7 +11,7 @@
 //        = r/2 + (t - r)                     r <= t <= T0
 //        = T0 - r/2 + u - u^2 / (2 r)        u = t - T0 in (0, r)
 // For r = 0: tap1 = T0 - T_D, tap2 = T_D (eq. 2.17-2.18 without the I/q factor).
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 
 namespace rangesim::golden {
 

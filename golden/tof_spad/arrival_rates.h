@@ -4,7 +4,7 @@
 // eq. 2.27, integrated over the actual bin edges.
 #include <vector>
 
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 #include "golden/tof_spad/tdc_bins.h"
 
 namespace rangesim::golden::spad {

@@ -6,6 +6,7 @@
 
 #include "golden/tof_spad/point_model.h"
 #include "golden/tof_spad/ranges.h"
+#include "golden/tof_spad/model.h"
 
 namespace rangesim::golden {
 

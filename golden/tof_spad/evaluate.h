@@ -3,8 +3,8 @@
 // published figures, from a config (tests vary it) or a preset (golden/evaluate_sensor.h).
 #include <vector>
 
-#include "core/tof_spad_config.h"
-#include "golden/evaluate_sensor.h"
+#include "core/tof_spad/config.h"
+#include "golden/common/evaluate_sensor.h"
 
 namespace rangesim::golden::spad {
 

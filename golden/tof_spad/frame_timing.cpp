@@ -15,9 +15,10 @@
 // A range map is evaluation.frames_averaged frames (the golden model's accumulated histograms).
 #include <cmath>
 
-#include "core/tof_spad_config.h"
-#include "golden/evaluate_sensor.h"
+#include "core/tof_spad/config.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/tof_spad/tdc_bins.h"
+#include "golden/tof_spad/model.h"
 
 namespace rangesim::golden {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 #include "golden/tof_spad/arrival_rates.h"
 #include "golden/tof_spad/estimator.h"
 #include "golden/tof_spad/pile_up.h"

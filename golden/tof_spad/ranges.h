@@ -5,7 +5,7 @@
 #include <functional>
 #include <vector>
 
-#include "golden/sensor_evaluation.h"
+#include "golden/common/sensor_evaluation.h"
 #include "golden/tof_spad/point_model.h"
 
 namespace rangesim::golden::spad {

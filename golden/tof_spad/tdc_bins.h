@@ -5,7 +5,7 @@
 // improved with lower TDC nonlinearity").
 #include <vector>
 
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 
 namespace rangesim::golden::spad {
 

@@ -11,8 +11,8 @@
 #include "core/user_error.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/tap_charge.h"
-#include "systemc/poisson_sampler.h"
-#include "systemc/random_stream.h"
+#include "systemc/common/poisson_sampler.h"
+#include "systemc/common/random_stream.h"
 
 namespace rangesim::systemc::lockin {
 

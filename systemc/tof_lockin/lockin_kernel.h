@@ -24,7 +24,7 @@
 
 #include <pcg_random.hpp>
 
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 
 namespace rangesim::systemc::lockin {
 

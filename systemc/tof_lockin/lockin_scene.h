@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 #include "systemc/tof_lockin/lockin_kernel.h"
 
 namespace rangesim::systemc::lockin {

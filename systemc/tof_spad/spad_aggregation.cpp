@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 #include <random>
 
-#include "systemc/random_stream.h"
-#include "systemc/tof_spad/tof_spad_kernel.h"
+#include "systemc/common/random_stream.h"
+#include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::systemc::spad {
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 #include "golden/tof_spad/tdc_bins.h"
-#include "systemc/tof_spad/spad_pixel_kernel.h"
+#include "systemc/tof_spad/pixel_kernel.h"
 
 namespace rangesim::systemc::spad {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cassert>
 
-#include "systemc/tof_spad/tof_spad_kernel.h"
+#include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::systemc::spad {
 

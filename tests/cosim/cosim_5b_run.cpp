@@ -8,11 +8,11 @@
 #include <string>
 #include <systemc>
 
-#include "tb/cosim_scoreboard.h"
-#include "tb/lockin_tdc_cosim_targets.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/common/cosim_target.h"
 
 int sc_main(int argc, char* argv[]) {
-  const auto targets = rangesim::tb::lockin_tdc_cosim_targets();
+  const auto& targets = rangesim::tb::cosim_targets();
   const rangesim::tb::CosimTarget* t = nullptr;
   for (const auto& x : targets)
     if (argc > 1 && argv[1] == std::string(x.name)) t = &x;

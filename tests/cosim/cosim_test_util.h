@@ -5,8 +5,8 @@
 #include <string>
 
 #include "../systemc/elaboration_guard.h"
-#include "tb/cosim_scoreboard.h"
-#include "tb/cosim_target.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/common/cosim_target.h"
 
 namespace rangesim::tb::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <systemc>
 
-#include "tb/ls_conventional_cosim.h"
+#include "tb/ls_conventional/cosim.h"
 
 int sc_main(int argc, char** argv) {
   if (argc != 5) {

@@ -6,9 +6,9 @@
 #include <fstream>
 #include <string>
 
-#include "core/ls_conventional_config.h"
+#include "core/ls_conventional/config.h"
 #include "rtl/address_search_params.h"
-#include "tb/address_search_cosim.h"
+#include "tb/common/address_search_cosim.h"
 
 using rangesim::tb::AddressSearchCosimOptions;
 using rangesim::tb::AddressSearchCosimReport;

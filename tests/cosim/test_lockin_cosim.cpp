@@ -5,15 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <iterator>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "cosim_test_util.h"
-#include "tb/cosim_scoreboard.h"
-#include "tb/lockin_gate_generator_cosim.h"
-#include "tb/lockin_tdc_cosim_targets.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/tof_lockin/lockin_gate_generator_cosim.h"
+#include "tb/common/cosim_target.h"
 
 using rangesim::tb::CosimOptions;
 using rangesim::tb::CosimReport;
@@ -53,14 +54,13 @@ std::string record_path(const char* name) {
 }  // namespace
 
 TEST(LockinCosimTargets, ListedWithTheirFaults) {
-  const auto targets = rangesim::tb::lockin_tdc_cosim_targets();
-  ASSERT_EQ(targets.size(), 6u);
-  EXPECT_STREQ(targets[0].name, "ls-demodulation");
-  EXPECT_STREQ(targets[1].name, "tof-lockin");
-  EXPECT_STREQ(targets[2].name, "tof-spad");
-  EXPECT_STREQ(targets[3].name, "lockin_gate_generator");
-  EXPECT_STREQ(targets[4].name, "column_adc");
-  EXPECT_STREQ(targets[5].name, "tdc");
+  // Every sensor's targets through the registry (core/sensor_list.h), sensors first.
+  const auto& targets = rangesim::tb::cosim_targets();
+  const char* names[] = {"ls-conventional", "ls-conventional-full", "ls-demodulation", "tof-lockin", "tof-spad",
+                         "address_search", "centre_processor", "multisampling_sequencer", "lockin_gate_generator",
+                         "column_adc", "tdc"};
+  ASSERT_EQ(targets.size(), std::size(names));
+  for (std::size_t i = 0; i < targets.size(); ++i) EXPECT_STREQ(targets[i].name, names[i]);
   for (const auto& t : targets) {
     EXPECT_FALSE(t.faults.empty()) << t.name;
     EXPECT_NE(t.run, nullptr);

@@ -7,10 +7,10 @@
 #include <set>
 #include <string>
 
-#include "tb/block_cosim.h"
-#include "tb/cosim_coverage.h"
-#include "tb/cosim_target.h"
-#include "tb/ls_conventional_cosim.h"
+#include "tb/ls_conventional/block_cosim.h"
+#include "tb/common/cosim_coverage.h"
+#include "tb/common/cosim_target.h"
+#include "tb/ls_conventional/cosim.h"
 
 namespace rangesim::tb {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "tb/ls_conventional_cosim.h"
+#include "tb/ls_conventional/cosim.h"
 
 namespace rangesim::tb {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "cosim_test_util.h"
-#include "tb/cosim_scoreboard.h"
-#include "tb/ls_demodulation_cosim.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/ls_demodulation/cosim.h"
 
 using rangesim::tb::CosimOptions;
 using rangesim::tb::CosimReport;

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cosim_test_util.h"
-#include "tb/cosim_scoreboard.h"
-#include "tb/tof_spad_cosim.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/tof_spad/cosim.h"
 
 using rangesim::tb::CosimOptions;
 using rangesim::tb::CosimReport;

@@ -14,10 +14,10 @@
 #include "app/montecarlo/mc_stats.h"
 #include "core/physics.h"
 #include "core/preset.h"
-#include "golden/ls_conventional_eval.h"
+#include "golden/ls_conventional/evaluation.h"
 #include "golden/ls_demodulation/evaluation.h"
-#include "golden/position_noise.h"
-#include "golden/row_model.h"
+#include "golden/common/position_noise.h"
+#include "golden/common/row_model.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_spad/point_model.h"
 

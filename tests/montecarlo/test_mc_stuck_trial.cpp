@@ -12,7 +12,7 @@
 #include "app/montecarlo/mc_models.h"
 #include "app/montecarlo/mc_sweep.h"
 #include "core/preset.h"
-#include "golden/ls_conventional_eval.h"
+#include "golden/ls_conventional/evaluation.h"
 #include "run_command.h"
 
 namespace rangesim::app::mc {

@@ -12,7 +12,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "core/ls_conventional_config.h"
+#include "core/ls_conventional/config.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 #include "scene/depth_map.h"

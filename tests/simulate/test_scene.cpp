@@ -10,12 +10,12 @@
 
 #include "core/preset.h"
 #include "core/user_error.h"
-#include "golden/multisampling.h"
-#include "golden/row_model.h"
-#include "golden/triangulation.h"
+#include "golden/ls_conventional/multisampling.h"
+#include "golden/common/row_model.h"
+#include "golden/common/triangulation.h"
 #include "scene/optics.h"
 #include "scene/scene.h"
-#include "systemc/ls_conventional_sensor.h"
+#include "systemc/ls_conventional/sensor.h"
 
 namespace sc = rangesim::scene;
 using rangesim::LsConventionalConfig;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "app/bench/bench_stats.h"
-#include "systemc/poisson_sampler.h"
+#include "systemc/common/poisson_sampler.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <ostream>
 
-#include "core/ls_conventional_config.h"
+#include "core/ls_conventional/config.h"
 
 namespace rangesim {
 

@@ -3,9 +3,9 @@
 // stress properties: the keys the generators vary, at full precision, so the case can be pasted.
 #include <ostream>
 
-#include "core/ls_demodulation_config.h"
-#include "core/tof_lockin_config.h"
-#include "core/tof_spad_config.h"
+#include "core/ls_demodulation/config.h"
+#include "core/tof_lockin/config.h"
+#include "core/tof_spad/config.h"
 
 namespace rangesim {
 

@@ -12,10 +12,10 @@
 #include <limits>
 #include <ostream>
 
-#include "golden/activation_cdf.h"
-#include "golden/detect.h"
-#include "golden/ls_conventional_eval.h"
-#include "golden/pixel.h"
+#include "golden/common/activation_cdf.h"
+#include "golden/ls_conventional/detect.h"
+#include "golden/ls_conventional/evaluation.h"
+#include "golden/common/pixel.h"
 #include "stress_gen.h"
 
 namespace rangesim::golden {

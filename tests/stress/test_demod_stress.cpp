@@ -21,8 +21,8 @@
 #include "golden/ls_demodulation/front_end.h"
 #include "stress_gen.h"
 #include "stress_print.h"
-#include "systemc/ls_demodulation/demod_pixel_kernel.h"
-#include "systemc/random_stream.h"
+#include "systemc/ls_demodulation/pixel_kernel.h"
+#include "systemc/common/random_stream.h"
 
 namespace rangesim::golden {
 namespace {

@@ -17,14 +17,14 @@
 #include <cstring>
 #include <thread>
 
-#include "golden/centroid.h"
-#include "golden/detect.h"
-#include "golden/frame_timing.h"
-#include "golden/ls_conventional_eval.h"
-#include "golden/multisampling.h"
-#include "golden/pixel.h"
-#include "golden/position_noise.h"
-#include "golden/row_model.h"
+#include "golden/ls_conventional/centroid.h"
+#include "golden/ls_conventional/detect.h"
+#include "golden/ls_conventional/frame_timing.h"
+#include "golden/ls_conventional/evaluation.h"
+#include "golden/ls_conventional/multisampling.h"
+#include "golden/common/pixel.h"
+#include "golden/common/position_noise.h"
+#include "golden/common/row_model.h"
 #include "stress_gen.h"
 
 namespace rangesim::golden {

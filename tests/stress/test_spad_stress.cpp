@@ -22,8 +22,8 @@
 #include "golden/tof_spad/point_model.h"
 #include "stress_gen.h"
 #include "stress_print.h"
-#include "systemc/tof_spad/spad_pixel_kernel.h"
-#include "systemc/tof_spad/tof_spad_kernel.h"
+#include "systemc/tof_spad/pixel_kernel.h"
+#include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::golden::spad {
 namespace {

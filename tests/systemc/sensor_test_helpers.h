@@ -5,8 +5,8 @@
 #include <random>
 #include <vector>
 
-#include "core/ls_conventional_config.h"
-#include "systemc/frame_stimulus.h"
+#include "core/ls_conventional/config.h"
+#include "systemc/ls_conventional/frame_stimulus.h"
 
 namespace rangesim::systemc::test {
 

@@ -6,9 +6,10 @@
 #include <cmath>
 
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/ls_demodulation/evaluation.h"
 #include "test_helpers_demod.h"
+#include "golden/ls_demodulation/model.h"
 
 namespace rangesim::golden {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 // Shared helpers of the ls-demodulation golden tests.
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 #include "core/preset.h"
 
 namespace rangesim::test {

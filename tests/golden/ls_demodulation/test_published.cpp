@@ -4,8 +4,9 @@
 
 #include <map>
 
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "test_helpers_demod.h"
+#include "golden/ls_demodulation/model.h"
 
 namespace rangesim::golden {
 namespace {

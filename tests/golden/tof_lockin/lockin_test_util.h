@@ -1,7 +1,7 @@
 #pragma once
 // Shared fixtures of the tof-lockin golden tests: the preset as a ParamSet and as a config.
 #include "core/preset.h"
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 
 namespace rangesim::golden::test {
 

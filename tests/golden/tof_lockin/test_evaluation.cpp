@@ -5,10 +5,11 @@
 #include <chrono>
 #include <cmath>
 
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_lockin/tap_charge.h"
 #include "lockin_test_util.h"
+#include "golden/tof_lockin/model.h"
 
 namespace rangesim::golden {
 

@@ -5,7 +5,7 @@
 
 #include <map>
 
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "lockin_test_util.h"
 
 namespace rangesim::golden {

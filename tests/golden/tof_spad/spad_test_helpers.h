@@ -1,7 +1,7 @@
 #pragma once
 // Shared fixtures of the tof-spad golden tests: the preset's config, loaded once.
 #include "core/preset.h"
-#include "core/tof_spad_config.h"
+#include "core/tof_spad/config.h"
 
 namespace rangesim::golden::spad::test {
 

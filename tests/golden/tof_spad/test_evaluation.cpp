@@ -8,10 +8,11 @@
 #include <map>
 
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "golden/tof_spad/evaluate.h"
 #include "golden/tof_spad/point_model.h"
 #include "spad_test_helpers.h"
+#include "golden/tof_spad/model.h"
 
 namespace rangesim::golden::spad {
 namespace {

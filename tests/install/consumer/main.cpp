@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <systemc>
 
-#include "core/ls_conventional_config.h"
-#include "golden/frame_timing.h"
-#include "systemc/address_search.h"
-#include "systemc/address_search_kernel.h"
+#include "core/ls_conventional/config.h"
+#include "golden/ls_conventional/frame_timing.h"
+#include "systemc/common/address_search.h"
+#include "systemc/common/address_search_kernel.h"
 #if CONSUMER_WITH_RTL
 #include "Vaddress_search_small.h"
 #include "rtl/address_search_params.h"

@@ -2,9 +2,9 @@
 // Shared setup of the ls-demodulation clock-level tests.
 #include <cmath>
 
-#include "core/ls_demodulation_config.h"
+#include "core/ls_demodulation/config.h"
 #include "core/preset.h"
-#include "systemc/ls_demodulation/demod_sensor_kernel.h"
+#include "systemc/ls_demodulation/sensor_kernel.h"
 
 namespace rangesim::systemc::test {
 

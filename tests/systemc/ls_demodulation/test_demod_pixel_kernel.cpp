@@ -7,8 +7,8 @@
 
 #include "golden/ls_demodulation/decision.h"
 #include "golden/ls_demodulation/front_end.h"
-#include "systemc/ls_demodulation/demod_pixel_kernel.h"
-#include "systemc/random_stream.h"
+#include "systemc/ls_demodulation/pixel_kernel.h"
+#include "systemc/common/random_stream.h"
 #include "tests/systemc/ls_demodulation/demod_test_helpers.h"
 
 namespace rangesim::systemc {

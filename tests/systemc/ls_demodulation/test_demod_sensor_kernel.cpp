@@ -8,11 +8,12 @@
 #include <string>
 
 #include "core/preset.h"
-#include "golden/evaluate_sensor.h"
-#include "golden/frame_timing.h"
+#include "golden/common/evaluate_sensor.h"
+#include "golden/common/frame_timing.h"
 #include "golden/ls_demodulation/decision.h"
-#include "systemc/ls_demodulation/demod_sensor_kernel.h"
+#include "systemc/ls_demodulation/sensor_kernel.h"
 #include "tests/systemc/ls_demodulation/demod_test_helpers.h"
+#include "golden/ls_demodulation/model.h"
 
 namespace rangesim::systemc {
 namespace {

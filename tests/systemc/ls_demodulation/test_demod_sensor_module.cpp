@@ -4,7 +4,7 @@
 
 #include <systemc>
 
-#include "systemc/ls_demodulation/demod_sensor.h"
+#include "systemc/ls_demodulation/sensor.h"
 #include "tests/systemc/ls_demodulation/demod_test_helpers.h"
 
 namespace rangesim::systemc {

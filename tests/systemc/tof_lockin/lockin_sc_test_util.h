@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/preset.h"
-#include "core/tof_lockin_config.h"
+#include "core/tof_lockin/config.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "systemc/tof_lockin/lockin_kernel.h"
 

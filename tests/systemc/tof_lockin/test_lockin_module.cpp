@@ -9,9 +9,10 @@
 #include <fstream>
 #include <systemc>
 
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "lockin_sc_test_util.h"
-#include "systemc/tof_lockin/tof_lockin_sensor.h"
+#include "systemc/tof_lockin/sensor.h"
+#include "golden/tof_lockin/model.h"
 
 namespace rangesim::systemc::lockin {
 namespace {

@@ -6,8 +6,9 @@
 #include <fmt/format.h>
 
 #include "core/user_error.h"
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "lockin_sc_test_util.h"
+#include "golden/tof_lockin/model.h"
 
 namespace rangesim::systemc::lockin {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "core/params.h"
 #include "core/preset.h"
-#include "core/tof_spad_config.h"
-#include "systemc/tof_spad/tof_spad_kernel.h"
+#include "core/tof_spad/config.h"
+#include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::systemc::spad::test {
 

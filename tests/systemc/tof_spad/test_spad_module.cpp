@@ -4,9 +4,10 @@
 
 #include <systemc>
 
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "spad_clock_helpers.h"
-#include "systemc/tof_spad/tof_spad_sensor.h"
+#include "systemc/tof_spad/sensor.h"
+#include "golden/tof_spad/model.h"
 
 namespace rangesim::systemc::spad {
 namespace {

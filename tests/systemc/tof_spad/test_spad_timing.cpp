@@ -1,8 +1,9 @@
 // Measured frame timing of the kernel's sequencer == golden::frame_timing_tof_spad, cycle for cycle.
 #include <gtest/gtest.h>
 
-#include "golden/evaluate_sensor.h"
+#include "golden/common/evaluate_sensor.h"
 #include "spad_clock_helpers.h"
+#include "golden/tof_spad/model.h"
 
 namespace rangesim::systemc::spad {
 namespace {

@@ -1,0 +1,57 @@
+#pragma once
+// Cycle kernel of one row's centre processor (ls-conventional, row-parallel): plain C++.
+//
+// It listens to its row's address search: every cycle with addr_valid it shifts in addr_bit
+// (left address, then right, MSB first, address_bits each); after the 2 B bits of one sampling it
+// adds (left + right) to an accumulator and counts the sampling as a detection. Samplings without
+// an activated pixel stream nothing and are not counted. The centre of the frame access is the
+// mean over the detecting samplings of (left + right) / 2 (golden/multisampling.h):
+//   centre = sum / (2 n)                          (n = 0: no detection, valid = 0)
+// Output format: unsigned fixed point Q(address_bits).8 (kCentreFractionBits = 8), rounded to
+// nearest with ties up: centre_q = floor((sum * 2^8 + n) / (2 n)); centre_px = centre_q / 256.
+// The exact pair (sum, n) is an output too, so tests can require sum / (2 n) == the golden double.
+// The accumulator is cleared in every cycle with clear (the sequencer's reset phase).
+#include <cstdint>
+
+#include "systemc/common/address_search_kernel.h"
+
+namespace rangesim::systemc {
+
+inline constexpr int kCentreFractionBits = 8;
+
+struct CentreProcessorPins {
+  bool valid = false;          // n > 0
+  std::uint32_t centre_q = 0;  // Q(address_bits).8 centre, 0 when !valid
+  std::uint32_t sum = 0;       // sum of (left + right) over the detecting samplings
+  int count = 0;               // n: detecting samplings
+  double centre_px() const { return static_cast<double>(centre_q) / (1 << kCentreFractionBits); }
+  // The exact centre, sum / (2 n).
+  double exact_centre_px() const { return count > 0 ? static_cast<double>(sum) / (2.0 * count) : 0.0; }
+  bool operator==(const CentreProcessorPins& o) const {
+    return valid == o.valid && centre_q == o.centre_q && sum == o.sum && count == o.count;
+  }
+  bool operator!=(const CentreProcessorPins& o) const { return !(*this == o); }
+};
+
+class CentreProcessorKernel {
+ public:
+  explicit CentreProcessorKernel(int address_bits);
+
+  // One rising edge with the inputs of the ending cycle: the row's search pins and clear.
+  void tick(bool clear, const AddressSearchPins& search);
+  // Event-skipping path: the whole stream of one sampling at once (tests prove it equal).
+  void accumulate(const AddressSearchResult& result);
+  void clear();
+
+  CentreProcessorPins pins() const;
+  int address_bits() const { return address_bits_; }
+
+ private:
+  int address_bits_;        // B
+  std::uint32_t sum_ = 0;   // accumulated left + right
+  int count_ = 0;           // detecting samplings
+  std::uint64_t shift_ = 0; // bits of the current stream
+  int bits_ = 0;            // how many of them
+};
+
+}  // namespace rangesim::systemc

@@ -1,0 +1,100 @@
+#include "systemc/ls_conventional/multisampling_sequencer_kernel.h"
+
+#include <algorithm>
+#include <cassert>
+#include <stdexcept>
+#include <string>
+
+namespace rangesim::systemc {
+
+const char* readout_phase_name(ReadoutPhase p) {
+  switch (p) {
+    case ReadoutPhase::Reset: return "reset";
+    case ReadoutPhase::Latch: return "latch";
+    case ReadoutPhase::Search: return "search";
+    case ReadoutPhase::AddressStream: return "address_stream";
+    case ReadoutPhase::Output: return "output";
+  }
+  return "?";
+}
+
+namespace {
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("ReadoutSequencerKernel: " + what);
+}
+}  // namespace
+
+ReadoutSequencerKernel::ReadoutSequencerKernel(const FrameTimingConfig& timing, int samplings)
+    : timing_(timing), samplings_(samplings) {
+  require(samplings >= 1, "samplings must be >= 1, got " + std::to_string(samplings));
+  require(timing.reset_cycles >= 1, "reset_cycles must be >= 1, got " + std::to_string(timing.reset_cycles));
+  require(timing.latch_cycles >= 1, "latch_cycles must be >= 1, got " + std::to_string(timing.latch_cycles));
+  require(timing.search_cycles >= 1, "search_cycles must be >= 1, got " + std::to_string(timing.search_cycles));
+  require(timing.address_bits >= 1, "address_bits must be >= 1, got " + std::to_string(timing.address_bits));
+  require(timing.addresses_per_sampling >= 1,
+          "addresses_per_sampling must be >= 1, got " + std::to_string(timing.addresses_per_sampling));
+  require(timing.output_cycles >= 1, "output_cycles must be >= 1, got " + std::to_string(timing.output_cycles));
+  period_ = static_cast<long long>(timing.latch_cycles) + timing.search_cycles +
+            static_cast<long long>(timing.addresses_per_sampling) * timing.address_bits;
+  frame_cycles_ = timing.reset_cycles + samplings * period_ + timing.output_cycles;
+  // Pin changes within a frame: phase starts, the search_start cycle and the frame_done cycle.
+  const long long R = timing.reset_cycles, L = timing.latch_cycles, S = timing.search_cycles;
+  events_.push_back(0);
+  for (int k = 0; k < samplings; ++k) {
+    const long long base = R + k * period_;
+    for (long long e : {base, base + L - 1, base + L, base + L + S}) events_.push_back(e);
+  }
+  events_.push_back(R + samplings * period_);
+  events_.push_back(frame_cycles_ - 1);
+  events_.push_back(frame_cycles_);
+  std::sort(events_.begin(), events_.end());
+  events_.erase(std::unique(events_.begin(), events_.end()), events_.end());
+  pins_ = pins_at(0);
+}
+
+void ReadoutSequencerKernel::tick(bool rst) {
+  cycle_ = rst ? 0 : cycle_ + 1;
+  pins_ = pins_at(cycle_);
+}
+
+ReadoutSequencerPins ReadoutSequencerKernel::pins_at(long long cycle) const {
+  ReadoutSequencerPins p;
+  p.frame = static_cast<std::uint64_t>(cycle / frame_cycles_);
+  const long long c = cycle % frame_cycles_;
+  const long long R = timing_.reset_cycles, L = timing_.latch_cycles, S = timing_.search_cycles;
+  if (c < R) {
+    p.phase = ReadoutPhase::Reset;
+    p.pix_reset = true;
+  } else if (c < R + samplings_ * period_) {
+    const long long j = (c - R) % period_;
+    p.sampling = static_cast<int>((c - R) / period_) + 1;
+    if (j < L) {
+      p.phase = ReadoutPhase::Latch;
+      p.latch = true;
+      p.search_start = j == L - 1;
+    } else if (j < L + S) {
+      p.phase = ReadoutPhase::Search;
+    } else {
+      p.phase = ReadoutPhase::AddressStream;
+    }
+  } else {
+    p.phase = ReadoutPhase::Output;
+  }
+  p.frame_done = c == frame_cycles_ - 1;
+  return p;
+}
+
+long long ReadoutSequencerKernel::next_event_cycle() const {
+  const long long c = cycle_in_frame();
+  const auto it = std::upper_bound(events_.begin(), events_.end(), c);
+  assert(it != events_.end());
+  return cycle_ - c + *it;
+}
+
+void ReadoutSequencerKernel::advance_to(long long cycle) {
+  assert(cycle >= cycle_ && "advance_to goes forward only");
+  cycle_ = cycle;
+  pins_ = pins_at(cycle_);
+}
+
+}  // namespace rangesim::systemc

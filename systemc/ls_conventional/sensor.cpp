@@ -1,0 +1,214 @@
+#include "systemc/ls_conventional/sensor.h"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace rangesim::systemc {
+
+LsConventionalSensor::LsConventionalSensor(sc_core::sc_module_name name, const LsConventionalConfig& config,
+                                           const PixelArrayOptions& options, StimulusSource source)
+    : sc_core::sc_module(name),
+      config_(config),
+      sequencer_("sequencer", config.timing, config.multisampling.samplings),
+      pixels_("pixel_array", config, options, std::move(source)),
+      rows_("rows", config.pixel.rows, config.search, config.timing.search_cycles) {
+  const std::size_t rows = static_cast<std::size_t>(config.pixel.rows);
+  act_.init(rows);
+
+  sequencer_.clk_i(clk_i);
+  sequencer_.rst_i(rst_i);
+  sequencer_.pix_reset_o(pix_reset_);
+  sequencer_.latch_o(latch_);
+  sequencer_.search_start_o(search_start_);
+  sequencer_.frame_done_o(frame_done_);
+  sequencer_.phase_o(phase_);
+  sequencer_.sampling_o(sampling_);
+  sequencer_.frame_o(frame_);
+
+  pixels_.pix_reset_i(pix_reset_);
+  pixels_.sampling_i(sampling_);
+  pixels_.frame_i(frame_);
+  pixels_.act_o.bind(act_);
+
+  rows_.clk_i(clk_i);
+  rows_.rst_i(rst_i);
+  rows_.start_i(search_start_);
+  rows_.clear_i(pix_reset_);
+  rows_.act_i.bind(act_);
+  rows_.pins_o(row_pins_);
+
+  SC_METHOD(on_clock);
+  sensitive << clk_i.pos();
+  dont_initialize();
+}
+
+void LsConventionalSensor::on_clock() {
+  if (rst_i.read()) {
+    release_time_ = sc_core::sc_time_stamp();
+    cycle_ = 0;
+    phase_cycles_ = {};
+    return;
+  }
+  // Signals hold their values of the ending cycle.
+  const ReadoutPhase phase = static_cast<ReadoutPhase>(phase_.read());
+  ++phase_cycles_[static_cast<std::size_t>(phase)];
+  const RowArrayPins& rp = row_pins_.read();
+  const std::size_t rows = rp.search.size();
+  if (search_start_.read()) {
+    for (std::size_t r = 0; r < rows; ++r)
+      if (rp.search[r].busy)
+        SC_REPORT_ERROR("rangesim/ls_conventional_sensor",
+                        ("frame " + std::to_string(frame_.read()) + " row " + std::to_string(r) +
+                         ": search start while the row's search is busy")
+                            .c_str());
+  }
+  if (frame_done_.read()) {
+    FrameResult fr;
+    fr.frame = frame_.read();
+    fr.rows.resize(rows);
+    for (std::size_t r = 0; r < rows; ++r) {
+      if (rp.search[r].busy)
+        SC_REPORT_ERROR("rangesim/ls_conventional_sensor",
+                        ("frame " + std::to_string(fr.frame) + " row " + std::to_string(r) +
+                         ": address search still busy at the end of the frame access")
+                            .c_str());
+      fr.rows[r] = rp.centre[r];
+    }
+    fr.end_cycle = cycle_ + 1;
+    fr.phase_cycles = phase_cycles_;
+    for (long long c : phase_cycles_) fr.cycles += c;
+    phase_cycles_ = {};
+    results_.push_back(std::move(fr));
+    if (on_frame_) on_frame_(static_cast<long long>(results_.size()));
+    if (stop_after_ > 0 && static_cast<long long>(results_.size()) >= stop_after_) sc_core::sc_stop();
+  }
+  ++cycle_;
+}
+
+void LsConventionalSensor::trace(sc_core::sc_trace_file* tf, const std::vector<int>& rows) const {
+  sc_core::sc_trace(tf, clk_i, "clk");
+  sc_core::sc_trace(tf, rst_i, "rst");
+  sc_core::sc_trace(tf, pix_reset_, "pix_reset");
+  sc_core::sc_trace(tf, latch_, "latch");
+  sc_core::sc_trace(tf, search_start_, "search_start");
+  sc_core::sc_trace(tf, frame_done_, "frame_done");
+  sc_core::sc_trace(tf, phase_, "phase");
+  sc_core::sc_trace(tf, sampling_, "sampling");
+  sc_core::sc_trace(tf, frame_, "frame");
+  for (int r : rows) {
+    if (r < 0 || r >= static_cast<int>(act_.size())) continue;
+    // The row array's pins as written at each edge (fixed storage, traced by reference).
+    const AddressSearchPins& s = rows_.pins().search[static_cast<std::size_t>(r)];
+    const CentreProcessorPins& c = rows_.pins().centre[static_cast<std::size_t>(r)];
+    const std::string p = "row" + std::to_string(r) + "_";
+    sc_core::sc_trace(tf, s.addr_valid, p + "addr_valid");
+    sc_core::sc_trace(tf, s.addr_bit, p + "addr_bit");
+    sc_core::sc_trace(tf, s.done, p + "done");
+    sc_core::sc_trace(tf, s.found, p + "found");
+    sc_core::sc_trace(tf, c.valid, p + "centre_valid");
+    sc_core::sc_trace(tf, c.centre_q, p + "centre_q");
+  }
+}
+
+// ---- run helpers ----
+
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+long long default_budget(const LsConventionalConfig& c, long long frames) {
+  const ReadoutSequencerKernel seq(c.timing, c.multisampling.samplings);
+  return 2 * seq.frame_cycles() * frames + 16;
+}
+}  // namespace
+
+SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const SensorKernelOptions& options,
+                                  StimulusSource source, const SensorRunOptions& run) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LsConventionalSensorKernel k(config, options, std::move(source));
+  k.reset();
+  const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
+  SensorRunResult r;
+  for (long long f = 0; f < run.frames; ++f) {
+    const long long left = budget - k.cycle();
+    if (left <= 0) throw std::runtime_error("simulation cycle budget of " + std::to_string(budget) + " cycles exhausted");
+    k.run_frames(1, left);
+    if (run.progress) run.progress(f + 1);
+  }
+  r.frames = k.results();
+  r.cycles = k.cycle();
+  r.simulated_time_s = static_cast<double>(r.cycles) / config.timing.clock_Hz;
+  r.errors = k.errors();
+  r.pixels_simulated = k.pixels().pixels_simulated();
+  r.ticks = k.ticks();
+  r.wall_time_s = seconds_since(t0);
+  return r;
+}
+
+namespace {
+struct Bench : sc_core::sc_module {
+  sc_core::sc_clock clk;
+  sc_core::sc_signal<bool> rst{"rst", true};
+  LsConventionalSensor dut;
+  int edges = 0;
+  SC_HAS_PROCESS(Bench);
+  Bench(sc_core::sc_module_name n, const LsConventionalConfig& c, const PixelArrayOptions& o, StimulusSource s)
+      : sc_core::sc_module(n),
+        clk("clk", sc_core::sc_time(1.0 / c.timing.clock_Hz, sc_core::SC_SEC)),
+        dut("sensor", c, o, std::move(s)) {
+    dut.clk_i(clk);
+    dut.rst_i(rst);
+    SC_METHOD(release_reset);
+    sensitive << clk.posedge_event();
+    dont_initialize();
+  }
+  void release_reset() {
+    if (++edges == 2) rst.write(false);  // reset seen on the first two edges
+  }
+};
+}  // namespace
+
+SensorRunResult run_sensor_systemc(const LsConventionalConfig& config, const SensorKernelOptions& options,
+                                   StimulusSource source, const SensorRunOptions& run) {
+  const auto t0 = std::chrono::steady_clock::now();
+  sc_core::sc_set_time_resolution(1, sc_core::SC_FS);
+  // Informational reports ("simulation stopped by user", the trace timescale) go to stdout and
+  // would mix with a command's output: counted but not printed. Warnings and errors still are.
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+  const long long sc_errors0 = sc_core::sc_report_handler::get_count(sc_core::SC_ERROR);
+  const long long sc_warnings0 = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING);
+  Bench bench("bench", config, options.pixel, std::move(source));
+  bench.dut.stop_after(run.frames);
+  if (run.progress) bench.dut.on_frame(run.progress);
+  sc_core::sc_trace_file* tf = nullptr;
+  if (!run.vcd_base.empty()) {
+    tf = sc_core::sc_create_vcd_trace_file(run.vcd_base.c_str());
+    bench.dut.trace(tf, run.traced_rows);
+  }
+  const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
+  const sc_core::sc_time period = bench.clk.period();
+  try {
+    sc_core::sc_start(period * static_cast<double>(budget + 2));  // + the two reset edges
+  } catch (...) {
+    if (tf) sc_core::sc_close_vcd_trace_file(tf);
+    throw;
+  }
+  if (tf) sc_core::sc_close_vcd_trace_file(tf);
+  SensorRunResult r;
+  r.frames = bench.dut.results();
+  r.cycles = bench.dut.cycles();
+  r.ticks = r.cycles;
+  r.simulated_time_s = r.frames.empty() ? 0.0
+                                        : (sc_core::sc_time_stamp() - bench.dut.reset_release_time()).to_seconds();
+  r.sc_errors = sc_core::sc_report_handler::get_count(sc_core::SC_ERROR) - sc_errors0;
+  r.sc_warnings = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING) - sc_warnings0;
+  r.pixels_simulated = bench.dut.pixel_array().kernel().pixels_simulated();
+  r.wall_time_s = seconds_since(t0);
+  if (static_cast<long long>(r.frames.size()) < run.frames)
+    throw std::runtime_error("SystemC simulation: cycle budget of " + std::to_string(budget) + " cycles exhausted after " +
+                             std::to_string(r.frames.size()) + " of " + std::to_string(run.frames) + " frame accesses");
+  return r;
+}
+
+}  // namespace rangesim::systemc

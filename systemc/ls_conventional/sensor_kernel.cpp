@@ -1,0 +1,128 @@
+#include "systemc/ls_conventional/sensor_kernel.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace rangesim::systemc {
+
+int FrameResult::rows_detected() const {
+  int n = 0;
+  for (const auto& r : rows) n += r.valid ? 1 : 0;
+  return n;
+}
+
+namespace {
+const LsConventionalConfig& checked(const LsConventionalConfig& c) {
+  if (c.search.address_bits != c.timing.address_bits ||
+      c.search.addresses_per_sampling != c.timing.addresses_per_sampling || c.search.columns != c.pixel.columns)
+    throw std::invalid_argument(
+        "LsConventionalSensorKernel: search (columns, address_bits, addresses_per_sampling) must equal pixel.columns "
+        "and the timing's address_bits / addresses_per_sampling");
+  return c;
+}
+}  // namespace
+
+LsConventionalSensorKernel::LsConventionalSensorKernel(const LsConventionalConfig& config,
+                                                       const SensorKernelOptions& options, StimulusSource source)
+    : config_(checked(config)),
+      options_(options),
+      sequencer_(config.timing, config.multisampling.samplings),
+      pixels_(config, options.pixel, std::move(source)) {
+  const int rows = config.pixel.rows;
+  search_.reserve(static_cast<std::size_t>(rows));
+  centre_.reserve(static_cast<std::size_t>(rows));
+  for (int r = 0; r < rows; ++r) {
+    search_.emplace_back(config.search, config.timing.search_cycles);
+    centre_.emplace_back(config.search.address_bits);
+  }
+  search_pins_.resize(static_cast<std::size_t>(rows));
+}
+
+void LsConventionalSensorKernel::settle() {
+  const ReadoutSequencerPins p = sequencer_.pins();
+  pixels_.control(p.pix_reset, p.frame, p.sampling);
+}
+
+void LsConventionalSensorKernel::reset() {
+  sequencer_.tick(true);
+  for (auto& s : search_) s.tick(true, false, ActivationRow{});
+  for (auto& c : centre_) c.clear();
+  phase_cycles_ = {};
+  settle();
+}
+
+void LsConventionalSensorKernel::account(const ReadoutSequencerPins& p, long long cycles) {
+  phase_cycles_[static_cast<std::size_t>(p.phase)] += cycles;
+}
+
+void LsConventionalSensorKernel::finish_frame(const ReadoutSequencerPins& p) {
+  FrameResult fr;
+  fr.frame = p.frame;
+  fr.rows.reserve(centre_.size());
+  for (const auto& c : centre_) fr.rows.push_back(c.pins());
+  fr.end_cycle = sequencer_.cycle() + 1;
+  fr.phase_cycles = phase_cycles_;
+  for (long long c : phase_cycles_) fr.cycles += c;
+  results_.push_back(std::move(fr));
+  phase_cycles_ = {};
+}
+
+void LsConventionalSensorKernel::tick() {
+  const ReadoutSequencerPins p = sequencer_.pins();
+  account(p, 1);
+  const std::size_t rows = search_.size();
+  for (std::size_t r = 0; r < rows; ++r) search_pins_[r] = search_[r].pins();
+  if (p.search_start) {
+    for (std::size_t r = 0; r < rows; ++r)
+      if (!search_[r].idle())
+        errors_.push_back("frame " + std::to_string(p.frame) + " sampling " + std::to_string(p.sampling) + " row " +
+                          std::to_string(r) + ": search start while the row's search is busy");
+  }
+  if (p.frame_done) {
+    for (std::size_t r = 0; r < rows; ++r)
+      if (search_pins_[r].busy)
+        errors_.push_back("frame " + std::to_string(p.frame) + " row " + std::to_string(r) +
+                          ": address search still busy at the end of the frame access");
+    finish_frame(p);
+  }
+  for (std::size_t r = 0; r < rows; ++r) search_[r].tick(false, p.search_start, pixels_.row(static_cast<int>(r)));
+  for (std::size_t r = 0; r < rows; ++r) centre_[r].tick(p.pix_reset, search_pins_[r]);
+  sequencer_.tick(false);
+  ++ticks_;
+  settle();
+}
+
+void LsConventionalSensorKernel::step() {
+  if (!options_.event_skipping) {
+    tick();
+    return;
+  }
+  const ReadoutSequencerPins p = sequencer_.pins();
+  const long long next = sequencer_.next_event_cycle();
+  account(p, next - sequencer_.cycle());
+  if (p.frame_done) finish_frame(p);  // a one-cycle interval: the frame's last cycle
+  if (p.pix_reset)
+    for (auto& c : centre_) c.clear();
+  if (p.search_start) {
+    const std::size_t rows = search_.size();
+    for (std::size_t r = 0; r < rows; ++r)
+      centre_[r].accumulate(search_[r].evaluate(pixels_.row(static_cast<int>(r))));
+  }
+  sequencer_.advance_to(next);
+  settle();
+}
+
+std::vector<FrameResult> LsConventionalSensorKernel::run_frames(long long frames, long long cycle_budget) {
+  const std::size_t first = results_.size(), target = first + static_cast<std::size_t>(frames);
+  if (cycle_budget <= 0) cycle_budget = 2 * sequencer_.frame_cycles() * (frames + 1);
+  const long long limit = sequencer_.cycle() + cycle_budget;
+  while (results_.size() < target) {
+    if (sequencer_.cycle() >= limit)
+      throw std::runtime_error("LsConventionalSensorKernel: cycle budget of " + std::to_string(cycle_budget) +
+                               " cycles exhausted before " + std::to_string(frames) + " frame accesses completed");
+    step();
+  }
+  return {results_.begin() + static_cast<std::ptrdiff_t>(first), results_.end()};
+}
+
+}  // namespace rangesim::systemc

@@ -1,0 +1,96 @@
+#pragma once
+// The clock-level ls-conventional sensor as one plain C++ kernel: the readout sequencer, the pixel
+// array with its comparators, one address search and one centre processor per row, connected
+// exactly as the sc_modules are in systemc/ls_conventional_sensor.h (same kernels, same order of
+// evaluation), so the bare kernel and the SystemC model give identical outputs cycle for cycle.
+//
+// Per clock edge (tick()): every block reads its inputs as they were during the ending cycle,
+// then all update; afterwards the pixel array reacts combinationally to the sequencer's new pins
+// (reset for a new frame access, comparator latch for a new sampling).
+//
+// Event skipping (step() with SensorKernelOptions::event_skipping): the sequencer jumps from one
+// pin change to the next (readout_sequencer_kernel.h); at a search start each row's search is
+// evaluated in closed form (AddressSearchKernel::evaluate) and handed to its centre processor
+// whole (CentreProcessorKernel::accumulate). Idle and streaming cycles are counted, not ticked.
+// tests/systemc proves both paths give identical frame results and phase cycle counts.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/ls_conventional/config.h"
+#include "systemc/common/address_search_kernel.h"
+#include "systemc/ls_conventional/centre_processor_kernel.h"
+#include "systemc/ls_conventional/frame_stimulus.h"
+#include "systemc/ls_conventional/pixel_array_kernel.h"
+#include "systemc/ls_conventional/multisampling_sequencer_kernel.h"
+
+namespace rangesim::systemc {
+
+struct SensorKernelOptions {
+  PixelArrayOptions pixel;     // noise, seed, sparse
+  bool event_skipping = true;  // step() jumps to the next event instead of ticking every cycle
+};
+
+// Outcome of one frame access.
+struct FrameResult {
+  std::uint64_t frame = 0;                   // frame-access counter (beam position index in a range map)
+  std::vector<CentreProcessorPins> rows;     // centre per row, as output in the frame's last cycle
+  long long end_cycle = 0;                   // cycles since reset release at the end of this frame
+  long long cycles = 0;                      // cycles of this frame access
+  std::array<long long, kReadoutPhases> phase_cycles{};  // by ReadoutPhase
+  int rows_detected() const;
+  bool operator==(const FrameResult& o) const {
+    return frame == o.frame && rows == o.rows && end_cycle == o.end_cycle && cycles == o.cycles &&
+           phase_cycles == o.phase_cycles;
+  }
+};
+
+class LsConventionalSensorKernel {
+ public:
+  // Throws std::invalid_argument for an unbuildable configuration (from the block kernels), or if
+  // the search and timing configs disagree on address_bits / addresses_per_sampling.
+  LsConventionalSensorKernel(const LsConventionalConfig& config, const SensorKernelOptions& options,
+                             StimulusSource source);
+
+  void reset();  // synchronous reset edge (held 1 edge), then the pixel array settles
+  void tick();   // one clock edge of every block
+  void step();   // tick(), or with event skipping a jump to the next pin change of the sequencer
+
+  // Runs until `frames` more frame results exist; throws std::runtime_error if that takes more
+  // than `cycle_budget` cycles (0: 2 frame accesses' worth per frame). Returns the new results.
+  std::vector<FrameResult> run_frames(long long frames, long long cycle_budget = 0);
+
+  const std::vector<FrameResult>& results() const { return results_; }
+  // Forgets the stored results: a caller that takes each frame from run_frames() (Monte Carlo
+  // trials, one frame each) keeps memory bounded instead of growing by one result per frame.
+  void clear_results() { results_.clear(); }
+  const std::vector<std::string>& errors() const { return errors_; }  // protocol violations
+  long long cycle() const { return sequencer_.cycle(); }
+  long long ticks() const { return ticks_; }  // clock edges actually evaluated (tick mode)
+
+  const ReadoutSequencerKernel& sequencer() const { return sequencer_; }
+  const PixelArrayKernel& pixels() const { return pixels_; }
+  const AddressSearchKernel& search(int row) const { return search_[static_cast<std::size_t>(row)]; }
+  const CentreProcessorKernel& centre(int row) const { return centre_[static_cast<std::size_t>(row)]; }
+  const LsConventionalConfig& config() const { return config_; }
+
+ private:
+  void settle();                                       // pixel array follows the sequencer's pins
+  void account(const ReadoutSequencerPins& p, long long cycles);
+  void finish_frame(const ReadoutSequencerPins& p);   // in the frame_done cycle
+
+  LsConventionalConfig config_;
+  SensorKernelOptions options_;
+  ReadoutSequencerKernel sequencer_;
+  PixelArrayKernel pixels_;
+  std::vector<AddressSearchKernel> search_;     // per row
+  std::vector<CentreProcessorKernel> centre_;   // per row
+  std::vector<AddressSearchPins> search_pins_;  // scratch: pins of the ending cycle
+  std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
+  std::vector<FrameResult> results_;
+  std::vector<std::string> errors_;
+  long long ticks_ = 0;
+};
+
+}  // namespace rangesim::systemc

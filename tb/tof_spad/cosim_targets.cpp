@@ -1,0 +1,27 @@
+// The co-simulation targets of tof-spad (tb/common/cosim_target.h): its readout, and the shared
+// TDC alone at high count rates.
+#include "tb/common/cosim_target.h"
+#include "tb/tof_spad/cosim.h"
+
+namespace rangesim::tb {
+namespace {
+CosimReport tof_spad(const CosimOptions& o) { return run_tof_spad_cosim(o, false); }
+CosimReport tdc(const CosimOptions& o) { return run_tof_spad_cosim(o, true); }
+}  // namespace
+
+std::vector<CosimTarget> tof_spad_cosim_targets() {
+  return {
+      {"tof-spad",
+       "tof-spad row sequencer + TDC + histogram vs the SPAD/TDC kernels: codes, bins, peaks, "
+       "centroid sums; golden estimator on the RTL histograms",
+       {"tdc_code_off_by_one", "dropped_histogram_count"},
+       &tof_spad},
+      {"tdc",
+       "shared TDC at high count rates: arbitration, dead time, overflow, lost hits vs "
+       "TdcGroupKernel",
+       {"tdc_code_off_by_one"},
+       &tdc},
+  };
+}
+
+}  // namespace rangesim::tb
