@@ -160,7 +160,7 @@ json bench_aggregation_spad(bool quick) {
   j["groups"] = timed_groups;
   j["pixels"] = timed_groups * cfg.tdc.columns_per_tdc;
   j["laser_cycles_per_row"] = k_clock.laser_cycles();
-  j["check_laser_cycles_per_row"] = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
+  j["check_laser_cycles_per_row"] = laser_cycles_per_row(cfg);
   j["per_clock_cpu_s"] = per_clock_s;
   j["per_cycle_event_driven_cpu_s"] = per_cycle_s;
   j["aggregated_cpu_s"] = best;

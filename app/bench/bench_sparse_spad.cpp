@@ -67,7 +67,7 @@ json bench_sparse_spad(bool quick) {
   json j{{"value", v}, {"target", ">= 5"}, {"target_met", v >= 5}};
   j["pixels"] = rows * kColumns;
   j["lit_pixels"] = kBeam * kBeam;
-  j["laser_cycles_per_row"] = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
+  j["laser_cycles_per_row"] = laser_cycles_per_row(cfg);
   j["dense_cpu_s"] = dense.cpu_s;
   j["sparse_cpu_s"] = sparse.cpu_s;
   j["groups_background_class"] = sparse.frame.groups_background;

@@ -6,6 +6,15 @@
 
 namespace rangesim {
 
+long long sampling_cycles(const FrameTimingConfig& timing) {
+  return static_cast<long long>(timing.latch_cycles) + timing.search_cycles +
+         static_cast<long long>(timing.addresses_per_sampling) * timing.address_bits;
+}
+
+long long frame_cycles(const FrameTimingConfig& timing, int samplings) {
+  return timing.reset_cycles + samplings * sampling_cycles(timing) + timing.output_cycles;
+}
+
 LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   LsConventionalConfig c;
   c.pixel.integration_time_s = p.real("pixel.integration_time_s");

@@ -93,6 +93,13 @@ struct LsConventionalConfig {
   EvaluationGridConfig grid;
 };
 
+// The clock schedule of one frame access, one formula each (golden/ls_conventional/frame_timing,
+// the multi-sampling sequencer kernel and the RTL harnesses use these): one sampling is a latch,
+// the search settle and the streamed addresses; a frame access is the reset, N samplings and the
+// centre output.
+long long sampling_cycles(const FrameTimingConfig& timing);
+long long frame_cycles(const FrameTimingConfig& timing, int samplings);
+
 // Builds the config from a validated preset; throws UserError on cross-key inconsistencies
 // (e.g. address_bits too narrow for columns), naming the file and keys.
 LsConventionalConfig ls_conventional_from_params(const ParamSet& params);

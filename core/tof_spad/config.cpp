@@ -91,4 +91,14 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   return c;
 }
 
+long long laser_cycles_per_row(const TofSpadConfig& cfg) {
+  return std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
+}
+
+double tdc_clock_Hz(const TofSpadConfig& cfg) { return 1.0 / cfg.tdc.lsb_s; }
+
+long long cycles_per_histogram_word(const TofSpadConfig& cfg) {
+  return static_cast<long long>(std::ceil(tdc_clock_Hz(cfg) / cfg.histogram.readout_word_rate_Hz - 1e-9));
+}
+
 }  // namespace rangesim

@@ -77,4 +77,12 @@ struct TofSpadConfig {
 // (full range beyond 2^bits LSB, grid min > max), naming the file and keys.
 TofSpadConfig tof_spad_from_params(const ParamSet& params);
 
+// Derived integers, one formula each (golden, the kernels and the RTL harnesses use these):
+// laser cycles (TDC STARTs) per row integration, round(T_int f_rep);
+long long laser_cycles_per_row(const TofSpadConfig& cfg);
+// the TDC clock (one LSB per cycle) and the clock cycles per histogram word read out,
+// ceil(f_clk / word rate) less a rounding guard so an exact ratio is not rounded up.
+double tdc_clock_Hz(const TofSpadConfig& cfg);
+long long cycles_per_histogram_word(const TofSpadConfig& cfg);
+
 }  // namespace rangesim

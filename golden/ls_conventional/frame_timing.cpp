@@ -16,10 +16,8 @@ FrameTiming frame_timing(const FrameTimingConfig& timing, int samplings) {
       {"address_stream", N * static_cast<long long>(timing.addresses_per_sampling) * timing.address_bits},
       {"output", timing.output_cycles},
   };
-  for (const auto& [name, cycles] : phases) {
-    t.phases.push_back({name, cycles, cycles / timing.clock_Hz});
-    t.frame_cycles += cycles;
-  }
+  for (const auto& [name, cycles] : phases) t.phases.push_back({name, cycles, cycles / timing.clock_Hz});
+  t.frame_cycles = frame_cycles(timing, samplings);
   t.frame_time_s = t.frame_cycles / timing.clock_Hz;
   t.frame_access_rate_Hz = timing.clock_Hz / t.frame_cycles;
   t.range_map_time_s = t.frame_time_s * timing.beam_positions;

@@ -26,10 +26,10 @@ FrameTiming frame_timing_tof_spad(const ParamSet& params) {
   const TofSpadConfig cfg = tof_spad_from_params(params);
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
   const spad::TdcBins bins = spad::make_tdc_bins(cfg.tdc, period_s);
-  const double clock_Hz = 1.0 / cfg.tdc.lsb_s;
-  const long long laser_cycles = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
+  const double clock_Hz = tdc_clock_Hz(cfg);
+  const long long laser_cycles = laser_cycles_per_row(cfg);
   const long long rows = params.integer("array.rows");
-  const long long cycles_per_word = static_cast<long long>(std::ceil(clock_Hz / cfg.histogram.readout_word_rate_Hz - 1e-9));
+  const long long cycles_per_word = cycles_per_histogram_word(cfg);
   const long long words_per_lane = static_cast<long long>(cfg.tdc.columns_per_tdc) * bins.codes;
 
   FrameTiming t;

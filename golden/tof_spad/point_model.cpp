@@ -10,8 +10,7 @@ namespace rangesim::golden::spad {
 SpadModel::SpadModel(const TofSpadConfig& cfg)
     : cfg_(cfg),
       bins_(make_tdc_bins(cfg.tdc, 1.0 / cfg.laser.repetition_rate_Hz)),
-      cycles_(std::round(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz) *
-              cfg.evaluation.frames_averaged),
+      cycles_(static_cast<double>(laser_cycles_per_row(cfg)) * cfg.evaluation.frames_averaged),
       share_(tdc_share(cfg.tdc.columns_per_tdc, cfg.tdc.neighbour_rate_fraction)) {}
 
 std::vector<std::pair<std::string, std::string>> SpadModel::reasons() {

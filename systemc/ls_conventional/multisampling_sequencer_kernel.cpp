@@ -34,9 +34,8 @@ ReadoutSequencerKernel::ReadoutSequencerKernel(const FrameTimingConfig& timing, 
   require(timing.addresses_per_sampling >= 1,
           "addresses_per_sampling must be >= 1, got " + std::to_string(timing.addresses_per_sampling));
   require(timing.output_cycles >= 1, "output_cycles must be >= 1, got " + std::to_string(timing.output_cycles));
-  period_ = static_cast<long long>(timing.latch_cycles) + timing.search_cycles +
-            static_cast<long long>(timing.addresses_per_sampling) * timing.address_bits;
-  frame_cycles_ = timing.reset_cycles + samplings * period_ + timing.output_cycles;
+  period_ = sampling_cycles(timing);
+  frame_cycles_ = ::rangesim::frame_cycles(timing, samplings);
   // Pin changes within a frame: phase starts, the search_start cycle and the frame_done cycle.
   const long long R = timing.reset_cycles, L = timing.latch_cycles, S = timing.search_cycles;
   events_.push_back(0);

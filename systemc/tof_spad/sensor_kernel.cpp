@@ -23,8 +23,8 @@ TofSpadKernel::TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, co
   const golden::spad::PileUpInput in = model.pile_up_input(std::vector<double>(static_cast<size_t>(bins_.phase_bins), 0.0));
   block_event_bins_ = in.block_event_bins;
   block_overflow_bins_ = in.block_overflow_bins;
-  laser_cycles_ = std::llround(cfg.histogram.integration_time_s * cfg.laser.repetition_rate_Hz);
-  cycles_per_word_ = static_cast<long long>(std::ceil(clock_Hz() / cfg.histogram.readout_word_rate_Hz - 1e-9));
+  laser_cycles_ = laser_cycles_per_row(cfg);
+  cycles_per_word_ = cycles_per_histogram_word(cfg);
   aggregation_blocker_ = spad_aggregation_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
   background_blocker_ = spad_background_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
 }

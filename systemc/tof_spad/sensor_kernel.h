@@ -106,7 +106,7 @@ class TofSpadKernel {
   int codes() const { return bins_.codes; }
   long long readout_words_per_row() const { return static_cast<long long>(cfg_.tdc.columns_per_tdc) * bins_.codes; }
   long long cycles_per_word() const { return cycles_per_word_; }
-  double clock_Hz() const { return 1.0 / cfg_.tdc.lsb_s; }
+  double clock_Hz() const { return tdc_clock_Hz(cfg_); }
   int rows() const { return rows_; }
   int columns() const { return columns_; }
   int groups() const { return columns_ / cfg_.tdc.columns_per_tdc; }
