@@ -51,18 +51,18 @@ const FigureSpec kFigures[] = {
 
 std::string value_text(const json& v) { return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "null"; }
 
-std::string pareto_script(const std::string& data, const std::string& ext, const std::string& path, int sensors) {
+std::string pareto_script(const std::string& data, const std::string& ext, const std::string& path,
+                          const std::vector<std::string>& sensors) {
   std::string s = fmt::format(
       "reset\nset terminal {} size 900,650 font 'Sans,11'\nset output '{}'\n"
       "set logscale xy\nset xlabel 'CPU time [s]'\nset ylabel 'rms range error [m]'\n"
       "set title 'rangesim bench — run time against error (each point one fidelity setting)'\n"
       "set key outside right top\nset grid\nplot ",
       ext == "png" ? "pngcairo" : "svg", path);
-  const char* names[] = {"ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"};
-  for (int i = 0; i < sensors; ++i)
+  for (std::size_t i = 0; i < sensors.size(); ++i)
     s += fmt::format("{}'{}' index {} using 1:2 with points pt {} ps 1.5 title '{}', '' index {} using 1:2:3 with labels "
                      "font ',7' offset 0,0.8 notitle",
-                     i ? ", " : "", data, i, 5 + 2 * i, names[i], i);
+                     i ? ", " : "", data, i, 5 + 2 * i, sensors[i], i);
   return s + "\n";
 }
 
@@ -73,7 +73,7 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
   const std::string data = out.scratch("pareto.dat");
   std::ofstream(data) << pareto_gnuplot_data(rows);
   std::string script;
-  for (const char* ext : {"png", "svg"}) script += pareto_script(data, ext, out.staged(fmt::format("pareto.{}", ext)), 4);
+  for (const char* ext : {"png", "svg"}) script += pareto_script(data, ext, out.staged(fmt::format("pareto.{}", ext)), pareto_sensors(rows));
   const std::string gp = out.scratch("pareto.gp");
   std::ofstream(gp) << script;
   if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0)

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/params.h"
+#include "core/scene_rules.h"
 
 namespace rangesim {
 
@@ -22,6 +23,7 @@ struct SensorInfo {
   const ParamSchema& (*schema)();       // every preset key with its unit, range and meaning
   void (*validate)(const ParamSet& p);  // builds the configuration: throws UserError on cross-key
                                         // inconsistencies, naming the file and both keys
+  SceneRules scene = {};                // what its scenes for `rangesim simulate` may hold
 };
 
 // Every registered sensor: the shipped ones in thesis order, then those added at run time.

@@ -1,6 +1,6 @@
 // libFuzzer target: the scene reader and the depth-map image parser on arbitrary bytes. The first
-// byte picks the input kind: 0-3 a scene for one of the four sensors (load_scene_text), 4 a
-// depth-map image (parse_depth_map). Bad input of any kind must end in a UserError; any other
+// byte picks the input kind: 0-3 a scene for one of the four shipped sensors (load_scene_text, in
+// registry order), 4 a depth-map image (parse_depth_map). Bad input of any kind must end in a UserError; any other
 // exception, a crash, a hang or a sanitizer report is a finding. A scene that loads must be
 // checked for the sensor asked for, and a depth map that loads must hold finite distances in range.
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/sensor_registry.h"
 #include "core/user_error.h"
 #include "scene/depth_map.h"
 #include "scene/scene.h"
@@ -20,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   try {
     if (kind < 4) {
-      const std::string sensor = rangesim::scene::kSceneSensors[kind];
+      const std::string sensor = rangesim::sensors()[kind].id;
       const rangesim::scene::Scene s = rangesim::scene::load_scene_text(text, "fuzz.toml", sensor);
       if (s.sensor != sensor) std::abort();
       if (!std::isfinite(s.distance_m) || !(s.distance_m > 0)) std::abort();

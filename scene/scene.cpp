@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 #include <vector>
 
+#include "core/sensor_registry.h"
 #include "core/user_error.h"
 
 namespace rangesim::scene {
@@ -45,84 +46,69 @@ struct Range {
   }
 };
 
-// Sensors as bits, in the order of kSceneSensors.
-enum : unsigned { LC = 1, LD = 2, TL = 4, TS = 8, ALL = 15 };
-
 enum class Kind { Number, Integer, Text };
 
 struct KeySpec {
   Kind kind;
-  Range range;       // numbers and integers
-  unsigned sensors;  // which sensors' scenes have the key
+  Range range;   // numbers and integers
+  bool common;   // every sensor's scenes have it; others belong to the sensors whose SceneRules list them
 };
 
 const std::map<std::string, KeySpec>& key_specs() {
   static const std::map<std::string, KeySpec> specs = {
-      {"scene.name", {Kind::Text, {}, ALL}},
-      {"scene.description", {Kind::Text, {}, ALL}},
-      {"target.shape", {Kind::Text, {}, ALL}},
-      {"target.distance_m", {Kind::Number, {0.01, 1e4, false, false}, ALL}},
-      {"target.depth_map_file", {Kind::Text, {}, ALL}},
-      {"target.depth_near_m", {Kind::Number, {0.01, 1e4, false, false}, ALL}},
-      {"target.depth_far_m", {Kind::Number, {0.01, 1e4, false, false}, ALL}},
-      {"target.reflectance", {Kind::Number, {0, 1, true, false}, LC}},
-      {"target.tilt_x_rad", {Kind::Number, {-1.5, 1.5, false, false}, LC}},
-      {"target.tilt_y_rad", {Kind::Number, {-1.5, 1.5, false, false}, LC}},
-      {"target.near_distance_m", {Kind::Number, {0.01, 1e4, false, false}, LC | TL}},
-      {"target.step_y_m", {Kind::Number, {-1e3, 1e3, false, false}, LC}},
-      {"target.step_column_fraction", {Kind::Number, {0, 1, false, false}, TL}},
-      {"target.step_distance_m", {Kind::Number, {0.01, 1e4, false, false}, TS}},
-      {"target.step_column", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"target.tilt_m_per_row", {Kind::Number, {-0.01, 0.01, false, false}, LD}},
-      {"beam.power_W", {Kind::Number, {0, 100, true, false}, LC}},
-      {"beam.reference_distance_m", {Kind::Number, {0.01, 1e4, false, false}, LC}},
-      {"beam.column_offset_px", {Kind::Number, {-1, 1, false, false}, LC}},
-      {"beam.signal_A", {Kind::Number, {0, 1e-6, false, false}, LD}},
-      {"beam.first_column_px", {Kind::Number, {-1000, 4096, false, false}, LD}},
-      {"beam.columns_per_frame", {Kind::Number, {-10, 10, false, false}, LD}},
-      {"beam.first_row", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"beam.rows", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"beam.first_column", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"beam.columns", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"light.signal_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, TL}},
-      {"light.reference_distance_m", {Kind::Number, {0, 1000, true, false}, TL}},
-      {"light.background_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, TL}},
-      {"rates.signal_Hz", {Kind::Number, {0, 5e7, false, false}, TS}},
-      {"rates.reference_distance_m", {Kind::Number, {0.1, 1e3, false, false}, TS}},
-      {"rates.background_Hz", {Kind::Number, {0, 1e9, false, false}, TS}},
-      {"background.irradiance_W_per_m2", {Kind::Number, {0, 1e4, false, false}, LC}},
-      {"background.photocurrent_A", {Kind::Number, {0, 1e-5, false, false}, LD}},
-      {"camera.f_number", {Kind::Number, {0.5, 64, false, false}, LC}},
-      {"camera.fill_factor", {Kind::Number, {0, 1, true, false}, LC}},
-      {"camera.responsivity_A_per_W", {Kind::Number, {0, 2, true, false}, LC}},
-      {"window.first_row", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"window.rows", {Kind::Integer, {0, 4096, false, false}, TL | TS}},
-      {"window.first_column", {Kind::Integer, {0, 4096, false, false}, TS}},
-      {"window.columns", {Kind::Integer, {0, 4096, false, false}, TL | TS}},
+      {"scene.name", {Kind::Text, {}, true}},
+      {"scene.description", {Kind::Text, {}, true}},
+      {"target.shape", {Kind::Text, {}, true}},
+      {"target.distance_m", {Kind::Number, {0.01, 1e4, false, false}, true}},
+      {"target.depth_map_file", {Kind::Text, {}, true}},
+      {"target.depth_near_m", {Kind::Number, {0.01, 1e4, false, false}, true}},
+      {"target.depth_far_m", {Kind::Number, {0.01, 1e4, false, false}, true}},
+      {"target.reflectance", {Kind::Number, {0, 1, true, false}, false}},
+      {"target.tilt_x_rad", {Kind::Number, {-1.5, 1.5, false, false}, false}},
+      {"target.tilt_y_rad", {Kind::Number, {-1.5, 1.5, false, false}, false}},
+      {"target.near_distance_m", {Kind::Number, {0.01, 1e4, false, false}, false}},
+      {"target.step_y_m", {Kind::Number, {-1e3, 1e3, false, false}, false}},
+      {"target.step_column_fraction", {Kind::Number, {0, 1, false, false}, false}},
+      {"target.step_distance_m", {Kind::Number, {0.01, 1e4, false, false}, false}},
+      {"target.step_column", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"target.tilt_m_per_row", {Kind::Number, {-0.01, 0.01, false, false}, false}},
+      {"beam.power_W", {Kind::Number, {0, 100, true, false}, false}},
+      {"beam.reference_distance_m", {Kind::Number, {0.01, 1e4, false, false}, false}},
+      {"beam.column_offset_px", {Kind::Number, {-1, 1, false, false}, false}},
+      {"beam.signal_A", {Kind::Number, {0, 1e-6, false, false}, false}},
+      {"beam.first_column_px", {Kind::Number, {-1000, 4096, false, false}, false}},
+      {"beam.columns_per_frame", {Kind::Number, {-10, 10, false, false}, false}},
+      {"beam.first_row", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"beam.rows", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"beam.first_column", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"beam.columns", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"light.signal_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, false}},
+      {"light.reference_distance_m", {Kind::Number, {0, 1000, true, false}, false}},
+      {"light.background_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, false}},
+      {"rates.signal_Hz", {Kind::Number, {0, 5e7, false, false}, false}},
+      {"rates.reference_distance_m", {Kind::Number, {0.1, 1e3, false, false}, false}},
+      {"rates.background_Hz", {Kind::Number, {0, 1e9, false, false}, false}},
+      {"background.irradiance_W_per_m2", {Kind::Number, {0, 1e4, false, false}, false}},
+      {"background.photocurrent_A", {Kind::Number, {0, 1e-5, false, false}, false}},
+      {"camera.f_number", {Kind::Number, {0.5, 64, false, false}, false}},
+      {"camera.fill_factor", {Kind::Number, {0, 1, true, false}, false}},
+      {"camera.responsivity_A_per_W", {Kind::Number, {0, 2, true, false}, false}},
+      {"window.first_row", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"window.rows", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"window.first_column", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"window.columns", {Kind::Integer, {0, 4096, false, false}, false}},
   };
   return specs;
 }
 
-// Per sensor: the target shapes it models and the keys it cannot do without (distance_m is
-// required unless the target is a depth map).
-struct SensorRules {
-  const char* id;
-  unsigned bit;
-  std::vector<std::string> shapes;
-  std::vector<std::string> required;
+// The sensor a scene is read for, and what its scenes may hold (core/scene_rules.h).
+struct SensorScene {
+  const std::string& id;
+  const SceneRules& rules;
+  bool allows(const std::string& key, const KeySpec& spec) const {
+    return spec.common || std::find(rules.keys.begin(), rules.keys.end(), key) != rules.keys.end();
+  }
 };
-
-const std::vector<SensorRules>& sensor_rules() {
-  static const std::vector<SensorRules> rules = {
-      {"ls-conventional", LC, {"plane", "tilted", "step", "depth_map"},
-       {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m",
-        "background.irradiance_W_per_m2"}},
-      {"ls-demodulation", LD, {"plane", "depth_map"}, {"scene.name", "beam.signal_A", "background.photocurrent_A"}},
-      {"tof-lockin", TL, {"plane", "step", "depth_map"}, {"scene.name", "light.signal_photocurrent_A"}},
-      {"tof-spad", TS, {"plane", "step", "depth_map"}, {}},
-  };
-  return rules;
-}
 
 std::string join(const std::vector<std::string>& v) {
   std::string s;
@@ -130,44 +116,44 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
-std::string allowed_in(const std::string& section, unsigned bit) {
+std::string allowed_in(const std::string& section, const SensorScene& sensor) {
   std::string s;
   for (const auto& [k, spec] : key_specs())
-    if (k.rfind(section + ".", 0) == 0 && (spec.sensors & bit)) s += (s.empty() ? "" : ", ") + k;
+    if (k.rfind(section + ".", 0) == 0 && sensor.allows(k, spec)) s += (s.empty() ? "" : ", ") + k;
   return s.empty() ? "(none for this sensor)" : s;
 }
 
-std::string sections_of(unsigned bit) {
+std::string sections_of(const SensorScene& sensor) {
   std::vector<std::string> v;
   for (const auto& [k, spec] : key_specs()) {
     const std::string sec = k.substr(0, k.find('.'));
-    if ((spec.sensors & bit) && (v.empty() || v.back() != sec)) v.push_back(sec);
+    if (sensor.allows(k, spec) && (v.empty() || v.back() != sec)) v.push_back(sec);
   }
   return join(v);
 }
 
-Scene parse(const toml::table& root, const std::string& path, const SensorRules& rules) {
-  const unsigned bit = rules.bit;
+Scene parse(const toml::table& root, const std::string& path, const SensorScene& sensor) {
+  const SceneRules& rules = sensor.rules;
   std::map<std::string, std::string> text;
   Scene s;
   s.file = path;
-  s.sensor = rules.id;
+  s.sensor = sensor.id;
   std::map<std::string, int> line_of;
   for (const auto& [section_key, section_node] : root) {
     const std::string section(section_key.str());
     const toml::table* t = section_node.as_table();
     if (!t)
       throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections of a {} scene: {}", where(path, section_node),
-                                  section, rules.id, sections_of(bit)));
+                                  section, sensor.id, sections_of(sensor)));
     for (const auto& [k, node] : *t) {
       const std::string key = section + "." + std::string(k.str());
       const auto it = key_specs().find(key);
       if (it == key_specs().end())
         throw UserError(fmt::format("{}: unknown key '{}'; allowed in [{}] of a {} scene: {}", where(path, node), key, section,
-                                    rules.id, allowed_in(section, bit)));
-      if (!(it->second.sensors & bit))
+                                    sensor.id, allowed_in(section, sensor)));
+      if (!sensor.allows(key, it->second))
         throw UserError(fmt::format("{}: key '{}' is not a {} scene key (it belongs to another sensor's scenes); allowed in [{}]: {}",
-                                    where(path, node), key, rules.id, section, allowed_in(section, bit)));
+                                    where(path, node), key, sensor.id, section, allowed_in(section, sensor)));
       const KeySpec& spec = it->second;
       line_of[key] = static_cast<int>(node.source().begin.line);
       if (spec.kind == Kind::Text) {
@@ -194,7 +180,7 @@ Scene parse(const toml::table& root, const std::string& path, const SensorRules&
                                   spec.kind == Kind::Text ? "" : "; allowed: " + spec.range.text()));
     }
   };
-  for (const auto& k : rules.required) need(k, "required in a " + std::string(rules.id) + " scene");
+  for (const auto& k : rules.required) need(k, "required in a " + sensor.id + " scene");
   s.name = text.count("scene.name") ? text["scene.name"] : fs::path(path).stem().string();
   if (s.name.empty()) throw UserError(fmt::format("{}: scene.name must not be empty", path));
   if (s.name.find_first_of("/\\") != std::string::npos || s.name == "." || s.name == "..")
@@ -205,7 +191,7 @@ Scene parse(const toml::table& root, const std::string& path, const SensorRules&
   bool known_shape = false;
   for (const auto& sh : rules.shapes) known_shape = known_shape || sh == shape;
   if (!known_shape)
-    throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed for {}; allowed: {}", path, shape, rules.id, join(rules.shapes)));
+    throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed for {}; allowed: {}", path, shape, sensor.id, join(rules.shapes)));
   s.shape = shape == "tilted" ? TargetShape::Tilted : shape == "step" ? TargetShape::Step
           : shape == "depth_map" ? TargetShape::DepthMap : TargetShape::Plane;
   auto forbid = [&](const std::string& key) {
@@ -254,10 +240,10 @@ Scene parse(const toml::table& root, const std::string& path, const SensorRules&
     s.tilt_x_rad = s.values["target.tilt_x_rad"];
     s.tilt_y_rad = s.values["target.tilt_y_rad"];
   }
-  if (s.shape == TargetShape::Step && (bit & (LC | TL))) {
+  if (s.shape == TargetShape::Step && rules.step_near_face) {
     need("target.near_distance_m", "step: depth of the near face");
     s.near_distance_m = s.values["target.near_distance_m"];
-    if (bit == LC) {
+    if (rules.step_y) {
       need("target.step_y_m", "step: the near face covers y > step_y_m");
       s.step_y_m = s.values["target.step_y_m"];
       if (!(s.near_distance_m < s.distance_m))
@@ -268,16 +254,15 @@ Scene parse(const toml::table& root, const std::string& path, const SensorRules&
   return s;
 }
 
-const SensorRules& rules_for(const std::string& sensor) {
-  for (const auto& r : sensor_rules())
-    if (sensor == r.id) return r;
-  throw UserError(fmt::format("scene for sensor '{}': allowed ls-conventional, ls-demodulation, tof-lockin, tof-spad", sensor));
+const SensorInfo& sensor_for(const std::string& sensor) {
+  if (const SensorInfo* s = find_sensor(sensor)) return *s;
+  throw UserError(fmt::format("scene for sensor '{}': allowed {}", sensor, sensor_ids()));
 }
 
 }  // namespace
 
 Scene load_scene_text(std::string_view text, const std::string& origin, const std::string& sensor) {
-  const SensorRules& rules = rules_for(sensor);
+  const SensorInfo& info = sensor_for(sensor);
   toml::table root;
   try {
     root = toml::parse(text, origin);
@@ -286,7 +271,7 @@ Scene load_scene_text(std::string_view text, const std::string& origin, const st
                                 e.description()));
   }
   try {
-    return parse(root, origin, rules);
+    return parse(root, origin, SensorScene{info.id, info.scene});
   } catch (const UserError&) {
     throw;
   } catch (const std::exception& e) {  // e.g. a file-system error while resolving the image path

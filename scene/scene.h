@@ -75,10 +75,8 @@ struct Scene {
 
 const char* shape_name(TargetShape s);
 
-// The sensors a scene can be checked for.
-inline constexpr const char* kSceneSensors[] = {"ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"};
-
-// Parses and validates scene text for `sensor` (a preset id above). `origin` names the text in
+// Parses and validates scene text for `sensor` (a registered sensor id, core/sensor_registry.h:
+// its SceneRules say which shapes and keys its scenes may hold). `origin` names the text in
 // messages and anchors relative paths (depth_map_file is resolved against its directory).
 // Throws UserError naming the origin (and line), the key and the allowed range on any problem:
 // syntax, unknown section or key, a key of another sensor, missing key, wrong type, range, image.

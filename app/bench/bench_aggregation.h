@@ -4,9 +4,13 @@
 // clock by clock, timed in one run and compared by a stated two-sample test (bench_stats.h).
 #include <nlohmann/json.hpp>
 
+#include "app/bench/bench_stats.h"
 #include "core/tof_spad/config.h"
 
 namespace rangesim::app::bench {
+
+// A two-sample comparison (bench_stats.h) as the figures' JSON block.
+nlohmann::json comparison_json(const TwoSampleComparison& c);
 
 // tof-lockin: N_acc gate periods per frame as one Poisson draw of the total mean per tap
 // (LockinSimOptions::aggregate) vs every gate-clock cycle ticked (event_skipping off).

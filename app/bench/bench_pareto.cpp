@@ -7,61 +7,24 @@
 #include <map>
 
 #include "app/bench/bench_util.h"
+#include "core/sensor_list.h"
 
 namespace rangesim::app::bench {
 
+// Each shipped sensor's settings, defined in app/bench/pareto_<sensor>.cpp.
+#define RANGESIM_DECLARE(s) std::vector<ParetoSetting> s##_pareto_settings(bool quick);
+RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
+#undef RANGESIM_DECLARE
+
 namespace {
 
-struct Setting {
-  std::string sensor, scene, setting, harness;
-  std::vector<std::string> extra;
-};
-
-// tof-lockin with the pulse/gate overlaps integrated numerically at a time step (`simulate
-// --time-step`) instead of in closed form: 50 ns (half the preset's T0: the windows' charge is
-// wrong by up to a step), 10 ns and 0.1 ns (1000 steps per pulse); --quick leaves out the finest.
-std::vector<Setting> lockin_time_step_settings(bool quick) {
-  std::vector<Setting> s;
-  for (const char* step : {"5e-08", "1e-08", "1e-10"}) {
-    if (quick && std::string(step) == "1e-10") continue;
-    s.push_back({"tof-lockin", "tof-lockin-plane.toml", fmt::format("kernel, aggregated, time step {} s", step), "kernel",
-                 {"--kernel-only", "--time-step", step}});
-  }
-  return s;
-}
-
-std::vector<Setting> settings(bool quick) {
-  const std::string lf = quick ? "25" : "75";  // ls-conventional frame accesses (a fifth of the map in the full run)
-  // Quick: the slow per-clock references of ls-demodulation and tof-lockin are left out (they
-  // take minutes); the full run has every row.
-  std::vector<Setting> s = {
-      {"ls-conventional", "plane.toml", "kernel, sparse, event skipping", "kernel", {"--kernel-only", "--frames", lf}},
-      {"ls-conventional", "plane.toml", "kernel, dense", "kernel", {"--kernel-only", "--no-sparse", "--frames", lf}},
-      {"ls-conventional", "plane.toml", "kernel, per clock", "kernel", {"--kernel-only", "--no-event-skip", "--frames", lf}},
-      {"ls-conventional", "plane.toml", "kernel, noise-free", "kernel", {"--kernel-only", "--noise-free", "--frames", lf}},
-      {"ls-conventional", "plane.toml", "SystemC module", "systemc", {"--frames", quick ? "10" : "60"}},
-      {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, event skipping, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},
-      {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, event skipping, 4 frames", "kernel", {"--kernel-only", "--frames", "4"}},
-      {"ls-demodulation", "ls-demodulation-plane.toml", "SystemC module, 1 frame", "systemc", {"--frames", "1"}},
-      {"ls-demodulation", "ls-demodulation-plane.toml", "kernel, per period (no aggregation)", "kernel",
-       {"--kernel-only", "--no-aggregate", "--frames", "1"}},
-      {"tof-lockin", "tof-lockin-plane.toml", "kernel, aggregated", "kernel", {"--kernel-only"}},
-      {"tof-lockin", "tof-lockin-plane.toml", "SystemC module", "systemc", {}},
-      {"tof-spad", "tof-spad-plane.toml", "kernel, 1 frame", "kernel", {"--kernel-only", "--frames", "1"}},
-      {"tof-spad", "tof-spad-plane.toml", "kernel, 4 frames", "kernel", {"--kernel-only", "--frames", "4"}},
-      {"tof-spad", "tof-spad-plane.toml", "SystemC module, 1 frame", "systemc", {"--frames", "1"}},
-      // Beam spot: the window (512 pixels, 448 background-only) against the whole array one by one.
-      {"tof-spad", "tof-spad-spot.toml", "kernel, beam spot, sparse", "kernel", {"--kernel-only"}},
-  };
-  if (!quick) {
-    s.push_back({"ls-demodulation", "ls-demodulation-plane.toml", "kernel, per clock, 1 frame", "kernel",
-                 {"--kernel-only", "--no-event-skip", "--frames", "1"}});
-    s.push_back({"tof-lockin", "tof-lockin-plane.toml", "kernel, no aggregation", "kernel", {"--kernel-only", "--no-aggregate"}});
-    s.push_back({"tof-spad", "tof-spad-plane.toml", "kernel, 16 frames", "kernel", {"--kernel-only", "--frames", "16"}});
-    s.push_back({"tof-spad", "tof-spad-spot.toml", "kernel, beam spot, dense", "kernel", {"--kernel-only", "--dense"}});
-  }
-  for (Setting& t : lockin_time_step_settings(quick)) s.push_back(std::move(t));
-  std::stable_sort(s.begin(), s.end(), [](const Setting& a, const Setting& b) { return a.sensor < b.sensor; });
+// Every sensor's settings, in registry order (core/sensor_list.h).
+std::vector<ParetoSetting> settings(bool quick) {
+  std::vector<ParetoSetting> s;
+#define RANGESIM_APPEND(x) \
+  for (ParetoSetting & r : x##_pareto_settings(quick)) s.push_back(std::move(r));
+  RANGESIM_FOR_EACH_SENSOR(RANGESIM_APPEND)
+#undef RANGESIM_APPEND
   return s;
 }
 
@@ -91,7 +54,7 @@ std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir, Sw
   std::vector<ParetoRow> rows;
   int i = 0;
   const auto all = settings(quick);
-  for (const Setting& s : all) {
+  for (const ParetoSetting& s : all) {
     if (journal && journal->done().count(i)) {
       progress(fmt::format("pareto {}/{}: {} {} (from the journal)", ++i, all.size(), s.sensor, s.setting));
       rows.push_back(pareto_row_from_record(journal->done().at(i - 1)));
@@ -164,16 +127,19 @@ nlohmann::json pareto_json(const std::vector<ParetoRow>& rows) {
   return a;
 }
 
+std::vector<std::string> pareto_sensors(const std::vector<ParetoRow>& rows) {
+  std::vector<std::string> order;
+  for (const auto& r : rows)
+    if (std::find(order.begin(), order.end(), r.sensor) == order.end()) order.push_back(r.sensor);
+  return order;
+}
+
 std::string pareto_gnuplot_data(const std::vector<ParetoRow>& rows) {
   // One gnuplot data block per sensor (index i), columns: wall_s error_m "label".
   std::map<std::string, std::vector<const ParetoRow*>> by;
-  std::vector<std::string> order;
-  for (const auto& r : rows) {
-    if (!by.count(r.sensor)) order.push_back(r.sensor);
-    by[r.sensor].push_back(&r);
-  }
+  for (const auto& r : rows) by[r.sensor].push_back(&r);
   std::string s;
-  for (const auto& name : order) {
+  for (const auto& name : pareto_sensors(rows)) {
     s += fmt::format("# {}\n", name);
     for (const ParetoRow* r : by[name])
       if (std::isfinite(r->error_m)) s += fmt::format("{:.6g} {:.6g} \"{}\"\n", r->cpu_s, r->error_m, r->setting);

@@ -13,6 +13,13 @@
 
 namespace rangesim::app::bench {
 
+// One fidelity setting of a sensor: `rangesim simulate <sensor> --scene scenes/<scene> <extra>`.
+// Each sensor lists its own in app/bench/pareto_<sensor>.cpp (its bench settings).
+struct ParetoSetting {
+  std::string sensor, scene, setting, harness;  // harness: kernel, systemc
+  std::vector<std::string> extra;
+};
+
 struct ParetoRow {
   std::string sensor, setting, harness;  // harness: kernel, systemc, rtl
   std::vector<std::string> args;         // rangesim simulate arguments after the sensor
@@ -37,5 +44,7 @@ std::string pareto_csv(const std::vector<ParetoRow>& rows);
 nlohmann::json pareto_json(const std::vector<ParetoRow>& rows);
 // gnuplot script for pareto.{png,svg} from the data file `data_path` (written by the caller).
 std::string pareto_gnuplot_data(const std::vector<ParetoRow>& rows);
+// The sensors of the rows in order of first appearance: data block i of pareto_gnuplot_data.
+std::vector<std::string> pareto_sensors(const std::vector<ParetoRow>& rows);
 
 }  // namespace rangesim::app::bench

@@ -63,7 +63,11 @@ const ParamSchema& ls_conventional_schema() {
 // The core part of the sensor interface (core/sensor_registry.h).
 const SensorInfo& ls_conventional_sensor_info() {
   static const SensorInfo info{"ls-conventional", "light-section, row-parallel search, multi-sampling", "[31]", &ls_conventional_schema,
-                               [](const ParamSet& p) { (void)ls_conventional_from_params(p); }};
+                               [](const ParamSet& p) { (void)ls_conventional_from_params(p); },
+                               SceneRules{{"plane", "tilted", "step", "depth_map"},
+                                          {"target.reflectance", "target.tilt_x_rad", "target.tilt_y_rad", "target.near_distance_m", "target.step_y_m", "beam.power_W", "beam.reference_distance_m", "beam.column_offset_px", "background.irradiance_W_per_m2", "camera.f_number", "camera.fill_factor", "camera.responsivity_A_per_W"},
+                                          {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m", "background.irradiance_W_per_m2"},
+                                          true, true}};
   return info;
 }
 

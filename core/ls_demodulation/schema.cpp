@@ -79,7 +79,11 @@ const ParamSchema& ls_demodulation_schema() {
 // The core part of the sensor interface (core/sensor_registry.h).
 const SensorInfo& ls_demodulation_sensor_info() {
   static const SensorInfo info{"ls-demodulation", "light-section, demodulation, background suppression", "[27]", &ls_demodulation_schema,
-                               [](const ParamSet& p) { (void)ls_demodulation_from_params(p); }};
+                               [](const ParamSet& p) { (void)ls_demodulation_from_params(p); },
+                               SceneRules{{"plane", "depth_map"},
+                                          {"target.tilt_m_per_row", "beam.signal_A", "beam.first_column_px", "beam.columns_per_frame", "background.photocurrent_A"},
+                                          {"scene.name", "beam.signal_A", "background.photocurrent_A"},
+                                          false, false}};
   return info;
 }
 

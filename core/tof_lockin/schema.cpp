@@ -68,7 +68,11 @@ const ParamSchema& tof_lockin_schema() {
 // The core part of the sensor interface (core/sensor_registry.h).
 const SensorInfo& tof_lockin_sensor_info() {
   static const SensorInfo info{"tof-lockin", "pulsed lock-in time-of-flight, two-tap photogate", "[12]", &tof_lockin_schema,
-                               [](const ParamSet& p) { (void)tof_lockin_from_params(p); }};
+                               [](const ParamSet& p) { (void)tof_lockin_from_params(p); },
+                               SceneRules{{"plane", "step", "depth_map"},
+                                          {"target.near_distance_m", "target.step_column_fraction", "light.signal_photocurrent_A", "light.reference_distance_m", "light.background_photocurrent_A", "window.rows", "window.columns"},
+                                          {"scene.name", "light.signal_photocurrent_A"},
+                                          true, false}};
   return info;
 }
 

@@ -72,7 +72,11 @@ const ParamSchema& tof_spad_schema() {
 // The core part of the sensor interface (core/sensor_registry.h).
 const SensorInfo& tof_spad_sensor_info() {
   static const SensorInfo info{"tof-spad", "direct time-of-flight, SPADs with column TDCs", "[11]", &tof_spad_schema,
-                               [](const ParamSet& p) { (void)tof_spad_from_params(p); }};
+                               [](const ParamSet& p) { (void)tof_spad_from_params(p); },
+                               SceneRules{{"plane", "step", "depth_map"},
+                                          {"target.step_distance_m", "target.step_column", "beam.first_row", "beam.rows", "beam.first_column", "beam.columns", "rates.signal_Hz", "rates.reference_distance_m", "rates.background_Hz", "window.first_row", "window.rows", "window.first_column", "window.columns"},
+                                          {},
+                                          false, false}};
   return info;
 }
 
