@@ -39,6 +39,10 @@ foreach(_dir core golden systemc)
   endif()
 endforeach()
 
+# Generated headers (the sensor list).
+install(FILES "${PROJECT_BINARY_DIR}/core/generated/core/sensor_list.h"
+  DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/core")
+
 # Verilated model headers (generated at configure time) and the instance parameters.
 if(TARGET rangesim_rtl)
   get_property(_rtl_dirs GLOBAL PROPERTY RANGESIM_RTL_INCLUDE_DIRS)
