@@ -56,7 +56,7 @@ struct DemodComparatorConfig {
   double false_activation_max = 0.01;  // tolerated P(background alone activates a pixel of the row)
 };
 
-// Noise (DESIGN.md "real noise model").
+// Noise: shot, kTC at reset, read, dark, optional fixed pattern.
 struct DemodNoiseConfig {
   double temperature_K = 300.0;      // kTC on C1 and C2, sampled at each integrator reset
   double dark_current_A = 1e-15;     // adds to I_dc, with its shot noise

@@ -51,7 +51,7 @@ struct LockinReadoutConfig {
   long long output_cycles_per_row = 672;   // cycles to shift one converted row out
 };
 
-// Noise sources (DESIGN.md "real noise model").
+// Noise sources: shot, kTC at reset, read, dark, optional fixed pattern.
 struct LockinNoiseConfig {
   double temperature_K = 300.0;         // kTC reset noise temperature
   double dark_current_A = 1e-15;        // dark current into each FD during the accumulation

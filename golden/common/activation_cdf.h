@@ -2,7 +2,7 @@
 // Probability that a noisy pixel has reached a threshold: the building block of the closed-form
 // noise model (position_noise.h, detect.h).
 //
-// Noise model per pixel and frame (DESIGN.md "real noise model"):
+// Noise model per pixel and frame:
 //  - shot noise: the integrated photo-electrons (signal + background + dark) are a Poisson process
 //    N(t) with mean mu(t) = C v(t) / q;
 //  - kTC reset noise sqrt(kT/C), sampled once at reset and then frozen for the frame;

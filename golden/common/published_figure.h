@@ -1,5 +1,5 @@
 #pragma once
-// A figure published for one of the chips (thesis or chip paper, listed in REFERENCE.md) beside
+// A figure published for one of the chips (thesis or chip paper, listed in docs/<sensor>.md) beside
 // rangesim's value for it. `rangesim table --published` lists them; each sensor's tests assert
 // the reproduced ones within their tolerance and pin the others with the reason they differ.
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Signal-to-background ratio SBR', under both of the thesis's definitions (DESIGN.md).
+// Signal-to-background ratio SBR', under both of the thesis's definitions (eq. 3.11 and eq. 3.23 / 4.11).
 //
 //  - total (eq. 3.11 evaluated at an operating point): 20 log10((V_sig + V_bg) / V_bg). Eq. 3.11
 //    writes V_sig_min / V_bg with V_sig_min = Delta V_ADC + V_bg, i.e. the swing the pixel reaches

@@ -2,7 +2,7 @@
 // Gaussian sheet-beam profile across a row (thesis eq. 3.6), peak normalised to 1.
 //
 // sigma = sigma_per_fwhm * FWHM. The exact Gaussian factor is 1 / (2 sqrt(2 ln 2)) = 0.4247; the
-// thesis writes 0.45 (DESIGN.md). Both are a preset value (spot.sigma_per_fwhm).
+// thesis writes 0.45 (a typo). Both are a preset value (spot.sigma_per_fwhm).
 #include "core/ls_conventional/config.h"
 
 namespace rangesim::golden {

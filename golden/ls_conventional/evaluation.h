@@ -1,6 +1,6 @@
 #pragma once
 // The thesis's evaluation of ls-conventional (chapter 3.1) over a signal x background grid,
-// with its faults fixed (DESIGN.md): detectable area with the reason where range cannot be
+// with its faults fixed (ARCHITECTURE.md, "Known thesis faults"): detectable area with the reason where range cannot be
 // derived, accuracy (pixel pitch and metres), SBR' by both definitions, dynamic ranges.
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 // tof-lockin's published figures (thesis 4.1.1, 4.1.3, Table 4.1, Table 5.1 column [12];
-// REFERENCE.md) beside rangesim's values. The thesis quotes signal levels as volts of V1 + V2;
+// docs/tof-lockin.md) beside rangesim's values. The thesis quotes signal levels as volts of V1 + V2;
 // the measurements are taken without background (not stated; assumed) at 1 m unless a delay is
 // given. The preset's read noise (0.7 mV) is calibrated to the eleven resolution figures at once
 // (docs/tof-lockin.md): they cannot all be met by one shot + floor noise model better than about

@@ -8,7 +8,7 @@
 // the delta method, s = mu_a + mu_b:
 //   f_a = -mu_b / s^2, f_b = mu_a / s^2                    (first derivatives)
 //   Var1 = K^2 (mu_b^2 v_a + mu_a^2 v_b) / s^4             (first order)
-// which with v_i = N_i + 2 N_amb,i + 2 n_read^2 in electrons is the REFERENCE.md formula
+// which with v_i = N_i + 2 N_amb,i + 2 n_read^2 in electrons is the usual first-order lock-in formula
 // sigma_L = (c T0 / 2) sqrt(N1^2 var(N2) + N2^2 var(N1)) / (N1 + N2)^2. Second order, for
 // Gaussian a, b (f_aa = 2 mu_b / s^3, f_bb = -2 mu_a / s^3, f_ab = (mu_b - mu_a) / s^3, and
 // third derivatives f_aaa = -6 mu_b / s^4, f_bbb = 6 mu_a / s^4, f_aab = (2 mu_a - 4 mu_b) / s^4,
@@ -22,7 +22,7 @@ namespace rangesim::golden {
 struct RangeMoments {
   double mean_m = 0;         // E[L], second order
   double var_m2 = 0;         // Var[L] of one frame, second order
-  double var_first_m2 = 0;   // first-order part (REFERENCE.md formula)
+  double var_first_m2 = 0;   // first-order part (the usual lock-in formula)
   double noise_free_m = 0;   // K mu_b / (mu_a + mu_b): L of the mean tap values
   double snr = 0;            // s / sqrt(v_a + v_b), validity of the expansion (>> 1)
 };

@@ -58,7 +58,7 @@ struct EstimateMoments {
 EstimateMoments estimator_moments(const PileUpHistogram& h, const TdcBins& bins, double cycles, int peak_bin,
                                   const EstimatorConfig& cfg);
 
-// Thompson et al. 2002, one dimension (REFERENCE.md): timing sigma of an ideal localisation from
+// Thompson, Larson and Webb, "Precise nanometer localization analysis for individual fluorescent probes" (Biophys. J., 2002), one dimension: timing sigma of an ideal localisation from
 // N signal photons, IRF sigma s, bin width a and b background counts per bin.
 double thompson_sigma_t_s(double irf_sigma_s, double bin_s, double signal_counts, double background_per_bin);
 

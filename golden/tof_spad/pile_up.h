@@ -1,6 +1,6 @@
 #pragma once
 // First-photon pile-up with dead time carried across laser cycles: the expected TDC histogram in
-// closed form (REFERENCE.md, "SPAD first-photon histogram"), completing thesis eq. 2.32-2.33
+// closed form (the first-photon histogram of a SPAD; Coates, "The correction for photon pile-up in the measurement of radiative lifetimes", 1968), completing thesis eq. 2.32-2.33
 // where it stops ("P_n(t; s(t)) is still under analysing").
 //
 // Per laser cycle the TDC is stopped by the first detection among the columns that share it.

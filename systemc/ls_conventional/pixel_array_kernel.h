@@ -5,7 +5,7 @@
 // and the activation bits of every row packed 64 per word (ActivationRow) for the row's
 // address search.
 //
-// Noise (DESIGN.md), sampled here from counter-based streams keyed by (seed, frame, row, column)
+// Noise (shot, kTC at reset, read, dark; docs/simulate.md), sampled here from counter-based streams keyed by (seed, frame, row, column)
 // (systemc/random_stream.h):
 //   - shot noise: the electrons integrated up to t_k are a Poisson process of mean
 //     mu(t_k) = C v(t_k) / q (signal + background + dark current), drawn as increments per sampling;

@@ -29,7 +29,7 @@ static TofLockinConfig shot_only() {
 }
 
 TEST(LockinEstimate, FirstOrderIsTheReferenceFormula) {
-  // REFERENCE.md: sigma_L = (c T0/2) sqrt(N1^2 var(N2) + N2^2 var(N1)) / (N1+N2)^2,
+  // The first-order lock-in formula: sigma_L = (c T0/2) sqrt(N1^2 var(N2) + N2^2 var(N1)) / (N1+N2)^2,
   // var(N_i) = N_i + 2 N_amb + 2 n_read^2.
   const double K = 14.9896229, n1 = 30000, n2 = 9000, namb = 5000, nread = 45;
   const double v1 = n1 + 2 * namb + 2 * nread * nread, v2 = n2 + 2 * namb + 2 * nread * nread;

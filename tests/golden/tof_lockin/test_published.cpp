@@ -1,4 +1,4 @@
-// Published figures of tof-lockin (thesis 4.1.1, 4.1.3, Table 5.1 [12], REFERENCE.md): each
+// Published figures of tof-lockin (thesis 4.1.1, 4.1.3, Table 5.1 [12], docs/tof-lockin.md): each
 // reproduced one is asserted within its tolerance, each other one is pinned at our value with
 // the reason it differs (also in its `note` and in docs/tof-lockin.md).
 #include <gtest/gtest.h>

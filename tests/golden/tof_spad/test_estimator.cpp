@@ -61,7 +61,7 @@ TEST(SpadEstimator, ExpectedHistogramGivesTheRoundTripTime) {
   }
 }
 
-// Thompson et al. 2002 (REFERENCE.md) holds for negligible pile-up, a Gaussian IRF and uniform
+// Thompson et al. 2002 (golden/tof_spad/estimator.h) holds for negligible pile-up, a Gaussian IRF and uniform
 // background. With few background counts per bin the windowed centroid reaches it: (s^2 +
 // a^2/12) / N is the variance of the bin centres of the detected photons. Tolerance 3%.
 TEST(SpadEstimator, VarianceMatchesThompsonAtLowCountRates) {
