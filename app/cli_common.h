@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the subcommands: flag parsing with user-facing errors, exit codes.
 #include <string>
+#include <vector>
 
 #include "core/params.h"
 
@@ -27,7 +28,9 @@ struct GridAxis {
 // UserError names `flag` and the allowed form otherwise.
 GridAxis parse_grid_axis(const std::string& text, const std::string& flag);
 
-// Loads a preset by id or path and checks that `command` has a model for its sensor.
-ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command);
+// Loads a preset by id or path, applies the `--set KEY=VALUE` assignments (core/preset.h,
+// apply_settings) and checks that `command` has a model for its sensor.
+ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command,
+                              const std::vector<std::string>& settings = {});
 
 }  // namespace rangesim::app

@@ -29,9 +29,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   list->add_flag("--json", list_opt.json, "Print JSON");
 
   ShowOptions& show_opt = c.show;
-  auto* show = app.add_subcommand("show", "Show a preset's resolved parameters with units and sources");
+  auto* show = app.add_subcommand("show", "Show a preset's resolved parameters with units, sources and the file each came from");
   show->add_option("preset", show_opt.preset, "Preset id or path to a .toml file")->required();
   show->add_flag("--json", show_opt.json, "Print JSON");
+  show->add_option("--set", show_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")->type_name("KEY=VALUE");
 
   EvaluateOptions& ev_opt = c.evaluate;
   auto* ev = app.add_subcommand(
@@ -40,6 +41,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "detectable area with reasons, accuracy map, SBR' both ways, dynamic ranges, 1-D sweeps. Writes CSV\n"
       "maps, summary.json, heat maps and line plots (PNG, SVG) into --out.");
   ev->add_option("sensor", ev_opt.sensor, "Preset id or path to a .toml file")->required();
+  ev->add_option("--set", ev_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")->type_name("KEY=VALUE");
   ev->add_option("--signal", ev_opt.signal,
                  "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
                  "tof-lockin), Hz count rate (tof-spad) (default: preset)");
@@ -73,6 +75,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   fr->add_option("sensor", fr_opt.sensor, "Preset id or path to a .toml file")->required();
   fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)");
   fr->add_flag("--json", fr_opt.json, "Print JSON");
+  fr->add_option("--set", fr_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")->type_name("KEY=VALUE");
 
   SimulateOptions& sim_opt = c.simulate;
   auto* sim = app.add_subcommand(

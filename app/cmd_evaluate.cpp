@@ -72,7 +72,7 @@ void apply_grid(ParamSet& params, const ParamSchema& schema, const std::string& 
 }  // namespace
 
 ParamSet evaluate_params(const EvaluateOptions& opt) {
-  ParamSet params = load_modelled_preset(opt.sensor, "evaluate");
+  ParamSet params = load_modelled_preset(opt.sensor, "evaluate", opt.settings);
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   if (opt.samplings) {
     require_key(schema.find("multisampling.samplings") ? "multisampling.samplings" : "", "--samplings", params, "samplings");

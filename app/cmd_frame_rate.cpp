@@ -27,7 +27,7 @@ nlohmann::json frame_timing_json(const golden::FrameTiming& t) {
 }
 
 int run_frame_rate(const FrameRateOptions& opt) {
-  ParamSet params = load_modelled_preset(opt.sensor, "frame-rate");
+  ParamSet params = load_modelled_preset(opt.sensor, "frame-rate", opt.settings);
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   if (opt.samplings) {
     if (!schema.find("multisampling.samplings"))

@@ -57,7 +57,8 @@ nlohmann::json value_json(const ParamValue& v) {
 }  // namespace
 
 int run_show(const ShowOptions& opt) {
-  const ParamSet params = load_preset(opt.preset);
+  ParamSet params = load_preset(opt.preset);
+  apply_settings(params, opt.settings);
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   const SensorInfo* info = find_sensor(params.sensor_id());
   if (opt.json) {
@@ -68,7 +69,7 @@ int run_show(const ShowOptions& opt) {
     nlohmann::json ps = nlohmann::json::object();
     for (const auto& spec : schema.params) {
       const ParamValue& v = params.at(spec.key);
-      ps[spec.key] = {{"value", value_json(v)}, {"unit", spec.unit}, {"source", v.source},
+      ps[spec.key] = {{"value", value_json(v)}, {"unit", spec.unit}, {"source", v.source}, {"file", v.file},
                       {"description", spec.description}, {"allowed", describe_range(spec)}};
     }
     j["parameters"] = ps;
@@ -87,7 +88,9 @@ int run_show(const ShowOptions& opt) {
     const ParamValue& v = params.at(spec.key);
     fmt::print("  {:<32} {:>14} {:<3}  {}\n", spec.key.substr(spec.key.find('.') + 1), value_text(v), spec.unit,
                spec.description);
-    fmt::print("  {:<32} {:>14} {:<3}  source: {}\n", "", "", "", v.source);
+    // Where the value came from, when not the file shown at the top (a base preset, --set).
+    const std::string from = v.file == params.origin() ? "" : fmt::format(" (from {})", v.file);
+    fmt::print("  {:<32} {:>14} {:<3}  source: {}{}\n", "", "", "", v.source, from);
   }
   return 0;
 }

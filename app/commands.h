@@ -3,6 +3,7 @@
 // UserError for bad input, NotModelled for a sensor without a model for the command.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rangesim::app {
 
@@ -14,11 +15,13 @@ int run_list(const ListOptions& opt);
 struct ShowOptions {
   std::string preset;  // id or path
   bool json = false;
+  std::vector<std::string> settings = {};  // --set KEY=VALUE, in order
 };
 int run_show(const ShowOptions& opt);
 
 struct EvaluateOptions {
   std::string sensor;                 // preset id or path
+  std::vector<std::string> settings;  // --set KEY=VALUE, in order, after the preset
   std::optional<std::string> signal;  // "LO:HI:N" volts
   std::optional<std::string> background;
   std::optional<int> samplings;
@@ -45,6 +48,7 @@ struct FrameRateOptions {
   std::string sensor;
   std::optional<int> samplings;
   bool json = false;
+  std::vector<std::string> settings = {};  // --set KEY=VALUE, in order
 };
 int run_frame_rate(const FrameRateOptions& opt);
 

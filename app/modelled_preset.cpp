@@ -8,8 +8,10 @@
 
 namespace rangesim::app {
 
-ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command) {
+ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command,
+                              const std::vector<std::string>& settings) {
   ParamSet params = load_preset(id_or_path);
+  apply_settings(params, settings);
   if (!golden::golden_model(params.sensor_id())) {
     std::string modelled;
     for (const auto& s : sensors())

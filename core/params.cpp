@@ -1,6 +1,8 @@
 #include "core/params.h"
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <fmt/format.h>
 
 #include "core/user_error.h"
@@ -33,6 +35,7 @@ void ParamSet::set_integer(const std::string& key, long long value, const std::s
   v.kind = ParamKind::Integer;
   v.number = static_cast<double>(value);
   v.source = fmt::format("command line {}", flag);
+  v.file = "command line";
 }
 
 void ParamSet::set_real(const std::string& key, double value, const std::string& flag, const ParamSchema& schema) {
@@ -43,6 +46,49 @@ void ParamSet::set_real(const std::string& key, double value, const std::string&
   v.kind = ParamKind::Real;
   v.number = value;
   v.source = fmt::format("command line {}", flag);
+  v.file = "command line";
+}
+
+void ParamSet::set_from_text(const std::string& assignment, const std::string& flag, const ParamSchema& schema) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw UserError(fmt::format("{} {}: expected KEY=VALUE, e.g. {} timing.clock_Hz=50e6", flag, assignment, flag));
+  const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  const std::string where = fmt::format("{} {}", flag, assignment);
+  const ParamSpec* spec = schema.find(key);
+  if (!spec)
+    throw UserError(fmt::format("{}: no parameter '{}' for sensor {}; the keys are listed by `rangesim show {}`", where, key,
+                                sensor_id_, sensor_id_));
+  ParamValue v;
+  v.kind = spec->kind;
+  v.source = fmt::format("command line {}", flag);
+  v.file = "command line";
+  char* end = nullptr;
+  switch (spec->kind) {
+    case ParamKind::Text:
+      check_choice(*spec, text, where);
+      v.text = text;
+      break;
+    case ParamKind::Boolean:
+      if (text != "true" && text != "false") throw UserError(fmt::format("{}: {} must be true or false", where, key));
+      v.number = text == "true" ? 1.0 : 0.0;
+      break;
+    case ParamKind::Real:
+    case ParamKind::Integer:
+      v.number = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || std::isspace(static_cast<unsigned char>(text[0])))
+        throw UserError(fmt::format("{}: '{}' is not a number; allowed: {}", where, text, describe_range(*spec)));
+      check_range(*spec, v.number, where);
+      break;
+  }
+  values_[key] = v;
+}
+
+void check_choice(const ParamSpec& spec, const std::string& value, const std::string& where) {
+  if (spec.choices.empty()) return;
+  for (const auto& c : spec.choices)
+    if (c == value) return;
+  throw UserError(fmt::format("{}: {} = \"{}\" is not allowed; allowed: {}", where, spec.key, value, describe_range(spec)));
 }
 
 std::string describe_range(const ParamSpec& spec) {

@@ -36,7 +36,8 @@ struct ParamValue {
   ParamKind kind = ParamKind::Real;
   double number = 0.0;  // Real, Integer (exact up to 2^53) and Boolean (0/1)
   std::string text;     // Text
-  std::string source;   // where the number comes from: thesis table/eq., paper, derived, assumed
+  std::string source;   // where the number comes from: thesis table/eq., paper, derived, assumed, user
+  std::string file;     // the preset file that set it ("command line" for --set and flags)
 };
 
 class ParamSet {
@@ -54,6 +55,9 @@ class ParamSet {
   // Overrides one value (command-line flag); `flag` names the option for error messages.
   void set_integer(const std::string& key, long long value, const std::string& flag, const ParamSchema& schema);
   void set_real(const std::string& key, double value, const std::string& flag, const ParamSchema& schema);
+  // Overrides one value from "KEY=VALUE" text (`--set`), parsed by the key's type and checked like
+  // a preset value; `flag` names the option in messages.
+  void set_from_text(const std::string& assignment, const std::string& flag, const ParamSchema& schema);
 
   const std::map<std::string, ParamValue>& values() const { return values_; }
   std::map<std::string, ParamValue>& mutable_values() { return values_; }
@@ -68,6 +72,9 @@ class ParamSet {
 
 // Checks a number against a spec; throws UserError "<where>: <key> = v is out of range [..]".
 void check_range(const ParamSpec& spec, double value, const std::string& where);
+
+// Checks a text value against a spec's choices; throws UserError naming the allowed values.
+void check_choice(const ParamSpec& spec, const std::string& value, const std::string& where);
 
 // Text for the allowed range of a spec, e.g. "(0, 1e-3] s" or "integer in [1, 64]".
 std::string describe_range(const ParamSpec& spec);

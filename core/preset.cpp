@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -57,64 +58,121 @@ std::string where_of(const std::string& file, const toml::node& node) {
   return fmt::format("{}:{}", file, src.begin.line);
 }
 
+// The value of `entry`: an inline table { value = ..., source = "..." }, or a plain value (a
+// user's edit), whose source is "user".
 ParamValue read_value(const std::string& file, const std::string& key, const toml::node& entry,
                       const ParamSpec& spec) {
   const std::string where = where_of(file, entry);
   const toml::table* t = entry.as_table();
-  if (!t || !t->contains("value") || !t->contains("source"))
-    throw UserError(fmt::format("{}: {} must be an inline table {{ value = ..., source = \"...\" }} with value {}",
-                                where, key, describe_range(spec)));
-  for (const auto& [k, _] : *t)
-    if (k != "value" && k != "source")
-      throw UserError(fmt::format("{}: {} has unknown field '{}'; allowed: value, source", where, key, k.str()));
+  const toml::node* value = &entry;
   ParamValue v;
   v.kind = spec.kind;
-  const auto* source = (*t)["source"].as_string();
-  if (!source || source->get().empty())
-    throw UserError(fmt::format("{}: {}.source must be a non-empty string naming where the value comes from", where, key));
-  v.source = source->get();
-  const toml::node& value = *t->get("value");
+  v.source = "user";
+  v.file = file;
+  if (t) {
+    if (!t->contains("value") || !t->contains("source"))
+      throw UserError(fmt::format("{}: {} must be a plain value or an inline table {{ value = ..., source = \"...\" }} "
+                                  "with value {}",
+                                  where, key, describe_range(spec)));
+    for (const auto& [k, _] : *t)
+      if (k != "value" && k != "source")
+        throw UserError(fmt::format("{}: {} has unknown field '{}'; allowed: value, source", where, key, k.str()));
+    const auto* source = (*t)["source"].as_string();
+    if (!source || source->get().empty())
+      throw UserError(fmt::format("{}: {}.source must be a non-empty string naming where the value comes from", where, key));
+    v.source = source->get();
+    value = t->get("value");
+  }
   switch (spec.kind) {
     case ParamKind::Real:
-      if (auto d = value.value_exact<double>()) v.number = *d;
-      else if (auto i = value.value_exact<int64_t>()) v.number = static_cast<double>(*i);
+      if (auto d = value->value_exact<double>()) v.number = *d;
+      else if (auto i = value->value_exact<int64_t>()) v.number = static_cast<double>(*i);
       else throw UserError(fmt::format("{}: {} must be a number ({})", where, key, describe_range(spec)));
       break;
     case ParamKind::Integer:
-      if (auto i = value.value_exact<int64_t>()) v.number = static_cast<double>(*i);
+      if (auto i = value->value_exact<int64_t>()) v.number = static_cast<double>(*i);
       else throw UserError(fmt::format("{}: {} must be an integer ({})", where, key, describe_range(spec)));
       break;
     case ParamKind::Boolean:
-      if (auto b = value.value_exact<bool>()) v.number = *b ? 1.0 : 0.0;
+      if (auto b = value->value_exact<bool>()) v.number = *b ? 1.0 : 0.0;
       else throw UserError(fmt::format("{}: {} must be true or false", where, key));
       break;
     case ParamKind::Text:
-      if (auto s = value.value_exact<std::string>()) v.text = *s;
+      if (auto s = value->value_exact<std::string>()) v.text = *s;
       else throw UserError(fmt::format("{}: {} must be a string ({})", where, key, describe_range(spec)));
-      if (!spec.choices.empty()) {
-        bool ok = false;
-        for (const auto& c : spec.choices) ok = ok || c == v.text;
-        if (!ok) throw UserError(fmt::format("{}: {} = \"{}\" is not allowed; allowed: {}", where, key, v.text, describe_range(spec)));
-      }
+      check_choice(spec, v.text, where);
       break;
   }
   check_range(spec, v.number, where);
   return v;
 }
 
-}  // namespace
-
-ParamSet load_preset_file(const std::string& path) {
+std::string read_file(const std::string& path) {
   if (!fs::is_regular_file(path)) throw UserError(fmt::format("{}: cannot read preset file (not a regular file)", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(fmt::format("{}: cannot read preset file", path));
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw UserError(fmt::format("{}: cannot read preset file", path));
-  return load_preset_text(text.str(), path);
+  return text.str();
 }
 
-ParamSet load_preset_text(const std::string& text, const std::string& path) {
+// The file `base = "..."` names: a preset id, or a path relative to the inheriting file's folder.
+std::string resolve_base(const std::string& base, const std::string& file, const std::string& where) {
+  const bool looks_like_path = base.find('/') != std::string::npos ||
+                               (base.size() > 5 && base.compare(base.size() - 5, 5, ".toml") == 0);
+  if (!looks_like_path) {
+    try {
+      return resolve_preset(base);
+    } catch (const UserError& e) {
+      throw UserError(fmt::format("{}: base = \"{}\": {}", where, base, e.what()));
+    }
+  }
+  fs::path p(base);
+  if (p.is_relative()) p = fs::path(file).parent_path() / p;
+  std::error_code ec;
+  if (!fs::is_regular_file(p, ec))
+    throw UserError(fmt::format("{}: base = \"{}\": no such preset file ({})", where, base, p.string()));
+  return p.string();
+}
+
+ParamSet load_layer(const std::string& text, const std::string& path, std::vector<std::string>& chain);
+
+// The preset `base` names, loaded with the chain of files that inherit from it (a circle is
+// refused, naming the files).
+ParamSet load_base(const toml::node& base_node, const std::string& path, std::vector<std::string>& chain) {
+  const std::string where = where_of(path, base_node);
+  const auto* base = base_node.as_string();
+  if (!base || base->get().empty())
+    throw UserError(fmt::format("{}: base must be a preset id or a path to a preset file, as a string", where));
+  const std::string file = resolve_base(base->get(), path, where);
+  std::error_code ec;
+  const std::string canonical = fs::weakly_canonical(file, ec).string();
+  for (const auto& c : chain)
+    if (c == canonical) {
+      std::string circle;
+      for (const auto& x : chain) circle += x + " -> ";
+      throw UserError(fmt::format("{}: base = \"{}\" inherits in a circle: {}{}", where, base->get(), circle, canonical));
+    }
+  chain.push_back(canonical);
+  ParamSet set = load_layer(read_file(file), file, chain);
+  chain.pop_back();
+  return set;
+}
+
+std::string unknown_key_message(const std::string& where, const std::string& key, const std::string& section,
+                                const ParamSchema& schema) {
+  std::string allowed;
+  if (section == "sensor") allowed = "sensor.id";
+  for (const auto& p : schema.params)
+    if (p.key.rfind(section + ".", 0) == 0) allowed += (allowed.empty() ? "" : ", ") + p.key;
+  return fmt::format("{}: unknown key '{}' for sensor {}; allowed in [{}]: {}", where, key, schema.sensor_id, section,
+                     allowed.empty() ? "(no such section)" : allowed);
+}
+
+// One file of a preset: its base (if any) with this file's values laid over it. Every key must
+// be known; without a base every key must be present.
+ParamSet load_layer(const std::string& text, const std::string& path, std::vector<std::string>& chain) {
   toml::table root;
   try {
     root = toml::parse(text, path);
@@ -122,31 +180,33 @@ ParamSet load_preset_text(const std::string& text, const std::string& path) {
     throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
                                 e.source().begin.column, e.description()));
   }
+  std::optional<ParamSet> base;
+  if (const toml::node* b = root.get("base")) base = load_base(*b, path, chain);
   const auto* id = root["sensor"]["id"].as_string();
   if (!id && root["sensor"]["id"])
     throw UserError(fmt::format("{}: sensor.id must be a string; allowed: {}", where_of(path, *root["sensor"]["id"].node()),
                                 sensor_ids()));
-  if (!id) throw UserError(fmt::format("{}: missing key sensor.id; allowed: {}", path, sensor_ids()));
-  const ParamSchema& schema = schema_for(id->get(), path);
-  ParamSet set(path, id->get());
+  if (!id && !base) throw UserError(fmt::format("{}: missing key sensor.id; allowed: {} (or base = \"<preset>\")", path, sensor_ids()));
+  if (id && base && id->get() != base->sensor_id())
+    throw UserError(fmt::format("{}: sensor.id = \"{}\" differs from its base's sensor {}; allowed: {} or no sensor.id",
+                                where_of(path, *root["sensor"]["id"].node()), id->get(), base->sensor_id(), base->sensor_id()));
+  const std::string sensor = id ? id->get() : base->sensor_id();
+  const ParamSchema& schema = schema_for(sensor, path);
+  ParamSet set(path, sensor);
+  if (base) set.mutable_values() = base->values();
 
   for (const auto& [section_key, section_node] : root) {
     const std::string section = std::string(section_key.str());
+    if (section == "base") continue;
     const toml::table* section_table = section_node.as_table();
     if (!section_table)
-      throw UserError(fmt::format("{}: top-level key '{}' must be a [section]", where_of(path, section_node), section));
+      throw UserError(fmt::format("{}: top-level key '{}' must be a [section] (or base = \"<preset>\")",
+                                  where_of(path, section_node), section));
     for (const auto& [name_key, entry] : *section_table) {
       const std::string key = section + "." + std::string(name_key.str());
       if (key == "sensor.id") continue;
       const ParamSpec* spec = schema.find(key);
-      if (!spec) {
-        std::string allowed;
-        if (section == "sensor") allowed = "sensor.id";
-        for (const auto& p : schema.params)
-          if (p.key.rfind(section + ".", 0) == 0) allowed += (allowed.empty() ? "" : ", ") + p.key;
-        throw UserError(fmt::format("{}: unknown key '{}' for sensor {}; allowed in [{}]: {}", where_of(path, entry),
-                                    key, id->get(), section, allowed.empty() ? "(no such section)" : allowed));
-      }
+      if (!spec) throw UserError(unknown_key_message(where_of(path, entry), key, section, schema));
       set.mutable_values()[key] = read_value(path, key, entry, *spec);
     }
   }
@@ -154,6 +214,30 @@ ParamSet load_preset_text(const std::string& text, const std::string& path) {
     if (!set.has(spec.key))
       throw UserError(fmt::format("{}: missing key '{}' ({}; {})", path, spec.key, spec.description, describe_range(spec)));
   return set;
+}
+
+}  // namespace
+
+ParamSet load_preset_file(const std::string& path) { return load_preset_text(read_file(path), path); }
+
+ParamSet load_preset_text(const std::string& text, const std::string& path) {
+  std::vector<std::string> chain;
+  std::error_code ec;
+  chain.push_back(fs::weakly_canonical(path, ec).string());
+  ParamSet set = load_layer(text, path, chain);
+  validate_preset(set);
+  return set;
+}
+
+void validate_preset(const ParamSet& set) {
+  if (const SensorInfo* s = find_sensor(set.sensor_id())) s->validate(set);
+}
+
+void apply_settings(ParamSet& set, const std::vector<std::string>& assignments) {
+  if (assignments.empty()) return;
+  const ParamSchema& schema = schema_for(set.sensor_id(), set.origin());
+  for (const auto& a : assignments) set.set_from_text(a, "--set", schema);
+  validate_preset(set);
 }
 
 ParamSet load_preset(const std::string& id_or_path) { return load_preset_file(resolve_preset(id_or_path)); }

@@ -47,6 +47,7 @@ void progress(long long done, long long total, long long trials, double elapsed,
 // The command that continues this sweep: the same options with --resume.
 std::string resume_command(const EvaluateOptions& o, const std::string& dir) {
   std::string c = "rangesim evaluate " + shell_quote(o.sensor);
+  for (const auto& s : o.settings) c += " --set " + shell_quote(s);
   if (o.signal) c += " --signal " + shell_quote(*o.signal);
   if (o.background) c += " --background " + shell_quote(*o.background);
   if (o.samplings) c += fmt::format(" --samplings {}", *o.samplings);

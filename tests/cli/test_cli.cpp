@@ -234,3 +234,25 @@ TEST_F(Cli, UnknownFlag) {
 }
 
 }  // namespace
+
+// `--set KEY=VALUE` on show, evaluate and frame-rate, and a preset of a few lines that inherits.
+TEST_F(Cli, SetAndInheritReachEveryCommand) {
+  const CommandResult fr = rangesim("frame-rate ls-conventional --set timing.clock_Hz=78.9e6 --json");
+  ASSERT_EQ(fr.exit_code, 0) << fr.err;
+  EXPECT_NE(fr.out.find("\"frame_access_rate_Hz\": 789000.0"), std::string::npos) << fr.out;
+  const std::string user = tmp_ + "/fast.toml";
+  std::ofstream(user) << "base = \"ls-conventional\"\n[multisampling]\nsamplings = 1\n";
+  const CommandResult show = rangesim("show " + user + " --set timing.output_cycles=20");
+  ASSERT_EQ(show.exit_code, 0) << show.err;
+  EXPECT_NE(show.out.find("source: user\n"), std::string::npos) << show.out;
+  EXPECT_NE(show.out.find("source: command line --set (from command line)"), std::string::npos) << show.out;
+  EXPECT_NE(show.out.find("(from " + std::string(kPreset) + ")"), std::string::npos) << show.out;
+  const CommandResult ev = rangesim("evaluate " + user + " --set evaluation.signal_points=3 --set "
+                                    "evaluation.background_points=2 --no-plots --json --out " + tmp_ + "/ev");
+  ASSERT_EQ(ev.exit_code, 0) << ev.err;
+  EXPECT_NE(ev.out.find("\"points_total\": 6"), std::string::npos) << ev.out;
+  EXPECT_NE(ev.out.find("\"samplings\": 1"), std::string::npos) << ev.out;
+  expect_bad_input(rangesim("evaluate ls-conventional --set pixel.columns=1024 --out " + tmp_ + "/bad"),
+                   {"timing.address_bits = 9", "pixel.columns = 1024"}, tmp_ + "/bad");
+  expect_bad_input(rangesim("show ls-conventional --set spot.fwhm_px=200"), {"--set spot.fwhm_px=200", "(0, 100] px"});
+}

@@ -218,10 +218,16 @@ TEST(PresetErrors, OutOfRangeReal) {
 
 // ---- Malformed entries. ----
 
-TEST(PresetErrors, PlainValueWithoutValueAndSource) {
-  const std::string key = "source.duty_cycle";
+// A plain value is a user's edit (presets that inherit give only what they change): it loads, with
+// source "user"; an inline table needs both fields.
+TEST(PresetErrors, PlainValueIsAUserEditAndATableNeedsBothFields) {
   const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "duty_cycle", "0.1");
-  expect_load_error(e, {true, key, "", {"value", "source"}});
+  const ParamSet p = load_preset_text(e.text, "plain.toml");
+  EXPECT_DOUBLE_EQ(p.real("source.duty_cycle"), 0.1);
+  EXPECT_EQ(p.at("source.duty_cycle").source, "user");
+  EXPECT_EQ(p.at("source.duty_cycle").file, "plain.toml");
+  const Edit t = test::replace_rhs(preset_text("tof-lockin"), "source", "duty_cycle", "{ source = \"x\" }");
+  expect_load_error(t, {true, "source.duty_cycle", "", {"value", "source"}});
 }
 
 TEST(PresetErrors, MissingSource) {
@@ -335,9 +341,9 @@ TEST(PresetErrors, DirectoryGivenToLoadPresetFileCannotBeRead) {
   EXPECT_NE(msg.find("cannot read"), std::string::npos) << msg;
 }
 
-TEST(PresetErrors, PlainValueGivesTheRange) {
+TEST(PresetErrors, PlainValueOutOfRangeGivesTheRange) {
   const std::string key = "source.duty_cycle";
-  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "duty_cycle", "0.1");
+  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "duty_cycle", "0.9");
   expect_load_error(e, {true, key, range_of("tof-lockin", key), {}});
 }
 
