@@ -93,29 +93,14 @@ struct DemodOptics {
   // bilinear depth profile); -1 when the beam misses the map on this row.
   double range_m(long long b, int row) const {
     if (sc.depth_map_m.empty()) return sc.distance_m + sc.tilt_m_per_row * row;
+    using scene::row_depth_m;
     const int n = cfg.pixel.columns;
-    auto depth = [&](double c) {
-      const int c0 = std::max(0, std::min(n - 1, static_cast<int>(std::floor(c)))), c1 = std::min(n - 1, c0 + 1);
-      const double t = std::max(0.0, std::min(1.0, c - c0));
-      const std::size_t base = static_cast<std::size_t>(row) * sc.map_columns;
-      return (1 - t) * sc.depth_map_m[base + c0] + t * sc.depth_map_m[base + c1];
+    const double* z = sc.depth_map_m.data() + static_cast<std::size_t>(row) * sc.map_columns;
+    auto g = [&](double c) {
+      return c - (beam_column(b) + disparity_px(row_depth_m(z, n, c)) - disparity_px(cfg.optics.distance_m));
     };
-    auto g = [&](double c) { return c - (beam_column(b) + disparity_px(depth(c)) - disparity_px(cfg.optics.distance_m)); };
-    double prev = g(0);
-    if (prev == 0) return depth(0);
-    for (int c = 1; c < n; ++c) {
-      const double cur = g(c);
-      if ((prev < 0) != (cur < 0) || cur == 0) {
-        double lo = c - 1, hi = c;
-        for (int i = 0; i < 60; ++i) {
-          const double mid = 0.5 * (lo + hi);
-          if ((g(mid) < 0) == (prev < 0)) lo = mid; else hi = mid;
-        }
-        return depth(0.5 * (lo + hi));
-      }
-      prev = cur;
-    }
-    return -1;
+    const double c = scene::first_lit_column(n, g);
+    return c < 0 ? -1 : row_depth_m(z, n, c);
   }
   double centre_px(long long b, int row) const {
     const double z = range_m(b, row);

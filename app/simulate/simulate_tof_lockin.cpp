@@ -26,7 +26,7 @@
 #include "golden/common/evaluate_sensor.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "scene/scene.h"
-#include "scene/sensor_scenes.h"
+#include "systemc/tof_lockin/scene_adapter.h"
 #include "systemc/tof_lockin/lockin_scene.h"
 #include "systemc/tof_lockin/sensor.h"
 #include "golden/tof_lockin/model.h"
