@@ -1,0 +1,35 @@
+#include "systemc/common/simulation.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rangesim::systemc {
+
+double RangeErrorStats::rms_m() const { return detected ? std::sqrt(sum_sq_m / detected) : NAN; }
+double RangeErrorStats::rms_px() const { return detected ? std::sqrt(sum_sq_px / detected) : NAN; }
+double RangeErrorStats::mean_m() const { return detected ? sum_m / detected : NAN; }
+
+void RangeErrorStats::to_json(nlohmann::json& j, bool with_px) const {
+  j["range_error_rms_m"] = json_number(rms_m());
+  if (with_px) j["range_error_rms_px"] = json_number(rms_px());
+  j["range_error_mean_m"] = json_number(mean_m());
+  j["range_error_max_abs_m"] = detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr);
+}
+
+std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
+
+nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string range_map_csv(const RangeMap& map) {
+  std::string csv = "row";
+  for (const auto& name : map.column_names) csv += "," + name;
+  csv += "\n";
+  for (std::size_t r = 0; r < map.range_m.size(); ++r) {
+    csv += std::to_string(map.first_row + static_cast<long long>(r));
+    for (double v : map.range_m[r]) csv += "," + csv_number(v);
+    csv += "\n";
+  }
+  return csv;
+}
+
+}  // namespace rangesim::systemc
