@@ -16,6 +16,29 @@ void RangeErrorStats::to_json(nlohmann::json& j, bool with_px) const {
   j["range_error_max_abs_m"] = detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr);
 }
 
+void set_timing(SimulationReport& r, const golden::FrameTiming& gt, nlohmann::json phases, long long first_frame_cycles,
+                double frame_time_s, long long frames_per_range_map, bool matches) {
+  r.phases = std::move(phases);
+  r.frame_cycles = first_frame_cycles, r.golden_frame_cycles = gt.frame_cycles;
+  r.frame_time_s = frame_time_s, r.golden_frame_time_s = gt.frame_time_s;
+  r.frame_rate_Hz = 1.0 / frame_time_s, r.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
+  r.timing_matches = matches;
+  r.range_maps_per_s = r.frame_rate_Hz / static_cast<double>(frames_per_range_map);
+  r.frames_per_range_map = frames_per_range_map;
+}
+
+void add_timing_json(nlohmann::json& j, const SimulationReport& r, const golden::FrameTiming& gt) {
+  j["frame_time_s"] = r.frame_time_s;
+  j["frame_rate_Hz"] = r.frame_rate_Hz;
+  j["range_maps_per_s"] = r.range_maps_per_s;
+  j["phases"] = r.phases;
+  j["timing_matches_golden"] = r.timing_matches;
+  j["golden"] = {{"frame_cycles", gt.frame_cycles},
+                 {"frame_time_s", gt.frame_time_s},
+                 {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
+                 {"range_maps_per_s", gt.range_maps_per_s}};
+}
+
 std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
 
 nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "golden/common/frame_timing.h"
 #include "systemc/common/simulate_entry.h"
 
 namespace rangesim::systemc {
@@ -77,6 +78,16 @@ struct SimulationReport {
   double wall_time_s = 0;
   std::string wall_note;  // appended to the wall-time line
 };
+
+// The measured timing beside the golden clock schedule, the same for every sensor: `phases` as
+// in the report, the first frame's cycles, the mean frame time over the run (simulated time /
+// frames) and whether every frame took the golden cycle counts.
+void set_timing(SimulationReport& r, const golden::FrameTiming& gt, nlohmann::json phases, long long first_frame_cycles,
+                double frame_time_s, long long frames_per_range_map, bool matches);
+// The summary's timing keys from a report set_timing filled: frame_time_s, frame_rate_Hz,
+// range_maps_per_s, phases, timing_matches_golden and golden {frame_cycles, frame_time_s,
+// frame_access_rate_Hz, range_maps_per_s} (a sensor may add its own golden keys).
+void add_timing_json(nlohmann::json& j, const SimulationReport& r, const golden::FrameTiming& gt);
 
 // The range map: rows of ranges in m, NaN where a pixel (or beam position) has no valid range.
 struct RangeMap {

@@ -126,7 +126,6 @@ struct Run {
   const Reconstruction& rec;
   double wall_s;
   double frame_time_s() const { return res.simulated_time_s / static_cast<double>(res.frames.size()); }
-  double frame_rate_Hz() const { return 1.0 / frame_time_s(); }
 };
 
 nlohmann::json phases_json(const Run& run) {
@@ -140,7 +139,7 @@ nlohmann::json phases_json(const Run& run) {
   return phases;
 }
 
-nlohmann::json summary(const Run& run) {
+nlohmann::json summary(const Run& run, const SimulationReport& report) {
   const auto& [req, params, cfg, sc, res, gt, rec, wall_s] = run;
   nlohmann::json frame_cycles = nlohmann::json::array();
   for (const auto& fr : res.frames) frame_cycles.push_back(fr.cycles);
@@ -162,16 +161,6 @@ nlohmann::json summary(const Run& run) {
       {"cycles", res.cycles},
       {"frame_cycles", frame_cycles},
       {"simulated_time_s", res.simulated_time_s},
-      {"frame_time_s", run.frame_time_s()},
-      {"frame_rate_Hz", run.frame_rate_Hz()},
-      {"range_maps_per_s", run.frame_rate_Hz() / cfg.timing.beam_positions},
-      {"phases", phases_json(run)},
-      {"golden",
-       {{"frame_cycles", gt.frame_cycles},
-        {"frame_time_s", gt.frame_time_s},
-        {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
-        {"range_maps_per_s", gt.range_maps_per_s}}},
-      {"timing_matches_golden", rec.timing_matches},
       {"points_visible", rec.visible},
       {"points_detected", rec.detected},
       {"points_missed", rec.missed},
@@ -182,6 +171,7 @@ nlohmann::json summary(const Run& run) {
       {"simulated_cycles_per_s", res.cycles / res.wall_time_s},
       {"sc_errors", res.sc_errors},
   };
+  add_timing_json(j, report, gt);
   rec.err.to_json(j, true);
   return j;
 }
@@ -193,13 +183,9 @@ SimulationReport report(const Run& run) {
                            scene::shape_name(sc.shape), res.frames.size(), res.frames.size() == 1 ? "" : "es",
                            req.kernel_only ? "bare kernels" : "SystemC",
                            req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
-  r.phases = phases_json(run);
   r.frame_label = "frame access";
-  r.frame_cycles = res.frames.front().cycles, r.golden_frame_cycles = gt.frame_cycles;
-  r.frame_time_s = run.frame_time_s(), r.golden_frame_time_s = gt.frame_time_s;
-  r.frame_rate_Hz = run.frame_rate_Hz(), r.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
-  r.timing_matches = rec.timing_matches;
-  r.range_maps_per_s = run.frame_rate_Hz() / cfg.timing.beam_positions, r.frames_per_range_map = cfg.timing.beam_positions;
+  set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), cfg.timing.beam_positions,
+             rec.timing_matches);
   r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected, rec.missed,
                               rec.false_detections);
   r.error = rec.err, r.error_in_px = true;
@@ -223,8 +209,8 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   SimulationResult out;
   Reconstruction rec = reconstruct(res, optics, c.cfg.pixel.rows, gt);
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
-  out.summary = summary(run);
   out.report = report(run);
+  out.summary = summary(run, out.report);
   out.points_csv = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);

@@ -137,8 +137,6 @@ struct Run {
   const Reconstruction& rec;
   double wall_s;
   double frame_time_s() const { return res.simulated_time_s / static_cast<double>(res.frames.size()); }
-  double frame_rate_Hz() const { return 1.0 / frame_time_s(); }
-  double range_maps_per_s() const { return frame_rate_Hz() / static_cast<double>(gt.frames_per_range_map); }
 };
 
 nlohmann::json phases_json(const Run& run) {
@@ -152,7 +150,7 @@ nlohmann::json phases_json(const Run& run) {
   return phases;
 }
 
-nlohmann::json summary(const Run& run) {
+nlohmann::json summary(const Run& run, const SimulationReport& report) {
   const auto& [req, params, cfg, kopt, sc, res, gt, rec, wall_s] = run;
   nlohmann::json j = {
       {"sensor", params.sensor_id()},
@@ -171,17 +169,6 @@ nlohmann::json summary(const Run& run) {
       {"clock_Hz", cfg.readout.clock_Hz},
       {"cycles", res.cycles},
       {"simulated_time_s", res.simulated_time_s},
-      {"frame_time_s", run.frame_time_s()},
-      {"frame_rate_Hz", run.frame_rate_Hz()},
-      {"range_maps_per_s", run.range_maps_per_s()},
-      {"phases", phases_json(run)},
-      {"golden",
-       {{"frame_cycles", gt.frame_cycles},
-        {"frame_time_s", gt.frame_time_s},
-        {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
-        {"frames_per_range_map", gt.frames_per_range_map},
-        {"range_maps_per_s", gt.range_maps_per_s}}},
-      {"timing_matches_golden", rec.timing_matches},
       {"points_visible", rec.visible},
       {"points_detected", rec.detected},
       {"points_missed", rec.missed},
@@ -191,6 +178,8 @@ nlohmann::json summary(const Run& run) {
       {"simulated_cycles_per_s", res.cycles / res.wall_time_s},
       {"sc_errors", res.sc_errors},
   };
+  add_timing_json(j, report, gt);
+  j["golden"]["frames_per_range_map"] = gt.frames_per_range_map;
   rec.err.to_json(j, true);
   return j;
 }
@@ -202,14 +191,9 @@ SimulationReport report(const Run& run) {
                            res.frames.size() == 1 ? "" : "s", req.kernel_only ? "bare kernels" : "SystemC",
                            req.tick ? " (ticking)" : kopt.aggregate ? " (event skipping, periods aggregated)" : " (event skipping, period by period)",
                            req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
-  r.phases = phases_json(run);
   r.frame_label = "frame";
-  r.frame_cycles = res.frames.front().cycles, r.golden_frame_cycles = gt.frame_cycles;
-  r.frame_time_s = run.frame_time_s(), r.golden_frame_time_s = gt.frame_time_s;
-  r.frame_rate_Hz = run.frame_rate_Hz(), r.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
-  r.timing_matches = rec.timing_matches;
-  r.range_maps_per_s = run.range_maps_per_s();
-  r.frames_per_range_map = gt.frames_per_range_map;
+  set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), gt.frames_per_range_map,
+             rec.timing_matches);
   r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected, rec.missed, rec.false_det);
   r.error = rec.err, r.error_in_px = true;
   r.wall_time_s = wall_s;
@@ -232,8 +216,8 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
   SimulationResult out;
   Reconstruction rec = reconstruct(res, optics, cfg.pixel.rows, gt);
   const Run run{req, params, cfg, kopt, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
-  out.summary = summary(run);
   out.report = report(run);
+  out.summary = summary(run, out.report);
   out.points_csv = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);

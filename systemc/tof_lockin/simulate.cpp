@@ -206,11 +206,9 @@ struct Run {
   double wall_s;
   int R, C;
   double frame_time_s() const { return model.sim_time_s / static_cast<double>(frames); }
-  double frame_rate_Hz() const { return 1.0 / frame_time_s(); }
-  double range_maps_per_s() const { return frame_rate_Hz() / static_cast<double>(gt.frames_per_range_map); }
 };
 
-nlohmann::json summary(const Run& run) {
+nlohmann::json summary(const Run& run, const SimulationReport& report) {
   const auto& [req, params, cfg, kopt, sc, model, gt, rec, golden, timing, frames, wall_s, R, C] = run;
   const lk::TofLockinSensorKernel& k = *model.k;
   nlohmann::json j = {
@@ -239,18 +237,6 @@ nlohmann::json summary(const Run& run) {
       {"frame_cycles", timing.frame_cycles},
       {"events", k.events()},
       {"simulated_time_s", model.sim_time_s},
-      {"frame_time_s", run.frame_time_s()},
-      {"frame_rate_Hz", run.frame_rate_Hz()},
-      {"range_maps_per_s", run.range_maps_per_s()},
-      {"phases", phases_json(k, cfg, gt)},
-      {"golden",
-       {{"frame_cycles", gt.frame_cycles},
-        {"frame_time_s", gt.frame_time_s},
-        {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
-        {"range_maps_per_s", gt.range_maps_per_s},
-        {"accuracy_rms_m", json_number(golden.rms_m)},
-        {"points", golden.points}}},
-      {"timing_matches_golden", timing.matches},
       {"points_visible", rec.visible},
       {"points_detected", rec.detected},
       {"points_missed", rec.missed},
@@ -259,6 +245,9 @@ nlohmann::json summary(const Run& run) {
       {"simulated_cycles_per_s", static_cast<double>(timing.cycles_total) / model.sim_wall_s},
       {"sc_errors", model.sc_errors},
   };
+  add_timing_json(j, report, gt);
+  j["golden"]["accuracy_rms_m"] = json_number(golden.rms_m);
+  j["golden"]["points"] = golden.points;
   rec.err.to_json(j, false);
   return j;
 }
@@ -271,14 +260,9 @@ SimulationReport report(const Run& run) {
                            lk::shape_name(sc.shape), frames, frames == 1 ? "" : "s", maps, maps == 1 ? "" : "s", R, C,
                            req.kernel_only ? "bare kernels" : "SystemC",
                            req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
-  r.phases = phases_json(*model.k, cfg, gt);
   r.frame_label = "frame";
-  r.frame_cycles = timing.frame_cycles.front().get<long long>(), r.golden_frame_cycles = gt.frame_cycles;
-  r.frame_time_s = run.frame_time_s(), r.golden_frame_time_s = gt.frame_time_s;
-  r.frame_rate_Hz = run.frame_rate_Hz(), r.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
-  r.timing_matches = timing.matches;
-  r.range_maps_per_s = run.range_maps_per_s();
-  r.frames_per_range_map = gt.frames_per_range_map;
+  set_timing(r, gt, phases_json(*model.k, cfg, gt), timing.frame_cycles.front().get<long long>(), run.frame_time_s(),
+             gt.frames_per_range_map, timing.matches);
   r.points_line = fmt::format("pixel values {}, detected {}, missed {}", rec.visible, rec.detected, rec.missed);
   r.error = rec.err;
   r.error_note = fmt::format("(golden accuracy {:.3f} mm)", golden.rms_m * 1e3);
@@ -309,8 +293,8 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
   FrameTiming timing = frame_timing(*model.k, gt);
   const Run run{req, params, cfg, kopt, sc, model, gt, rec, golden, timing, frames,
                 std::chrono::duration<double>(Clock::now() - t_start).count(), R, C};
-  out.summary = summary(run);
   out.report = report(run);
+  out.summary = summary(run, out.report);
   out.frames_csv = std::move(timing.csv);
   out.range_map = std::move(rec.map);
   const long long maps = model.k->range_maps();

@@ -138,8 +138,6 @@ struct Run {
   const Reconstruction& rec;
   double sim_wall_s, wall_s;
   double frame_time_s() const { return res.simulated_time_s / static_cast<double>(res.frames.size()); }
-  double frame_rate_Hz() const { return 1.0 / frame_time_s(); }
-  double range_maps_per_s() const { return frame_rate_Hz() / static_cast<double>(gt.frames_per_range_map); }
 };
 
 nlohmann::json phases_json(const Run& run) {
@@ -168,7 +166,7 @@ void add_paths(const Run& run, nlohmann::json& j) {
                           {"blocker", run.kernel.background_blocker()}};
 }
 
-nlohmann::json summary(const Run& run) {
+nlohmann::json summary(const Run& run, const SimulationReport& report) {
   const auto& [req, params, kopt, kernel, sc, res, gt, rec, sim_wall_s, wall_s] = run;
   nlohmann::json j = {
       {"sensor", params.sensor_id()},
@@ -187,16 +185,6 @@ nlohmann::json summary(const Run& run) {
       {"clock_Hz", kernel.clock_Hz()},
       {"cycles", res.measured_cycles},
       {"simulated_time_s", res.simulated_time_s},
-      {"frame_time_s", run.frame_time_s()},
-      {"frame_rate_Hz", run.frame_rate_Hz()},
-      {"range_maps_per_s", run.range_maps_per_s()},
-      {"phases", phases_json(run)},
-      {"golden",
-       {{"frame_cycles", gt.frame_cycles},
-        {"frame_time_s", gt.frame_time_s},
-        {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
-        {"range_maps_per_s", gt.range_maps_per_s}}},
-      {"timing_matches_golden", rec.timing_matches},
       {"points", rec.points_total},
       {"points_detected", rec.detected},
       {"pixels_simulated", sc.rows * sc.columns},
@@ -207,6 +195,7 @@ nlohmann::json summary(const Run& run) {
       {"photons_per_s", static_cast<double>(rec.photons) / sim_wall_s},
       {"sc_errors", res.sc_errors},
   };
+  add_timing_json(j, report, gt);
   add_paths(run, j);
   rec.err.to_json(j, false);
   return j;
@@ -230,14 +219,9 @@ SimulationReport report(const Run& run) {
   r.headline = fmt::format("tof-spad on scene '{}' ({}): {} frame{}, {}, {}, window {} rows x {} columns", sc.name, sc.shape,
                            res.frames.size(), res.frames.size() == 1 ? "" : "s", req.kernel_only ? "bare kernels" : "SystemC",
                            req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed), sc.rows, sc.columns);
-  r.phases = phases_json(run);
   r.frame_label = "frame";
-  r.frame_cycles = res.frames.front().cycles, r.golden_frame_cycles = gt.frame_cycles;
-  r.frame_time_s = run.frame_time_s(), r.golden_frame_time_s = gt.frame_time_s;
-  r.frame_rate_Hz = run.frame_rate_Hz(), r.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
-  r.timing_matches = rec.timing_matches;
-  r.range_maps_per_s = run.range_maps_per_s();
-  r.frames_per_range_map = gt.frames_per_range_map;
+  set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), gt.frames_per_range_map,
+             rec.timing_matches);
   r.points_line = fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), rec.detected);
   if (rec.background_points > 0)
     r.points_line += fmt::format(" ({} of {} background-only points: spurious, not in the error)", rec.background_detections,
@@ -264,8 +248,8 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
   SimulationResult out;
   Reconstruction rec = reconstruct(res, sc, gt);
   const Run run{req, params, kopt, kernel, sc, res, gt, rec, sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
-  out.summary = summary(run);
   out.report = report(run);
+  out.summary = summary(run, out.report);
   out.points_csv = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
