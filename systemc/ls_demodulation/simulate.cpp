@@ -187,9 +187,12 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
 SimulationReport report(const Run& run) {
   const auto& [req, params, cfg, kopt, sc, res, gt, rec, wall_s] = run;
   SimulationReport r;
-  r.headline = fmt::format("{} on scene '{}' ({}): {} frame{}, {}{}, {}", params.sensor_id(), sc.name, sc.shape, res.frames.size(),
-                           res.frames.size() == 1 ? "" : "s", req.kernel_only ? "bare kernels" : "SystemC",
-                           req.tick ? " (ticking)" : kopt.aggregate ? " (event skipping, periods aggregated)" : " (event skipping, period by period)",
+  const char* path = req.tick          ? " (ticking)"
+                     : kopt.aggregate ? " (event skipping, periods aggregated)"
+                                      : " (event skipping, period by period)";
+  r.headline = fmt::format("{} on scene '{}' ({}): {} frame{}, {}{}, {}", params.sensor_id(), sc.name, sc.shape,
+                           res.frames.size(), res.frames.size() == 1 ? "" : "s",
+                           req.kernel_only ? "bare kernels" : "SystemC", path,
                            req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
   r.frame_label = "frame";
   set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), gt.frames_per_range_map,
