@@ -3,6 +3,8 @@
 // The run returns data, never files: the range map, the per-point and per-frame CSV text, the
 // summary as JSON and the figures the terminal summary prints; app/simulate/ renders every
 // sensor's result the same way (files, plot, trace, text or --json).
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -92,6 +94,8 @@ void add_timing_json(nlohmann::json& j, const SimulationReport& r, const golden:
 // The range map: rows of ranges in m, NaN where a pixel (or beam position) has no valid range.
 struct RangeMap {
   std::vector<std::vector<double>> range_m;
+  // A pixel's validity is carried by its value: a finite range (CSV and plot leave the others empty).
+  bool valid(std::size_t row, std::size_t column) const { return std::isfinite(range_m[row][column]); }
   std::vector<std::string> column_names;  // range_map.csv's columns after "row"
   int first_row = 0;                      // range_map.csv's label of range_m[0]
   std::string title, x_label, y_label = "row";  // range_map.png
