@@ -8,13 +8,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/montecarlo/mc_models.h"
 #include "app/montecarlo/mc_sweep.h"
 #include "core/preset.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "golden/common/row_model.h"
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/common/random_stream.h"
+#include "systemc/ls_conventional/montecarlo.h"
 
 namespace rangesim::app {
 
@@ -45,7 +45,7 @@ mc::McSweepResult timed_sweep(const mc::McModel& model, const std::vector<mc::Mc
 
 McBenchFigures measure_mc_bench(bool quick) {
   const LsConventionalConfig cfg = ls_conventional_from_params(load_preset("ls-conventional"));
-  const mc::LsConventionalMc model(cfg);
+  const rangesim::mc::LsConventionalMc model(cfg);
   // Detectable points along the signal axis at the preset's lowest background.
   std::vector<mc::McSweepPoint> points;
   const int n_points = quick ? 8 : 16;
@@ -94,7 +94,7 @@ McBenchFigures measure_mc_bench(bool quick) {
     const int first = row.centre_pixel - static_cast<int>(per_trial / 2);
     const std::uint64_t key = mc::point_key(opt.seed, static_cast<std::uint64_t>(points[p].index));
     for (long long t = 0; t < opt.trials; ++t) {
-      const double x0 = row.centre_pixel - 0.5 + mc::trial_uniform(key, static_cast<std::uint64_t>(t));
+      const double x0 = row.centre_pixel - 0.5 + rangesim::mc::trial_uniform(key, static_cast<std::uint64_t>(t));
       for (long long j = 0; j < per_trial; ++j) {
         const int col = first + static_cast<int>(j);
         pcg32 rng = systemc::pixel_stream(systemc::pixel_stream_key(key, static_cast<std::uint64_t>(t), 0,

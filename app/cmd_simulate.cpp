@@ -1,5 +1,6 @@
-// rangesim simulate: runs a sensor's clock-level model on a scene (app/simulate/simulate_<sensor>.cpp),
-// found through the simulate registry below; checks the flags that only some models take.
+// rangesim simulate: runs a sensor's clock-level model on a scene (systemc/<sensor>/simulate.cpp),
+// found through the simulate registry below, and renders the result (app/simulate/simulate_render);
+// checks the flags that only some models take.
 #include "app/cmd_simulate.h"
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include <systemc>
 
 #include "app/cli_common.h"
+#include "app/simulate/simulate_render.h"
 #include "core/preset.h"
 #include "core/sensor_list.h"
 #include "core/user_error.h"
@@ -24,16 +26,18 @@ RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
 #undef RANGESIM_DECLARE
 }  // namespace rangesim
 
-namespace rangesim::app {
-
-// Each shipped sensor's simulation and its knobs, defined in app/simulate/simulate_<sensor>.cpp.
+namespace rangesim::systemc {
+// Each shipped sensor's scene run and its knobs, defined in systemc/<sensor>/simulate.cpp.
 #define RANGESIM_DECLARE(s) const SimulateEntry& s##_simulate_entry();
 RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
 #undef RANGESIM_DECLARE
+}  // namespace rangesim::systemc
+
+namespace rangesim::app {
 
 std::vector<SimulateEntry>& simulate_registry() {
   static std::vector<SimulateEntry> list = {
-#define RANGESIM_ENTRY(s) s##_simulate_entry(),
+#define RANGESIM_ENTRY(s) systemc::s##_simulate_entry(),
       RANGESIM_FOR_EACH_SENSOR(RANGESIM_ENTRY)
 #undef RANGESIM_ENTRY
   };
@@ -75,7 +79,7 @@ int run_simulate(const SimulateOptions& opt) {
     throw UserError(fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
                                 "step; allowed with {} (or 0)",
                                 params.sensor_id(), allowed(&SimulateEntry::time_step)));
-  return entry->run(opt, params);
+  return run_and_render(opt, params, *entry);
 }
 
 }  // namespace rangesim::app

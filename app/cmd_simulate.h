@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "systemc/common/simulate_entry.h"
+
 namespace rangesim::app {
 
 struct SimulateOptions {
@@ -30,23 +32,10 @@ struct SimulateOptions {
 // sensor without a clock-level model.
 int run_simulate(const SimulateOptions& opt);
 
-}  // namespace rangesim::app
-
-namespace rangesim {
-class ParamSet;
-}
-
-namespace rangesim::app {
-
-// A sensor's clock-level simulation (app/simulate/simulate_<sensor>.cpp): `params` is the
-// validated preset with the command-line overrides applied.
-struct SimulateEntry {
-  std::string sensor;  // preset id
-  int (*run)(const SimulateOptions& opt, const ParamSet& params);
-  bool aggregation;  // has an aggregated path that --no-aggregate switches off
-  bool time_step;    // has a continuous-time integration that --time-step coarsens
-};
-// The shipped sensors' simulations (core/sensor_list.h), then any added at run time.
+// A sensor's clock-level scene run and its knobs (systemc/common/simulate_entry.h), defined in
+// systemc/<sensor>/simulate.cpp; app/simulate/simulate_render.cpp runs and renders it.
+using SimulateEntry = systemc::SimulateEntry;
+// The shipped sensors' scene runs (core/sensor_list.h), then any added at run time.
 std::vector<SimulateEntry>& simulate_registry();
 
 }  // namespace rangesim::app

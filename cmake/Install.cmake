@@ -1,6 +1,7 @@
 # Install rules and the exported CMake package `rangesim`:
 #   find_package(rangesim REQUIRED)
 #   target_link_libraries(app PRIVATE rangesim::golden rangesim::systemc rangesim::rtl)
+# (rangesim::systemc links rangesim::scene, the scene reader its scene adapters use.)
 # Headers install under include/rangesim/<folder>/ and are included as "core/...",
 # "golden/...", "systemc/..." (install interface include dir: include/rangesim). Verilated
 # headers go to include/rangesim/rtl/ (included by bare name, e.g. "Vaddress_search.h", since
@@ -14,7 +15,7 @@ set(RANGESIM_INSTALL_INCLUDEDIR "${CMAKE_INSTALL_INCLUDEDIR}/rangesim")
 # Libraries: whichever of them this configuration builds (golden and rtl are optional here so
 # a partial tree still installs).
 set(_rangesim_export_targets)
-foreach(_t rangesim_core rangesim_golden rangesim_systemc rangesim_rtl)
+foreach(_t rangesim_core rangesim_golden rangesim_scene rangesim_systemc rangesim_rtl)
   if(TARGET ${_t})
     list(APPEND _rangesim_export_targets ${_t})
   endif()
@@ -31,7 +32,7 @@ if(TARGET rangesim)
 endif()
 
 # Public headers, folder by folder.
-foreach(_dir core golden systemc)
+foreach(_dir core golden scene systemc)
   if(IS_DIRECTORY "${PROJECT_SOURCE_DIR}/${_dir}")
     install(DIRECTORY "${PROJECT_SOURCE_DIR}/${_dir}/"
       DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/${_dir}"

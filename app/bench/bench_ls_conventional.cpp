@@ -10,7 +10,7 @@
 #include "golden/common/frame_timing.h"
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
-#include "scene/optics.h"
+#include "systemc/ls_conventional/scene_optics.h"
 #include "scene/scene.h"
 #include "systemc/ls_conventional/sensor.h"
 #ifdef RANGESIM_BENCH_WITH_RTL

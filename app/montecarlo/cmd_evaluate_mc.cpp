@@ -15,7 +15,7 @@
 #include "app/commands.h"
 #include "app/evaluate_params.h"
 #include "app/evaluation_output.h"
-#include "app/montecarlo/mc_model.h"
+#include "systemc/common/montecarlo.h"
 #include "app/montecarlo/mc_output.h"
 #include "app/montecarlo/mc_stuck_hook.h"
 #include "app/montecarlo/mc_sweep.h"
@@ -105,7 +105,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   // Validate everything before computing or touching the output directory.
   const ParamSet params = evaluate_params(opt);
   mc::McSweepOptions sopt = sweep_options(opt);
-  const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(mc::make_mc_model(params), sopt.seed);
+  const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(rangesim::mc::make_mc_model(params), sopt.seed);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
   OutputDir out(dir, "--out");
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "app/montecarlo/mc_model.h"
+#include "app/montecarlo/mc_sweep.h"
 
 namespace rangesim::app::mc {
 

@@ -12,11 +12,17 @@
 #include <optional>
 #include <vector>
 
-#include "app/montecarlo/mc_model.h"
 #include "app/montecarlo/mc_stats.h"
 #include "app/sweep_journal.h"
+#include "systemc/common/montecarlo.h"
 
 namespace rangesim::app::mc {
+
+// The trial models are the sensors' own (systemc/<sensor>/montecarlo.h); the sweep only runs them.
+using rangesim::mc::McModel;
+using rangesim::mc::McPointRunner;
+using rangesim::mc::McTrial;
+using rangesim::mc::point_key;
 
 struct McSweepPoint {
   long long index = 0;  // grid index (row-major, as EvalResult::points): keys the random streams

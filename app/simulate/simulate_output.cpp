@@ -8,22 +8,6 @@
 
 namespace rangesim::app {
 
-std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
-
-nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-std::string range_map_csv(const std::vector<std::vector<double>>& map, const std::vector<std::string>& column_names) {
-  std::string csv = "row";
-  for (const auto& name : column_names) csv += "," + name;
-  csv += "\n";
-  for (std::size_t r = 0; r < map.size(); ++r) {
-    csv += std::to_string(r);
-    for (double v : map[r]) csv += "," + csv_number(v);
-    csv += "\n";
-  }
-  return csv;
-}
-
 std::string render_range_map(OutputDir& out, const std::vector<std::vector<double>>& map, const std::string& title,
                              const std::string& x_label, const std::string& y_label) {
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)

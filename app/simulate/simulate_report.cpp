@@ -3,9 +3,6 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "app/cli_common.h"
-#include "app/cmd_simulate.h"
-#include "app/simulate/simulate_output.h"
 
 namespace rangesim::app {
 
@@ -22,17 +19,6 @@ void Progress::operator()(long long done) {
   std::fflush(to_);
   last_ = now;
   ++reports_;
-}
-
-double RangeErrorStats::rms_m() const { return detected ? std::sqrt(sum_sq_m / detected) : NAN; }
-double RangeErrorStats::rms_px() const { return detected ? std::sqrt(sum_sq_px / detected) : NAN; }
-double RangeErrorStats::mean_m() const { return detected ? sum_m / detected : NAN; }
-
-void RangeErrorStats::to_json(nlohmann::json& j, bool with_px) const {
-  j["range_error_rms_m"] = json_number(rms_m());
-  if (with_px) j["range_error_rms_px"] = json_number(rms_px());
-  j["range_error_mean_m"] = json_number(mean_m());
-  j["range_error_max_abs_m"] = detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr);
 }
 
 namespace {
@@ -52,7 +38,7 @@ std::string rate_text(double hz) {
 
 }  // namespace
 
-void print_summary(const SimulateSummary& s, std::FILE* to) {
+void print_summary(const systemc::SimulationReport& s, std::FILE* to) {
   fmt::print(to, "{}\n\n", s.headline);
   const auto [scale, unit] = time_unit(s.golden_frame_time_s);
   fmt::print(to, "  {:<18} {:>10} {:>10} {:>14}\n", "phase", "cycles", "golden", "time");
@@ -72,25 +58,6 @@ void print_summary(const SimulateSummary& s, std::FILE* to) {
                s.error.mean_m() * 1e3, s.error.max_abs_m * 1e3, s.error_note.empty() ? "" : " " + s.error_note);
   }
   fmt::print(to, "  wall time        {:.2f} s{}\n\n", s.wall_time_s, s.wall_note.empty() ? "" : ", " + s.wall_note);
-}
-
-int finish_simulate(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace, nlohmann::json& j,
-                    const std::string& plot_warning, const SimulateSummary& summary) {
-  if (!plot_warning.empty()) j["warnings"] = {plot_warning};
-  if (trace.enabled()) j["trace"] = opt.trace;
-  out.write("summary.json", j.dump(2) + "\n");
-  trace.finish();  // may throw: the output folder is still staged
-  const std::vector<std::string> written = out.commit();
-  const std::string trace_file = trace.commit();
-  if (opt.json) {
-    fmt::print("{}\n", j.dump(2));
-    return kExitOk;
-  }
-  if (!plot_warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", plot_warning);
-  print_summary(summary);
-  for (const auto& w : written) fmt::print("  wrote {}\n", w);
-  if (!trace_file.empty()) fmt::print("  wrote {}\n", trace_file);
-  return kExitOk;
 }
 
 }  // namespace rangesim::app

@@ -1,7 +1,7 @@
 #pragma once
 // Scene of the tof-lockin clock-level model, as the pixels see it: the target depth per pixel
 // and the light (docs/tof-lockin-clock.md). Read from a scene file by scene::load_scene and
-// scene::to_lockin_scene (scene/sensor_scenes.h); this struct only turns it into stimulus.
+// scene::to_lockin_scene (systemc/tof_lockin/scene_adapter.h); this struct only turns it into stimulus.
 #include <string>
 #include <vector>
 

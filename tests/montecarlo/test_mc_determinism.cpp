@@ -5,14 +5,16 @@
 #include <algorithm>
 #include <random>
 
-#include "app/montecarlo/mc_models.h"
 #include "app/montecarlo/mc_sweep.h"
 #include "core/preset.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "run_command.h"
+#include "systemc/ls_conventional/montecarlo.h"
 
 namespace rangesim::app::mc {
 namespace {
+
+using namespace rangesim::mc;  // the sensors' trial models (systemc/<sensor>/montecarlo.h)
 
 std::vector<McSweepPoint> grid(const LsConventionalConfig& cfg) {
   std::vector<McSweepPoint> pts;

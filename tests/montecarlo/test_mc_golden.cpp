@@ -10,7 +10,6 @@
 
 #include <cmath>
 
-#include "app/montecarlo/mc_models.h"
 #include "app/montecarlo/mc_stats.h"
 #include "core/physics.h"
 #include "core/preset.h"
@@ -20,9 +19,15 @@
 #include "golden/common/row_model.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_spad/point_model.h"
+#include "systemc/ls_conventional/montecarlo.h"
+#include "systemc/ls_demodulation/montecarlo.h"
+#include "systemc/tof_lockin/montecarlo.h"
+#include "systemc/tof_spad/montecarlo.h"
 
 namespace rangesim::app::mc {
 namespace {
+
+using namespace rangesim::mc;  // the sensors' trial models (systemc/<sensor>/montecarlo.h)
 
 McPointStats run(const McModel& m, double signal, double background, long long trials, std::uint64_t index = 0) {
   auto runner = m.point(signal, background, point_key(1, index));

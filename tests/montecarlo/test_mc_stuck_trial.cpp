@@ -9,14 +9,16 @@
 #include <chrono>
 #include <thread>
 
-#include "app/montecarlo/mc_models.h"
 #include "app/montecarlo/mc_sweep.h"
 #include "core/preset.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "run_command.h"
+#include "systemc/ls_conventional/montecarlo.h"
 
 namespace rangesim::app::mc {
 namespace {
+
+using namespace rangesim::mc;  // the sensors' trial models (systemc/<sensor>/montecarlo.h)
 
 // Raises `stop` (as Ctrl-C would) and then never returns; touches nothing else afterwards, so the
 // abandoned thread may outlive the sweep safely.

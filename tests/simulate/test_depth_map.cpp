@@ -16,7 +16,7 @@
 #include "core/preset.h"
 #include "core/user_error.h"
 #include "scene/depth_map.h"
-#include "scene/optics.h"
+#include "systemc/ls_conventional/scene_optics.h"
 #include "scene/scene.h"
 
 namespace fs = std::filesystem;

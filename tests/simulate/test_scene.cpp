@@ -13,7 +13,7 @@
 #include "golden/ls_conventional/multisampling.h"
 #include "golden/common/row_model.h"
 #include "golden/common/triangulation.h"
-#include "scene/optics.h"
+#include "systemc/ls_conventional/scene_optics.h"
 #include "scene/scene.h"
 #include "systemc/ls_conventional/sensor.h"
 

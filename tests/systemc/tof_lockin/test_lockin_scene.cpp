@@ -8,7 +8,7 @@
 #include "core/user_error.h"
 #include "lockin_sc_test_util.h"
 #include "scene/scene.h"
-#include "scene/sensor_scenes.h"
+#include "systemc/tof_lockin/scene_adapter.h"
 #include "systemc/tof_lockin/lockin_scene.h"
 
 namespace rangesim::systemc::lockin {

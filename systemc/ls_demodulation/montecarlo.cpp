@@ -1,12 +1,12 @@
 // Monte Carlo trials of ls-demodulation on the sensor kernel (one row).
 #include <cmath>
 
-#include "app/montecarlo/mc_models.h"
+#include "systemc/ls_demodulation/montecarlo.h"
 #include "golden/ls_demodulation/position.h"
 #include "golden/common/spot.h"
 #include "systemc/ls_demodulation/sensor_kernel.h"
 
-namespace rangesim::app::mc {
+namespace rangesim::mc {
 
 namespace {
 
@@ -68,4 +68,4 @@ std::unique_ptr<McPointRunner> LsDemodulationMc::point(double signal_A, double b
 
 std::unique_ptr<McModel> make_ls_demodulation_mc(const ParamSet& params) { return std::make_unique<LsDemodulationMc>(ls_demodulation_from_params(params)); }
 
-}  // namespace rangesim::app::mc
+}  // namespace rangesim::mc

@@ -1,8 +1,7 @@
-#include "app/montecarlo/mc_model.h"
+#include "systemc/common/montecarlo.h"
 
 #include <stdexcept>
 
-#include "app/montecarlo/mc_models.h"
 #include "core/sensor_list.h"
 #include "core/sensor_registry.h"
 #include "systemc/common/random_stream.h"
@@ -14,9 +13,9 @@ RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
 #undef RANGESIM_DECLARE
 }  // namespace rangesim
 
-namespace rangesim::app::mc {
+namespace rangesim::mc {
 
-// Each shipped sensor's model, defined in mc_<sensor>.cpp.
+// Each shipped sensor's model, defined in systemc/<sensor>/montecarlo.cpp.
 #define RANGESIM_DECLARE(s) std::unique_ptr<McModel> make_##s##_mc(const ParamSet& params);
 RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
 #undef RANGESIM_DECLARE
@@ -53,4 +52,4 @@ std::unique_ptr<McModel> make_mc_model(const ParamSet& params) {
 
 void register_mc_model(const std::string& sensor_id, McFactory make) { mc_registry().emplace_back(sensor_id, make); }
 
-}  // namespace rangesim::app::mc
+}  // namespace rangesim::mc

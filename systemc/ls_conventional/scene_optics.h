@@ -1,4 +1,5 @@
 #pragma once
+// ls-conventional's scene adapter (beside the sensor; scene/ is only the reader).
 // Optics of a scene: from the target and the sheet beam to the per-row stimulus of the pixel
 // array (spot-peak and background swings at the end of integration, V = I t / C, and the spot
 // centre), and the exact ground truth of every (beam position, row).

@@ -1,4 +1,4 @@
-#include "scene/sensor_scenes.h"
+#include "systemc/tof_lockin/scene_adapter.h"
 
 #include <fmt/format.h>
 

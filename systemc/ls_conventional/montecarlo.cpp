@@ -4,12 +4,12 @@
 
 #include <fmt/format.h>
 
-#include "app/montecarlo/mc_models.h"
+#include "systemc/ls_conventional/montecarlo.h"
 #include "core/user_error.h"
 #include "golden/common/triangulation.h"
 #include "systemc/ls_conventional/sensor_kernel.h"
 
-namespace rangesim::app::mc {
+namespace rangesim::mc {
 
 namespace {
 
@@ -91,4 +91,4 @@ std::unique_ptr<McPointRunner> LsConventionalMc::point(double signal_V, double b
 
 std::unique_ptr<McModel> make_ls_conventional_mc(const ParamSet& params) { return std::make_unique<LsConventionalMc>(ls_conventional_from_params(params)); }
 
-}  // namespace rangesim::app::mc
+}  // namespace rangesim::mc

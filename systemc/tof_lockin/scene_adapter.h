@@ -1,6 +1,7 @@
 #pragma once
-// From the one scene (scene.h) to what each ToF sensor's model consumes: a per-pixel depth,
-// taken from the target geometry or the depth map resampled to the sensor's pixel grid.
+// tof-lockin's scene adapter: from the one scene (scene/scene.h) to what the lock-in model
+// consumes, a per-pixel depth taken from the target geometry or the depth map resampled to the
+// sensor's pixel grid, and the light. Kept beside the sensor so scene/ stays one reader.
 #include "core/tof_lockin/config.h"
 #include "scene/scene.h"
 #include "systemc/tof_lockin/lockin_scene.h"

@@ -1,11 +1,11 @@
 // Monte Carlo trials of tof-lockin on the sensor kernel (one pixel, one kernel run per trial).
 #include <cmath>
 
-#include "app/montecarlo/mc_models.h"
+#include "systemc/tof_lockin/montecarlo.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "systemc/tof_lockin/lockin_kernel.h"
 
-namespace rangesim::app::mc {
+namespace rangesim::mc {
 
 namespace {
 
@@ -54,4 +54,4 @@ std::unique_ptr<McPointRunner> TofLockinMc::point(double signal_A, double backgr
 
 std::unique_ptr<McModel> make_tof_lockin_mc(const ParamSet& params) { return std::make_unique<TofLockinMc>(tof_lockin_from_params(params)); }
 
-}  // namespace rangesim::app::mc
+}  // namespace rangesim::mc

@@ -1,11 +1,11 @@
 // Monte Carlo trials of tof-spad on the event-driven kernel (one TDC group, column 0).
 #include <cmath>
 
-#include "app/montecarlo/mc_models.h"
+#include "systemc/tof_spad/montecarlo.h"
 #include "core/physics.h"
 #include "systemc/tof_spad/sensor_kernel.h"
 
-namespace rangesim::app::mc {
+namespace rangesim::mc {
 
 namespace {
 
@@ -52,4 +52,4 @@ std::unique_ptr<McPointRunner> TofSpadMc::point(double signal_Hz, double backgro
 
 std::unique_ptr<McModel> make_tof_spad_mc(const ParamSet& params) { return std::make_unique<TofSpadMc>(tof_spad_from_params(params)); }
 
-}  // namespace rangesim::app::mc
+}  // namespace rangesim::mc

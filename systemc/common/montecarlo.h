@@ -1,6 +1,8 @@
 #pragma once
 // Monte Carlo trials of one sensor's clock-level kernels (not the sc_modules) at an operating
-// point of the evaluation grid: what `rangesim evaluate --trials` runs. One trial is one range
+// point of the evaluation grid: what `rangesim evaluate --trials` runs. The interface and its
+// registry live here, each sensor's model in systemc/<sensor>/montecarlo.{h,cpp} (beside the
+// kernels it drives); the sweep engine, statistics and output stay in app/montecarlo/. One trial is one range
 // value as the sensor delivers it (ls-conventional: one frame access of a row, spot centre drawn
 // uniformly across one pixel; ls-demodulation: N_p frames of K decisions averaged, spot likewise;
 // tof-lockin: N_p range maps (LED + ambient frames) averaged; tof-spad: one histogram of N_p
@@ -9,12 +11,13 @@
 // Random streams are keyed by (seed, grid point, trial) only (systemc/random_stream.h): a trial's
 // result never depends on which thread runs it or when.
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "core/params.h"
 
-namespace rangesim::app::mc {
+namespace rangesim::mc {
 
 struct McTrial {
   bool detected = false;  // the sensor reported a range / position
@@ -47,10 +50,19 @@ std::uint64_t trial_key(std::uint64_t point_key, std::uint64_t trial);
 // Uniform in [0, 1) of a trial (spot position), from its own stream.
 double trial_uniform(std::uint64_t point_key, std::uint64_t trial);
 
-// The model of the preset's sensor (each sensor's from its mc_<sensor>.cpp, or registered);
+// Where the spot sits in a light-section trial (ls-conventional, ls-demodulation): centre pixel
+// c = columns / 2 (as the golden row model), x0 = c - 0.5 + u with u uniform per trial (the
+// golden accuracy's average over one pixel), or u fixed (tests comparing with the golden moments
+// at one position).
+struct SpotPlacement {
+  double fixed_u = std::numeric_limits<double>::quiet_NaN();  // NaN: uniform per trial
+};
+
+// The model of the preset's sensor (each sensor's make_<s>_mc from systemc/<s>/montecarlo.cpp,
+// listed by core/sensor_list.h, or one registered at run time);
 // throws std::logic_error for a sensor without one.
 std::unique_ptr<McModel> make_mc_model(const ParamSet& params);
 using McFactory = std::unique_ptr<McModel> (*)(const ParamSet& params);
 void register_mc_model(const std::string& sensor_id, McFactory make);
 
-}  // namespace rangesim::app::mc
+}  // namespace rangesim::mc

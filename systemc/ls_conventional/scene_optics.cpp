@@ -1,4 +1,4 @@
-#include "scene/optics.h"
+#include "systemc/ls_conventional/scene_optics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,35 +86,14 @@ RowTruth SceneOptics::truth(int b, int row) const {
 }
 
 double SceneOptics::depth_map_z(int b, int row) const {
-  // The lit point is where the row's depth profile D(c) (bilinear between pixel centres) meets
-  // the beam: g(c) = c - centre(D(c)) = 0. Scan the columns for the first sign change, then
-  // bisect on the linear piece. No crossing: the beam misses the map on this row.
+  // The lit point is where the row's depth profile meets the beam (scene/depth_map.h).
   const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m, p = config_.pixel.pitch_m;
   const double cot = cot_beam(b);
   const int n = columns();
-  auto depth = [&](double c) {
-    const int c0 = std::max(0, std::min(n - 1, static_cast<int>(std::floor(c))));
-    const int c1 = std::min(n - 1, c0 + 1);
-    const double t = std::max(0.0, std::min(1.0, c - c0));
-    const double* z = depth_grid_m_.data() + static_cast<std::size_t>(row) * n;
-    return (1 - t) * z[c0] + t * z[c1];
-  };
-  auto g = [&](double c) { return c - ((f * d / depth(c) - f * cot) / p + principal_column_px()); };
-  double prev = g(0);
-  if (prev == 0) return depth(0);
-  for (int c = 1; c < n; ++c) {
-    const double cur = g(c);
-    if ((prev < 0) != (cur < 0) || cur == 0) {
-      double lo = c - 1, hi = c;
-      for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        if ((g(mid) < 0) == (prev < 0)) lo = mid; else hi = mid;
-      }
-      return depth(0.5 * (lo + hi));
-    }
-    prev = cur;
-  }
-  return -1;
+  const double* z = depth_grid_m_.data() + static_cast<std::size_t>(row) * n;
+  auto g = [&](double c) { return c - ((f * d / row_depth_m(z, n, c) - f * cot) / p + principal_column_px()); };
+  const double c = first_lit_column(n, g);
+  return c < 0 ? -1 : row_depth_m(z, n, c);
 }
 
 void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) const {

@@ -1,0 +1,58 @@
+#include "systemc/common/simulation.h"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace rangesim::systemc {
+
+double RangeErrorStats::rms_m() const { return detected ? std::sqrt(sum_sq_m / detected) : NAN; }
+double RangeErrorStats::rms_px() const { return detected ? std::sqrt(sum_sq_px / detected) : NAN; }
+double RangeErrorStats::mean_m() const { return detected ? sum_m / detected : NAN; }
+
+void RangeErrorStats::to_json(nlohmann::json& j, bool with_px) const {
+  j["range_error_rms_m"] = json_number(rms_m());
+  if (with_px) j["range_error_rms_px"] = json_number(rms_px());
+  j["range_error_mean_m"] = json_number(mean_m());
+  j["range_error_max_abs_m"] = detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr);
+}
+
+void set_timing(SimulationReport& r, const golden::FrameTiming& gt, nlohmann::json phases, long long first_frame_cycles,
+                double frame_time_s, long long frames_per_range_map, bool matches) {
+  r.phases = std::move(phases);
+  r.frame_cycles = first_frame_cycles, r.golden_frame_cycles = gt.frame_cycles;
+  r.frame_time_s = frame_time_s, r.golden_frame_time_s = gt.frame_time_s;
+  r.frame_rate_Hz = 1.0 / frame_time_s, r.golden_frame_rate_Hz = gt.frame_access_rate_Hz;
+  r.timing_matches = matches;
+  r.range_maps_per_s = r.frame_rate_Hz / static_cast<double>(frames_per_range_map);
+  r.frames_per_range_map = frames_per_range_map;
+}
+
+void add_timing_json(nlohmann::json& j, const SimulationReport& r, const golden::FrameTiming& gt) {
+  j["frame_time_s"] = r.frame_time_s;
+  j["frame_rate_Hz"] = r.frame_rate_Hz;
+  j["range_maps_per_s"] = r.range_maps_per_s;
+  j["phases"] = r.phases;
+  j["timing_matches_golden"] = r.timing_matches;
+  j["golden"] = {{"frame_cycles", gt.frame_cycles},
+                 {"frame_time_s", gt.frame_time_s},
+                 {"frame_access_rate_Hz", gt.frame_access_rate_Hz},
+                 {"range_maps_per_s", gt.range_maps_per_s}};
+}
+
+std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
+
+nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string range_map_csv(const RangeMap& map) {
+  std::string csv = "row";
+  for (const auto& name : map.column_names) csv += "," + name;
+  csv += "\n";
+  for (std::size_t r = 0; r < map.range_m.size(); ++r) {
+    csv += std::to_string(map.first_row + static_cast<long long>(r));
+    for (double v : map.range_m[r]) csv += "," + csv_number(v);
+    csv += "\n";
+  }
+  return csv;
+}
+
+}  // namespace rangesim::systemc

@@ -1,0 +1,229 @@
+#include "systemc/ls_conventional/simulate.h"
+
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <stdexcept>
+
+#include "core/ls_conventional/config.h"
+#include "core/params.h"
+#include "core/user_error.h"
+#include "golden/ls_conventional/frame_timing.h"
+#include "scene/scene.h"
+#include "systemc/ls_conventional/scene_optics.h"
+#include "systemc/ls_conventional/sensor.h"
+
+namespace rangesim::systemc {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The preset and the flags, checked in the order the command has always reported them.
+struct Checked {
+  LsConventionalConfig cfg;
+  long long frames = 0;  // frame accesses
+};
+
+Checked check(const SimulationRequest& req, const ParamSet& params) {
+  Checked c{ls_conventional_from_params(params), 0};
+  if (c.cfg.comparator.adc_bits != 1)
+    throw UserError(fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
+                                params.origin(), c.cfg.comparator.adc_bits));
+  if (req.scene.empty()) throw UserError("--scene is required: a scene file, e.g. scenes/plane.toml");
+  c.frames = req.frames ? *req.frames : c.cfg.timing.beam_positions;
+  if (c.frames < 1 || c.frames > 1000000)
+    throw UserError(fmt::format("--frames {}: allowed 1 <= N <= 1000000 (frame accesses; a range map is {})", c.frames,
+                                c.cfg.timing.beam_positions));
+  return c;
+}
+
+SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConfig& cfg, const scene::SceneOptics& optics,
+                          long long frames, const std::string& vcd_base, SimulationHost& host) {
+  SensorKernelOptions kopt;
+  kopt.event_skipping = !req.tick;
+  kopt.pixel.seed = req.seed;
+  kopt.pixel.sparse = !req.dense;
+  if (req.noise_free) kopt.pixel.noise = PixelNoiseConfig::none();
+  SensorRunOptions run;
+  run.frames = frames;
+  run.vcd_base = vcd_base;
+  for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
+  run.progress = host.progress("frame access", frames);
+  const StimulusSource source = [&optics](std::uint64_t f, FrameStimulus& s) { optics.stimulus(f, s); };
+  SensorRunResult res = req.kernel_only ? run_sensor_kernel(cfg, kopt, source, run) : run_sensor_systemc(cfg, kopt, source, run);
+  if (!res.errors.empty() || res.sc_errors > 0)
+    throw std::runtime_error(fmt::format("the model reported {} error(s): {}", res.errors.size() + res.sc_errors,
+                                         res.errors.empty() ? "see the SystemC messages above" : res.errors.front()));
+  return res;
+}
+
+// The range map, points.csv and frames.csv, and the counts against the ground truth.
+struct Reconstruction {
+  RangeMap map;
+  std::string points, frames_csv;
+  long long visible = 0, detected = 0, missed = 0, false_detections = 0;
+  RangeErrorStats err;
+  bool timing_matches = true;
+};
+
+// One row of one frame access: the range, its error against the truth, its points.csv line.
+void add_point(Reconstruction& out, const scene::SceneOptics& optics, const FrameResult& fr, int b, int r, std::size_t f) {
+  const scene::RowTruth t = optics.truth(b, r);
+  const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
+  double range = NAN, err_px = NAN, err_m = NAN;
+  if (p.valid) {
+    range = optics.range_from_centre_m(b, p.centre_px());
+    out.map.range_m[static_cast<std::size_t>(r)][f] = range;
+  }
+  if (t.visible) {
+    ++out.visible;
+    if (p.valid) {
+      ++out.detected;
+      err_px = p.centre_px() - t.centre_px;
+      err_m = range - t.range_m;
+      out.err.add(err_m, err_px);
+    } else {
+      ++out.missed;
+    }
+  } else if (p.valid) {
+    ++out.false_detections;
+  }
+  if (t.visible || p.valid)
+    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
+                              t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
+                              p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
+}
+
+Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics, int rows, const golden::FrameTiming& gt) {
+  Reconstruction out;
+  out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
+  out.points = "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
+  out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
+  for (std::size_t f = 0; f < res.frames.size(); ++f) {
+    const FrameResult& fr = res.frames[f];
+    const int b = optics.beam_position(fr.frame);
+    out.frames_csv += fmt::format("{},{},{},{}", fr.frame, b, fr.cycles, fr.end_cycle);
+    for (std::size_t i = 0; i < fr.phase_cycles.size(); ++i) {
+      out.frames_csv += fmt::format(",{}", fr.phase_cycles[i]);
+      out.timing_matches = out.timing_matches && fr.phase_cycles[i] == gt.phases[i].cycles;
+    }
+    out.frames_csv += fmt::format(",{}\n", fr.rows_detected());
+    for (int r = 0; r < rows; ++r) add_point(out, optics, fr, b, r, f);
+  }
+  for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
+  return out;
+}
+
+// Everything the summary and the report are made of.
+struct Run {
+  const SimulationRequest& req;
+  const ParamSet& params;
+  const LsConventionalConfig& cfg;
+  const scene::Scene& sc;
+  const SensorRunResult& res;
+  const golden::FrameTiming& gt;
+  const Reconstruction& rec;
+  double wall_s;
+  double frame_time_s() const { return res.simulated_time_s / static_cast<double>(res.frames.size()); }
+};
+
+nlohmann::json phases_json(const Run& run) {
+  nlohmann::json phases = nlohmann::json::array();
+  const FrameResult& first = run.res.frames.front();
+  for (std::size_t i = 0; i < run.gt.phases.size(); ++i)
+    phases.push_back({{"name", run.gt.phases[i].name},
+                      {"cycles", first.phase_cycles[i]},
+                      {"time_s", first.phase_cycles[i] / run.cfg.timing.clock_Hz},
+                      {"golden_cycles", run.gt.phases[i].cycles}});
+  return phases;
+}
+
+nlohmann::json summary(const Run& run, const SimulationReport& report) {
+  const auto& [req, params, cfg, sc, res, gt, rec, wall_s] = run;
+  nlohmann::json frame_cycles = nlohmann::json::array();
+  for (const auto& fr : res.frames) frame_cycles.push_back(fr.cycles);
+  nlohmann::json j = {
+      {"sensor", params.sensor_id()},
+      {"preset", params.origin()},
+      {"scene", sc.name},
+      {"scene_file", sc.file},
+      {"target_shape", scene::shape_name(sc.shape)},
+      {"harness", req.kernel_only ? "kernel" : "systemc"},
+      {"event_skipping", req.kernel_only && !req.tick},
+      {"sparse", !req.dense},
+      {"noise", !req.noise_free},
+      {"seed", req.seed},
+      {"frames", static_cast<long long>(res.frames.size())},
+      {"beam_positions", cfg.timing.beam_positions},
+      {"samplings", cfg.multisampling.samplings},
+      {"clock_Hz", cfg.timing.clock_Hz},
+      {"cycles", res.cycles},
+      {"frame_cycles", frame_cycles},
+      {"simulated_time_s", res.simulated_time_s},
+      {"points_visible", rec.visible},
+      {"points_detected", rec.detected},
+      {"points_missed", rec.missed},
+      {"points_false", rec.false_detections},
+      {"pixels_simulated", res.pixels_simulated},
+      {"wall_time_s", wall_s},
+      {"simulation_wall_time_s", res.wall_time_s},
+      {"simulated_cycles_per_s", res.cycles / res.wall_time_s},
+      {"sc_errors", res.sc_errors},
+  };
+  add_timing_json(j, report, gt);
+  rec.err.to_json(j, true);
+  return j;
+}
+
+SimulationReport report(const Run& run) {
+  const auto& [req, params, cfg, sc, res, gt, rec, wall_s] = run;
+  SimulationReport r;
+  r.headline = fmt::format("{} on scene '{}' ({}): {} frame access{}, {}, {}", params.sensor_id(), sc.name,
+                           scene::shape_name(sc.shape), res.frames.size(), res.frames.size() == 1 ? "" : "es",
+                           req.kernel_only ? "bare kernels" : "SystemC",
+                           req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
+  r.frame_label = "frame access";
+  set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), cfg.timing.beam_positions,
+             rec.timing_matches);
+  r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected, rec.missed,
+                              rec.false_detections);
+  r.error = rec.err, r.error_in_px = true;
+  r.wall_time_s = wall_s;
+  r.wall_note = fmt::format("{:.3g} simulated cycles/s", res.cycles / res.wall_time_s);
+  return r;
+}
+
+SimulationResult simulate_ls_conventional(const SimulationRequest& req, const ParamSet& params, SimulationHost& host) {
+  const auto t_start = Clock::now();
+  const Checked c = check(req, params);
+  const std::string vcd_base = host.open_trace();
+  if (req.tick && !req.kernel_only)
+    throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
+  const scene::Scene sc = scene::load_scene(req.scene);
+  const scene::SceneOptics optics(c.cfg, sc);
+  host.open_output(sc.name);
+  const SensorRunResult res = run_model(req, c.cfg, optics, c.frames, vcd_base, host);
+
+  const golden::FrameTiming gt = golden::frame_timing(c.cfg.timing, c.cfg.multisampling.samplings);
+  SimulationResult out;
+  Reconstruction rec = reconstruct(res, optics, c.cfg.pixel.rows, gt);
+  const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
+  out.report = report(run);
+  out.summary = summary(run, out.report);
+  out.points_csv = std::move(rec.points);
+  out.frames_csv = std::move(rec.frames_csv);
+  out.range_map = std::move(rec.map);
+  out.range_map.title = fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size());
+  out.range_map.x_label = "beam position (frame access)";
+  return out;
+}
+
+}  // namespace
+
+const SimulateEntry& ls_conventional_simulate_entry() {
+  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false};
+  return e;
+}
+
+}  // namespace rangesim::systemc

@@ -1,0 +1,31 @@
+#pragma once
+// Monte Carlo trials of tof-lockin on its clock-level kernels (the interface:
+// systemc/common/montecarlo.h). Built from the config struct so tests can edit a config before
+// the run; runs the same kernels as `rangesim simulate --kernel-only`.
+#include <memory>
+
+#include "core/params.h"
+#include "core/tof_lockin/config.h"
+#include "systemc/common/montecarlo.h"
+
+namespace rangesim::mc {
+
+// One pixel of the lock-in sensor kernel at evaluation.distance_m; a trial averages N_p range
+// maps (each an LED frame and, with ambient subtraction, an ambient frame). Shot noise of the
+// N_acc identical periods aggregated (exact: Poisson of the total mean).
+class TofLockinMc : public McModel {
+ public:
+  explicit TofLockinMc(TofLockinConfig cfg, bool aggregate = true);
+  const char* unit() const override { return "m"; }
+  double metres_per_unit() const override { return 1.0; }
+  std::unique_ptr<McPointRunner> point(double signal_A, double background_A, std::uint64_t key) const override;
+
+ private:
+  TofLockinConfig cfg_;
+  bool aggregate_;
+};
+
+// The registry's entry (systemc/common/montecarlo.cpp): the model of a validated preset.
+std::unique_ptr<McModel> make_tof_lockin_mc(const ParamSet& params);
+
+}  // namespace rangesim::mc
