@@ -133,6 +133,43 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Continue a killed or interrupted bench: every finished Pareto row and figure group is kept in a\n"
                   "journal under --out and not measured again");
 
+  SweepOptions& sw_opt = c.sweep;
+  auto* sw = app.add_subcommand(
+      "sweep",
+      "Architecture variants of one preset: for each, the clock-schedule frame and range-map rates and the\n"
+      "evaluate summary (signal and background ranges, SBR', accuracy min and max over the preset's grid).\n"
+      "Writes sweep.csv, sweep.json, pareto.png/.svg (range-map rate against worst accuracy, front marked)\n"
+      "and <key>.png/.svg per varied key into --out. Invalid variants are rows with their reason. A killed\n"
+      "sweep continues with --resume, identically; --shard K/N + `rangesim merge` split it across machines.");
+  sw->add_option("sensor", sw_opt.sensor, "Preset id or path to a .toml file")->required();
+  sw->add_option("--vary", sw_opt.vary,
+                 "KEY=LO:HI:N (linear), KEY=LO:HI:N:log or KEY=v1,v2,... (repeatable; integer keys take the\n"
+                 "nearest integers of a range); the variants are the cross product, first --vary outermost")
+      ->type_name("KEY=SPEC")->required();
+  sw->add_flag("--zip", sw_opt.zip, "Take the i-th value of every --vary together instead of the cross product");
+  sw->add_option("--set", sw_opt.settings, "Set a parameter of every variant, KEY=VALUE (repeatable)")->type_name("KEY=VALUE");
+  sw->add_option("--shard", sw_opt.shard,
+                 "K/N: compute only the variants i with i mod N = K-1 and write sweep.shard-K-of-N.json\n"
+                 "(batch arrays; `rangesim merge` combines the N shards into the unsharded output)");
+  sw->add_option("--out", sw_opt.out, "Output directory (default: rangesim-out/sweep/<sensor>)");
+  sw->add_flag("--json", sw_opt.json, "Print sweep.json to stdout instead of the table");
+  sw->add_flag("--no-plots", sw_opt.no_plots, "Skip the PNG/SVG plots");
+  sw->add_flag("--resume", sw_opt.resume, "Continue the sweep whose journal is in --out (same options)");
+  sw->add_option("--pareto-accuracy", sw_opt.pareto_accuracy,
+                 "The accuracy axis of the Pareto front: min (best over the detectable area, default) or max (worst)")
+      ->check(CLI::IsMember({"min", "max"}));
+
+  MergeOptions& mg_opt = c.merge;
+  auto* mg = app.add_subcommand("merge",
+                                "Combine the shards of one sweep (sweep --shard K/N) into the output of the unsharded\n"
+                                "sweep; refuses shards of different sweeps, missing or repeated shards");
+  mg->add_option("parts", mg_opt.parts, "The sweep.shard-K-of-N.json files")->required();
+  mg->add_option("--out", mg_opt.out, "Output directory (default: rangesim-out/sweep/merged)");
+  mg->add_flag("--json", mg_opt.json, "Print sweep.json to stdout instead of the table");
+  mg->add_flag("--no-plots", mg_opt.no_plots, "Skip the PNG/SVG plots");
+  mg->add_option("--pareto-accuracy", mg_opt.pareto_accuracy, "min (default) or max, as for sweep")
+      ->check(CLI::IsMember({"min", "max"}));
+
   CosimCommandOptions& co_opt = c.cosim;
   auto* co = app.add_subcommand(
       "cosim",
@@ -191,6 +228,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   else if (*sim) c.kind = CommandKind::Simulate;
   else if (*bench) c.kind = CommandKind::Bench;
   else if (*co) c.kind = CommandKind::Cosim;
+  else if (*sw) c.kind = CommandKind::Sweep;
+  else if (*mg) c.kind = CommandKind::Merge;
   return result;
 }
 

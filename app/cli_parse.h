@@ -9,7 +9,7 @@
 
 namespace rangesim::app {
 
-enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Bench, Cosim };
+enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Bench, Cosim, Sweep, Merge };
 
 // One parsed command line: which subcommand, and its options.
 struct ParsedCommand {
@@ -22,6 +22,8 @@ struct ParsedCommand {
   SimulateOptions simulate;
   BenchOptions bench;
   CosimCommandOptions cosim;
+  SweepOptions sweep;
+  MergeOptions merge;
 };
 
 struct CommandLine {

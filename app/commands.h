@@ -59,6 +59,30 @@ struct TableOptions {
 };
 int run_table(const TableOptions& opt);
 
+// rangesim sweep (app/sweep/): architecture variants of one preset.
+struct SweepOptions {
+  std::string sensor;                       // preset id or path
+  std::vector<std::string> settings;        // --set KEY=VALUE before the variants
+  std::vector<std::string> vary;            // --vary KEY=LO:HI:N[:log] | KEY=v1,v2,...
+  bool zip = false;                         // --zip: the i-th values together, not the cross product
+  std::optional<std::string> shard;         // --shard K/N: every N-th variant from the K-th
+  std::string out;                          // --out DIR ("" -> rangesim-out/sweep/<sensor>)
+  bool json = false;
+  bool no_plots = false;
+  bool resume = false;                      // continue the journal in --out
+  std::string pareto_accuracy = "min";      // --pareto-accuracy min|max: best or worst accuracy on the front's axis
+};
+int run_sweep(const SweepOptions& opt);
+// rangesim merge: the shards of one sweep into its unsharded output.
+struct MergeOptions {
+  std::vector<std::string> parts;  // sweep.shard-K-of-N.json files
+  std::string out;
+  bool json = false;
+  bool no_plots = false;
+  std::string pareto_accuracy = "min";
+};
+int run_merge(const MergeOptions& opt);
+
 // rangesim bench (app/cmd_bench.cpp, app/bench/, docs/bench.md).
 struct BenchOptions {
   bool quick = false;  // --quick: the same keys in under two minutes (fewer frames for the references)

@@ -27,6 +27,8 @@ int run(const ParsedCommand& c) {
     case CommandKind::Simulate: return run_simulate(c.simulate);
     case CommandKind::Bench: return run_bench(c.bench);
     case CommandKind::Cosim: return run_cosim(c.cosim);
+    case CommandKind::Sweep: return run_sweep(c.sweep);
+    case CommandKind::Merge: return run_merge(c.merge);
     case CommandKind::None: break;
   }
   return kExitInternal;
