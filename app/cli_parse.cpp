@@ -89,6 +89,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_option("--scene", sim_opt.scene, "Scene file (TOML) for the sensor: scenes/plane.toml (ls-conventional), scenes/<sensor>-plane.toml; target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")->required();
   sim->add_option("--frames", sim_opt.frames, "Frame accesses to simulate (default: one range map = timing.beam_positions)");
   sim->add_option("--seed", sim_opt.seed, "Seed of the noise streams (default: 1)");
+  sim->add_option("--set", sim_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), checked like a preset value")
+      ->type_name("KEY=VALUE");
   sim->add_option("--trace", sim_opt.trace, "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the gtkwave package); off by default");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)");
   sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");

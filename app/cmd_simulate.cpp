@@ -60,7 +60,7 @@ int run_simulate(const SimulateOptions& opt) {
   // warnings and errors go to stderr (stdout carries --json).
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   sc_core::sc_report_handler::set_handler(report_to_stderr);
-  ParamSet params = load_modelled_preset(opt.sensor, "simulate");
+  ParamSet params = load_modelled_preset(opt.sensor, "simulate", opt.settings);
   const SimulateEntry* entry = nullptr;
   for (const auto& e : simulate_registry())
     if (e.sensor == params.sensor_id()) entry = &e;

@@ -12,7 +12,8 @@
 namespace rangesim::app {
 
 struct SimulateOptions {
-  std::string sensor;               // preset id or path (only ls-conventional has a clock-level model)
+  std::string sensor;               // preset id or path
+  std::vector<std::string> settings;  // --set KEY=VALUE after the preset
   std::string scene;                // --scene FILE.toml (required)
   std::optional<long long> frames;  // --frames N: frame accesses (default: one range map = beam_positions)
   std::uint64_t seed = 1;           // --seed S: key of the noise streams

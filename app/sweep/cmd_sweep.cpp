@@ -9,10 +9,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/mpi_world.h"
 #include "app/sweep/sweep_output.h"
 #include "app/sweep/sweep_spec.h"
 #include "app/sweep_journal.h"
@@ -59,7 +61,9 @@ std::string fingerprint(const ParamSet& base, const SweepHeader& h, const std::v
 struct SweepProgress {
   Clock::time_point start = Clock::now(), last = start;
   long long total = 0;
+  bool quiet = false;  // MPI ranks other than 0
   void operator()(long long done, long long from_journal) {
+    if (quiet) return;
     const auto now = Clock::now();
     const double t = std::chrono::duration<double>(now - start).count();
     if (done != total && (t < 2 || now - last < std::chrono::seconds(1))) return;
@@ -112,6 +116,7 @@ SweepHeader header_from_json(const nlohmann::json& j) {
 }  // namespace
 
 int run_sweep(const SweepOptions& opt) {
+  const mpi::World world = mpi::init();
   ParamSet base = load_modelled_preset(opt.sensor, "sweep", opt.settings);
   const ParamSchema& schema = schema_for(base.sensor_id(), base.origin());
   if (opt.vary.empty()) throw UserError("--vary is required: KEY=LO:HI:N[:log] or KEY=v1,v2,... (repeatable)");
@@ -124,24 +129,27 @@ int run_sweep(const SweepOptions& opt) {
     h.keys.push_back(axes.back().key);
   }
   const auto vars = variants(axes, opt.zip, 1000000);
-  const Shard shard = parse_shard(opt.shard);
+  Shard shard = parse_shard(opt.shard);
+  if (world.size > 1) {
+    if (opt.shard) throw UserError("--shard under mpirun: the ranks are the shards; give one or the other");
+    shard = {world.rank + 1, world.size};
+  }
   const std::string dir = opt.out.empty() ? "rangesim-out/sweep/" + base.sensor_id() : opt.out;
-  OutputDir out(dir, "--out");
+  std::unique_ptr<OutputDir> out;  // rank 0 writes; the other ranks only journal their share
+  if (world.rank == 0) out = std::make_unique<OutputDir>(dir, "--out");
   const std::string fp = fingerprint(base, h, vars);
   SweepJournal journal((fs::path(dir) / ".staging-sweep" / fmt::format("sweep.{}-of-{}.journal", shard.k, shard.n)).string(),
                        fp, opt.resume);
-  if (opt.resume) remove_stale_staging(dir);
+  if (opt.resume && world.rank == 0) remove_stale_staging(dir);
   SigintGuard sigint;
   SweepProgress progress;
+  progress.quiet = world.rank != 0;
   std::vector<SweepRow> rows;
   for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()); i += shard.n) ++progress.total;
   long long from_journal = 0;
-  for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()); i += shard.n) {
-    if (sigint_flag()) {
-      fmt::print(stderr, "rangesim sweep: interrupted; {} variants kept in {}; continue with:\n  {}\n", rows.size(),
-                 journal.path(), resume_command(opt, dir));
-      return kExitInterrupted;
-    }
+  bool interrupted = false;
+  for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()) && !interrupted; i += shard.n) {
+    if ((interrupted = sigint_flag())) break;
     const auto it = journal.done().find(i);
     if (it != journal.done().end()) {
       rows.push_back(row_from_json(nlohmann::json::parse(it->second)));
@@ -152,21 +160,38 @@ int run_sweep(const SweepOptions& opt) {
     }
     progress(static_cast<long long>(rows.size()), from_journal);
   }
-  if (shard.n > 1) {
+  if (mpi::max_all(world, interrupted ? 1 : 0)) {
+    if (world.rank == 0)
+      fmt::print(stderr, "rangesim sweep: interrupted; finished variants kept in {}; continue with:\n  {}{}\n",
+                 fs::path(journal.path()).parent_path().string(), world.size > 1 ? "mpirun ... " : "",
+                 resume_command(opt, dir));
+    return kExitInterrupted;
+  }
+  if (world.size > 1) {  // rank 0 gathers every rank's rows, in variant order
+    nlohmann::json mine = nlohmann::json::array();
+    for (const auto& r : rows) mine.push_back(row_json(r));
+    const std::vector<std::string> parts = mpi::gather(world, mine.dump());
+    journal.remove();
+    if (world.rank != 0) return kExitOk;
+    rows.clear();
+    for (const auto& part : parts)
+      for (const auto& r : nlohmann::json::parse(part)) rows.push_back(row_from_json(r));
+    std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) { return a.index < b.index; });
+  } else if (shard.n > 1) {
     nlohmann::json part = {{"rangesim_sweep_shard", 1},     {"fingerprint_hash", SweepJournal::hash(fp)},
                            {"shard", shard.k},              {"shards", shard.n},
-                           {"variants_total", vars.size()}, {"header", header_json(h)}};
+                           {"variants_total", vars.size()}, {"header", header_json(h)},
+                           {"rows", nlohmann::json::array()}};
     for (const auto& r : rows) part["rows"].push_back(row_json(r));
-    if (rows.empty()) part["rows"] = nlohmann::json::array();
     const std::string name = fmt::format("sweep.shard-{}-of-{}.json", shard.k, shard.n);
-    out.write(name, part.dump(1) + "\n");
-    out.commit();
+    out->write(name, part.dump(1) + "\n");
+    out->commit();
     journal.remove();
     fmt::print("shard {}/{}: {} of {} variants in {}; combine the shards with `rangesim merge --out DIR PART...`\n",
                shard.k, shard.n, rows.size(), vars.size(), (fs::path(dir) / name).string());
     return kExitOk;
   }
-  const int code = write_outputs(out, h, rows, opt.json, opt.no_plots);
+  const int code = write_outputs(*out, h, rows, opt.json, opt.no_plots);
   journal.remove();
   return code;
 }
