@@ -17,27 +17,15 @@
 #include "systemc/ls_conventional/centre_processor_kernel.h"
 #include "systemc/ls_conventional/multisampling_sequencer_kernel.h"
 #include "tb/common/cosim_ports.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/common/verilog_parameters.h"
 
 namespace rangesim::tb {
 namespace {
 
 constexpr int kResetEdges = 3;
-constexpr std::size_t kKeptMismatches = 20;
 
-void add(CosimReport& r, CosimMismatch m) {
-  ++r.mismatches;
-  if (r.first_mismatches.size() < kKeptMismatches) r.first_mismatches.push_back(std::move(m));
-}
-
-// Verilator context setup shared by both harnesses.
-VerilatedContext* prepare(const CosimOptions& o) {
-  VerilatedContext* ctx = Verilated::defaultContextp();
-  ctx->randReset(2);
-  ctx->randSeed(static_cast<int>(o.seed & 0x7fffffff));
-  ctx->fatalOnError(false);
-  if (!o.trace_path.empty()) ctx->traceEverOn(true);
-  return ctx;
-}
+void add(CosimReport& r, CosimMismatch m) { CosimScoreboard(r).add(std::move(m)); }
 
 template <class Top>
 void run_top(Top& top, const CosimOptions& o, sc_core::sc_time period, long long cycles) {
@@ -50,12 +38,6 @@ void run_top(Top& top, const CosimOptions& o, sc_core::sc_time period, long long
   }
   sc_core::sc_start(period * static_cast<double>(cycles + kResetEdges));
   if (tf) tf->close();
-}
-
-int clog2(int v) {
-  int b = 0;
-  while ((1 << b) < v) ++b;
-  return b;
 }
 
 // ---------------- centre_processor ----------------
@@ -94,7 +76,7 @@ class CentreTop : public sc_core::sc_module {
 
  private:
   // Stimulus of the next cycle: a clear every few streams (at most SAMPLINGS between clears,
-  // unless the count-wrap fault asks for one more), streams of 2B contiguous bits, random gaps.
+  // unless the count_wrap fault asks for one more), streams of 2B contiguous bits, random gaps.
   void on_posedge() {
     const long long e = edges_++;
     // The edge that ends the current cycle: the kernel sees the current inputs.
@@ -118,7 +100,7 @@ class CentreTop : public sc_core::sc_module {
     } else if (gap_left_ > 0) {
       --gap_left_;
     } else {
-      const int limit = (o_.inject_fault == "count-wrap" && !report.fault_injected) ? N + 1 : N;
+      const int limit = (o_.inject_fault == "count_wrap" && !report.fault_injected) ? N + 1 : N;
       if (streams_ >= limit || std::uniform_int_distribution<int>(0, 9)(rng_) == 0) {
         if (streams_ > N) {
           report.fault_injected = true;
@@ -154,7 +136,7 @@ class CentreTop : public sc_core::sc_module {
     g.centre_q = static_cast<std::uint32_t>(port_field(centre_q.read(), 0, cb));
     g.sum = static_cast<std::uint32_t>(port_field(sum.read(), 0, sumb));
     g.count = static_cast<int>(port_field(count.read(), 0, cntb));
-    if (o_.inject_fault == "centre-off-by-one" && !report.fault_injected && g.valid && cycle > 100) {
+    if (o_.inject_fault == "centre_off_by_one" && !report.fault_injected && g.valid && cycle > 100) {
       g.centre_q += 1;
       report.fault_injected = true;
       report.fault_site = "cycle " + std::to_string(cycle) + ": centre + 1 LSB";
@@ -254,7 +236,7 @@ class SequencerTop : public sc_core::sc_module {
     g.sampling = static_cast<int>(port_field(sampling.read(), 0, sb));
     g.frame = port_field(frame.read(), 0, 32);
     // Fault: the RTL's search start seen one cycle late, once.
-    if (o_.inject_fault == "search-start-late" && cycle > 50) {
+    if (o_.inject_fault == "search_start_late" && cycle > 50) {
       if (!report.fault_injected && g.search_start) {
         g.search_start = false;
         late_ = true;
@@ -290,14 +272,13 @@ class SequencerTop : public sc_core::sc_module {
 
 template <class Top>
 CosimReport run_block(const CosimOptions& o) {
-  VerilatedContext* ctx = prepare(o);
+  VerilatedContext* ctx = cosim_verilator_context(o);
   const sc_core::sc_time period(1.0 / FrameTimingConfig{}.clock_Hz, sc_core::SC_SEC);
   Top top("cosim", o, period);
   run_top(top, o, period, static_cast<long long>(o.cycles) + 2);
   CosimReport r = top.report;
   r.rtl_assertions_failed = ctx->gotError() ? 1 : 0;
-  if (r.rtl_assertions_failed) add(r, {"rtl_assertion", -1, -1, -1, r.cycles, "no assertion fails",
-                                       "a Verilog assertion fired (its $error message names it)"});
+  if (r.rtl_assertions_failed) add(r, rtl_assertion_mismatch(r.cycles));
   r.sc_errors = static_cast<int>(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR));
   return r;
 }

@@ -1,6 +1,7 @@
 // The co-simulation target of ls-demodulation (tb/common/cosim_target.h): its readout (frame
 // sequencer + the shared address search).
 #include "tb/common/cosim_target.h"
+#include "tb/common/rtl_build.h"
 #include "tb/ls_demodulation/cosim.h"
 
 namespace rangesim::tb {
@@ -14,5 +15,8 @@ std::vector<CosimTarget> ls_demodulation_cosim_targets() {
        &run_ls_demodulation_cosim},
   };
 }
+
+// No co-simulation at a preset's own parameters yet.
+std::vector<PresetCosim> ls_demodulation_preset_cosims() { return {}; }
 
 }  // namespace rangesim::tb

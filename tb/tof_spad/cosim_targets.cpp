@@ -1,6 +1,7 @@
 // The co-simulation targets of tof-spad (tb/common/cosim_target.h): its readout, and the shared
 // TDC alone at high count rates.
 #include "tb/common/cosim_target.h"
+#include "tb/common/rtl_build.h"
 #include "tb/tof_spad/cosim.h"
 
 namespace rangesim::tb {
@@ -23,5 +24,8 @@ std::vector<CosimTarget> tof_spad_cosim_targets() {
        &tdc},
   };
 }
+
+// No co-simulation at a preset's own parameters yet.
+std::vector<PresetCosim> tof_spad_preset_cosims() { return {}; }
 
 }  // namespace rangesim::tb
