@@ -3,11 +3,17 @@
 #include "tb/common/cosim_target.h"
 #include "tb/common/rtl_build.h"
 #include "tb/tof_spad/cosim.h"
+#include "tb/tof_spad/verilog_parameters.h"
 
 namespace rangesim::tb {
 namespace {
 CosimReport tof_spad(const CosimOptions& o) { return run_tof_spad_cosim(o, false); }
 CosimReport tdc(const CosimOptions& o) { return run_tof_spad_cosim(o, true); }
+
+RtlBuildSpec preset_group(const ParamSet& preset) {
+  return {"tof_spad", "tof_spad_sequencer", verilog_parameters(tof_spad_from_params(preset), preset.origin()),
+          "tb/tof_spad/cosim_harness.h", "rangesim::tb::run_tof_spad_preset"};
+}
 }  // namespace
 
 std::vector<CosimTarget> tof_spad_cosim_targets() {
@@ -25,7 +31,7 @@ std::vector<CosimTarget> tof_spad_cosim_targets() {
   };
 }
 
-// No co-simulation at a preset's own parameters yet.
-std::vector<PresetCosim> tof_spad_preset_cosims() { return {}; }
+// `rangesim cosim <tof-spad preset>`: one TDC group of the preset's width (tdc.columns_per_tdc).
+std::vector<PresetCosim> tof_spad_preset_cosims() { return {{"tof-spad", "tof-spad", &preset_group}}; }
 
 }  // namespace rangesim::tb
