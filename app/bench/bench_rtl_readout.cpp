@@ -11,24 +11,20 @@
 #include "Vls_conventional_readout.h"
 #include "app/bench/bench_util.h"
 #include "golden/ls_conventional/frame_timing.h"
-#include "rtl/ls_conventional_params.h"
 #include "tb/common/cosim_ports.h"
+#include "tb/common/instance_check.h"
+#include "tb/ls_conventional/verilog_parameters.h"
 
 namespace rangesim::app::bench {
 
 namespace {
 
+using tb::clog2;
 using tb::PortData;
 using tb::port_bit;
 using tb::port_field;
 
 constexpr int kResetCycles = 3;  // rst high; the RTL's state is random before its first edge
-
-int clog2(int v) {  // $clog2
-  int b = 0;
-  while ((1 << b) < v) ++b;
-  return b;
-}
 
 struct Schedule {
   long long frame_cycles = 0;             // F
@@ -49,15 +45,14 @@ Schedule schedule(const LsConventionalConfig& cfg) {
   return s;
 }
 
+// The verilated Vls_conventional_readout must be the preset's readout: verilog_parameters() of
+// its config are what rtl/CMakeLists.txt verilated (tb/common/instance_check.h).
 void check_instance(const LsConventionalConfig& cfg) {
-  const auto& p = rtl::kLsConventionalFull;
-  const FrameTimingConfig& t = cfg.timing;
-  if (cfg.pixel.rows != p.rows || cfg.pixel.columns != p.columns || cfg.search.address_bits != p.address_bits ||
-      cfg.multisampling.samplings != p.samplings || t.reset_cycles != p.reset_cycles || t.latch_cycles != p.latch_cycles ||
-      t.search_cycles != p.search_cycles || t.output_cycles != p.output_cycles || t.addresses_per_sampling != 2)
-    throw std::invalid_argument("bench: the verilated Vls_conventional_readout is built for " + std::to_string(p.rows) + " x " +
-                                std::to_string(p.columns) + " pixels, " + std::to_string(p.samplings) + " samplings, " +
-                                std::to_string(p.address_bits) + " address bits and the preset's cycle counts; the preset differs");
+  try {
+    tb::check_instance_parameters("Vls_conventional_readout", tb::verilog_parameters(cfg, "bench"));
+  } catch (const std::logic_error& e) {
+    throw std::invalid_argument(std::string("bench: the preset differs from the verilated readout: ") + e.what());
+  }
 }
 
 class ReadoutTop : public sc_core::sc_module {

@@ -6,24 +6,44 @@
 #include <verilated.h>
 #include <verilated_vcd_sc.h>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <sstream>
+#include <string>
 #include <systemc>
+#include <vector>
 
 #include "Vcentre_processor_small.h"
 #include "Vmultisampling_sequencer_small.h"
-#include "rtl/ls_conventional_params.h"
 #include "systemc/ls_conventional/centre_processor_kernel.h"
 #include "systemc/ls_conventional/multisampling_sequencer_kernel.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
+#include "tb/common/instance_check.h"
 #include "tb/common/verilog_parameters.h"
+#include "tb/ls_conventional/cosim.h"
+#include "tb/ls_conventional/verilog_parameters.h"
 
 namespace rangesim::tb {
 namespace {
 
 constexpr int kResetEdges = 3;
+
+// The blocks of the small readout instance: its config (tb/ls_conventional/cosim.cpp).
+const LsConventionalConfig& small_config() {
+  static const LsConventionalConfig c = ls_conventional_instance_config(false);
+  return c;
+}
+
+// verilog_parameters() of the small readout restricted to those a block takes; checked against
+// the block's verilated instance.
+void check_block_instance(const std::string& prefix, const std::vector<std::string>& names) {
+  VerilogParameters p;
+  for (const auto& x : verilog_parameters(small_config(), prefix))
+    if (std::find(names.begin(), names.end(), x.name) != names.end()) p.push_back(x);
+  check_instance_parameters(prefix, p);
+}
 
 void add(CosimReport& r, CosimMismatch m) { CosimScoreboard(r).add(std::move(m)); }
 
@@ -54,7 +74,7 @@ class CentreTop : public sc_core::sc_module {
 
   SC_HAS_PROCESS(CentreTop);
   CentreTop(sc_core::sc_module_name n, const CosimOptions& o, sc_core::sc_time period)
-      : sc_core::sc_module(n), clk("clk", period), o_(o), kernel_(rtl::kLsConventionalSmall.address_bits), rng_(o.seed) {
+      : sc_core::sc_module(n), clk("clk", period), o_(o), kernel_(small_config().search.address_bits), rng_(o.seed) {
     rtl.clk(clk);
     rtl.rst(rst);
     rtl.clear_i(clear);
@@ -90,7 +110,7 @@ class CentreTop : public sc_core::sc_module {
       kernel_.tick(clear.read(), pins);
     }
     if (e < kResetEdges - 1) return;
-    const int B = rtl::kLsConventionalSmall.address_bits, N = rtl::kLsConventionalSmall.samplings;
+    const int B = small_config().search.address_bits, N = small_config().multisampling.samplings;
     std::uniform_int_distribution<int> gap(0, 3), bitd(0, 1);
     bool c = false, v = false, b = false;
     if (stream_left_ > 0) {
@@ -128,7 +148,7 @@ class CentreTop : public sc_core::sc_module {
     if (period < kResetEdges - 1) return;
     const long long cycle = period - (kResetEdges - 1);
     report.cycles = static_cast<std::uint64_t>(cycle + 1);
-    const int B = rtl::kLsConventionalSmall.address_bits, N = rtl::kLsConventionalSmall.samplings;
+    const int B = small_config().search.address_bits, N = small_config().multisampling.samplings;
     const int cb = B + 8, sumb = B + 1 + clog2(N + 1), cntb = clog2(N + 1);
     const systemc::CentreProcessorPins m = kernel_.pins();
     systemc::CentreProcessorPins g;
@@ -161,17 +181,6 @@ class CentreTop : public sc_core::sc_module {
 
 // ---------------- multisampling_sequencer ----------------
 
-FrameTimingConfig small_timing() {
-  const auto& p = rtl::kLsConventionalSmall;
-  FrameTimingConfig t;
-  t.reset_cycles = p.reset_cycles;
-  t.latch_cycles = p.latch_cycles;
-  t.search_cycles = p.search_cycles;
-  t.address_bits = p.address_bits;
-  t.output_cycles = p.output_cycles;
-  return t;
-}
-
 class SequencerTop : public sc_core::sc_module {
  public:
   sc_core::sc_clock clk;
@@ -187,7 +196,7 @@ class SequencerTop : public sc_core::sc_module {
       : sc_core::sc_module(n),
         clk("clk", period),
         o_(o),
-        kernel_(small_timing(), rtl::kLsConventionalSmall.samplings),
+        kernel_(small_config().timing, small_config().multisampling.samplings),
         rng_(o.seed) {
     rtl.clk(clk);
     rtl.rst(rst);
@@ -224,7 +233,7 @@ class SequencerTop : public sc_core::sc_module {
     if (period < kResetEdges - 1) return;
     const long long cycle = period - (kResetEdges - 1);
     report.cycles = static_cast<std::uint64_t>(cycle + 1);
-    const int sb = clog2(rtl::kLsConventionalSmall.samplings + 1);
+    const int sb = clog2(small_config().multisampling.samplings + 1);
     systemc::ReadoutSequencerPins m = kernel_.pins();
     m.frame &= 0xffffffffULL;
     systemc::ReadoutSequencerPins g;
@@ -285,7 +294,14 @@ CosimReport run_block(const CosimOptions& o) {
 
 }  // namespace
 
-CosimReport run_centre_processor_cosim(const CosimOptions& options) { return run_block<CentreTop>(options); }
-CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options) { return run_block<SequencerTop>(options); }
+CosimReport run_centre_processor_cosim(const CosimOptions& options) {
+  check_block_instance("Vcentre_processor_small", {"ADDRESS_BITS", "SAMPLINGS"});
+  return run_block<CentreTop>(options);
+}
+CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options) {
+  check_block_instance("Vmultisampling_sequencer_small",
+                       {"SAMPLINGS", "RESET_CYCLES", "LATCH_CYCLES", "SEARCH_CYCLES", "ADDRESS_BITS", "OUTPUT_CYCLES"});
+  return run_block<SequencerTop>(options);
+}
 
 }  // namespace rangesim::tb
