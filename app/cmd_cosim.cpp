@@ -342,8 +342,14 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (!opt.trace.empty() && !all) {
     auto [d, n] = split_path(opt.trace);
     if (n.empty()) throw UserError("cosim: --trace '" + opt.trace + "' names a directory; give a file");
-    trace_dir = std::make_unique<OutputDir>(d, "--trace");
-    trace_file = trace_dir->staged(n);
+    // One staging folder per directory: a second OutputDir there would share (and on commit
+    // remove) the first one's, losing the VCD when --junit goes to the same directory.
+    if (junit_dir && d == split_path(opt.junit).first) {
+      trace_file = junit_dir->staged(n);
+    } else {
+      trace_dir = std::make_unique<OutputDir>(d, "--trace");
+      trace_file = trace_dir->staged(n);
+    }
   }
 
   std::vector<json> runs;
