@@ -103,8 +103,9 @@ std::string version_of(const std::string& program, const fs::path& scratch) {
   return line;
 }
 
+// Absolute: the build runs in rtl/ (the paths of rtl/verilator.f are relative to it).
 fs::path cache_root() {
-  if (const char* d = std::getenv("RANGESIM_RTL_CACHE"); d && *d) return d;
+  if (const char* d = std::getenv("RANGESIM_RTL_CACHE"); d && *d) return fs::absolute(d);
   if (const char* d = std::getenv("XDG_CACHE_HOME"); d && *d) return fs::path(d) / "rangesim" / "rtl";
   if (const char* d = std::getenv("HOME"); d && *d) return fs::path(d) / ".cache" / "rangesim" / "rtl";
   throw UserError("cosim: no folder for the RTL build cache; set RANGESIM_RTL_CACHE (or XDG_CACHE_HOME or HOME)");
@@ -159,6 +160,10 @@ std::string rtl_cosim_executable(const RtlBuildSpec& s) {
   if (cxx.empty())
     throw UserError(std::string("cosim: a preset's RTL is compiled at run time and needs the C++ compiler '") +
                     kCosimCxxCompiler + "'; it was not found");
+  for (const char* lib : kCosimLibraries)
+    if (!fs::is_regular_file(lib))
+      throw UserError(std::string("cosim: a preset's RTL is linked against the build tree's libraries; ") + lib +
+                      " is missing (run from a build tree, not an installed rangesim)");
   const fs::path root = cache_root();
   std::error_code ec;
   fs::create_directories(root, ec);
