@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -93,7 +94,7 @@ int run_program(const std::vector<std::string>& args, const std::string& cwd, co
 
 // First line of `program --version`, for the hash.
 std::string version_of(const std::string& program, const fs::path& scratch) {
-  const std::string out = (scratch / "version.txt").string();
+  const std::string out = (scratch / (".version-" + std::to_string(getpid()))).string();
   std::remove(out.c_str());
   run_program({program, "--version"}, "", out);
   std::string line;
@@ -119,6 +120,16 @@ std::string tail_of(const std::string& path, int lines) {
   for (std::size_t i = v.size() > static_cast<std::size_t>(lines) ? v.size() - lines : 0; i < v.size(); ++i)
     s += "  " + v[i] + "\n";
   return s;
+}
+
+// Build folders of killed builds (never renamed into place) are removed once they are a day old;
+// younger ones may belong to a build still running in another process.
+void remove_stale_builds(const fs::path& root) {
+  std::error_code ec;
+  const auto day_ago = fs::file_time_type::clock::now() - std::chrono::hours(24);
+  for (const auto& e : fs::directory_iterator(root, ec))
+    if (e.path().filename().string().rfind(".tmp-", 0) == 0 && e.last_write_time(ec) < day_ago)
+      fs::remove_all(e.path(), ec);
 }
 
 std::string main_cpp(const RtlBuildSpec& s, const std::string& prefix) {
@@ -185,6 +196,7 @@ std::string rtl_cosim_executable(const RtlBuildSpec& s) {
     return exe.string();
   }
 
+  remove_stale_builds(root);
   std::string tmpl = (root / (".tmp-" + h.hex() + "-XXXXXX")).string();
   if (!mkdtemp(tmpl.data())) throw UserError("cosim: cannot create a build folder in " + root.string());
   const fs::path tmp = tmpl;

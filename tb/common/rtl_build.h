@@ -7,7 +7,8 @@
 // $RANGESIM_RTL_CACHE (default $XDG_CACHE_HOME/rangesim/rtl, else ~/.cache/rangesim/rtl) in a
 // folder named by a hash of the Verilog parameters, the RTL and harness sources, the libraries
 // and the compiler, so a second run with the same parameters starts at once. Each build goes
-// to a temporary folder that is renamed when complete: a killed build leaves nothing half-made.
+// to a temporary folder (.tmp-<hash>-*) that is renamed when complete: a killed build leaves no
+// half-made entry (its folder is never used and is removed once a day old).
 #include <string>
 #include <vector>
 
