@@ -35,6 +35,7 @@
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/common/verilog_parameters.h"
+#include "tb/ls_conventional/readout_ports.h"
 #include "tb/ls_conventional/cosim.h"
 #include "tb/ls_conventional/verilog_parameters.h"
 
@@ -76,28 +77,11 @@ struct StreamRecord {  // one row's address stream in one sampling, one side
 
 template <class VTop>
 class LsCosimTop : public sc_core::sc_module {
-  template <class P>
-  using Sig = sc_core::sc_signal<PortData<P>>;
-
  public:
   sc_core::sc_clock clk;
   sc_core::sc_signal<bool> rst{"rst", true};
   VTop rtl{"rtl"};
-  Sig<decltype(rtl.cmp_i)> cmp{"cmp"};
-  Sig<decltype(rtl.phase_o)> phase{"phase"};
-  Sig<decltype(rtl.pix_reset_o)> pix_reset{"pix_reset"};
-  Sig<decltype(rtl.latch_o)> latch{"latch"};
-  Sig<decltype(rtl.search_start_o)> search_start{"search_start"};
-  Sig<decltype(rtl.frame_done_o)> frame_done{"frame_done"};
-  Sig<decltype(rtl.sampling_o)> sampling{"sampling"};
-  Sig<decltype(rtl.frame_o)> frame{"frame"};
-  Sig<decltype(rtl.busy_o)> busy{"busy"};
-  Sig<decltype(rtl.addr_valid_o)> addr_valid{"addr_valid"};
-  Sig<decltype(rtl.addr_bit_o)> addr_bit{"addr_bit"};
-  Sig<decltype(rtl.centre_valid_o)> centre_valid{"centre_valid"};
-  Sig<decltype(rtl.centre_q_o)> centre_q{"centre_q"};
-  Sig<decltype(rtl.sum_o)> sum{"sum"};
-  Sig<decltype(rtl.count_o)> count{"count"};
+  LsReadoutSignals<VTop> sig;  // the RTL's ports (tb/ls_conventional/readout_ports.h)
 
   SC_HAS_PROCESS(LsCosimTop);
   LsCosimTop(sc_core::sc_module_name name, const LsConventionalCosimOptions& o, const std::string& target,
@@ -111,30 +95,11 @@ class LsCosimTop : public sc_core::sc_module {
         cfg_(cfg),
         noise_free_(!kopt.pixel.noise.any()),
         kernel_(cfg, kopt, random_scenes(o.seed, rows_, columns_)),
-        sb_(clog2(cfg.multisampling.samplings + 1)),
-        cb_(address_bits_ + 8),
-        sumb_(address_bits_ + 1 + clog2(cfg.multisampling.samplings + 1)),
-        cntb_(clog2(cfg.multisampling.samplings + 1)),
+        fields_(cfg),
         board_(report_),
         rec_{std::vector<StreamRecord>(static_cast<std::size_t>(rows_)),
              std::vector<StreamRecord>(static_cast<std::size_t>(rows_))} {
-    rtl.clk(clk);
-    rtl.rst(rst);
-    rtl.cmp_i(cmp);
-    rtl.phase_o(phase);
-    rtl.pix_reset_o(pix_reset);
-    rtl.latch_o(latch);
-    rtl.search_start_o(search_start);
-    rtl.frame_done_o(frame_done);
-    rtl.sampling_o(sampling);
-    rtl.frame_o(frame);
-    rtl.busy_o(busy);
-    rtl.addr_valid_o(addr_valid);
-    rtl.addr_bit_o(addr_bit);
-    rtl.centre_valid_o(centre_valid);
-    rtl.centre_q_o(centre_q);
-    rtl.sum_o(sum);
-    rtl.count_o(count);
+    sig.bind(rtl, clk, rst);
     report_.target = target;
     fault_frame_ = o.frames > 1 ? 1 : 0;
     if (!o.record_stimulus_path.empty()) stim_out_.open(o.record_stimulus_path);
@@ -184,7 +149,7 @@ class LsCosimTop : public sc_core::sc_module {
       }
       PortData<decltype(rtl.cmp_i)> v{};
       port_from_words(words, v);
-      cmp.write(v);
+      sig.cmp.write(v);
       cmp_words_ = std::move(words);
     }
   }
@@ -251,31 +216,27 @@ class LsCosimTop : public sc_core::sc_module {
     const long long frame_no = static_cast<long long>(sp.frame);
 
     if (out_out_.is_open()) {
-      out_out_ << port_hex(phase.read(), 3) << ' ' << port_hex(pix_reset.read(), 1) << ' ' << port_hex(latch.read(), 1) << ' '
-               << port_hex(search_start.read(), 1) << ' ' << port_hex(frame_done.read(), 1) << ' '
-               << port_hex(sampling.read(), sb_) << ' ' << port_hex(frame.read(), 32) << ' ' << port_hex(busy.read(), rows_)
-               << ' ' << port_hex(addr_valid.read(), rows_) << ' ' << port_hex(addr_bit.read(), rows_) << ' '
-               << port_hex(centre_valid.read(), rows_) << ' ' << port_hex(centre_q.read(), rows_ * cb_) << ' '
-               << port_hex(sum.read(), rows_ * sumb_) << ' ' << port_hex(count.read(), rows_ * cntb_) << '\n';
+      const auto& g = sig;
+      out_out_ << port_hex(g.phase.read(), 3) << ' ' << port_hex(g.pix_reset.read(), 1) << ' '
+               << port_hex(g.latch.read(), 1) << ' ' << port_hex(g.search_start.read(), 1) << ' '
+               << port_hex(g.frame_done.read(), 1) << ' ' << port_hex(g.sampling.read(), fields_.sampling) << ' '
+               << port_hex(g.frame.read(), 32) << ' ' << port_hex(g.busy.read(), rows_) << ' '
+               << port_hex(g.addr_valid.read(), rows_) << ' ' << port_hex(g.addr_bit.read(), rows_) << ' '
+               << port_hex(g.centre_valid.read(), rows_) << ' ' << port_hex(g.centre_q.read(), rows_ * fields_.centre)
+               << ' ' << port_hex(g.sum.read(), rows_ * fields_.sum) << ' '
+               << port_hex(g.count.read(), rows_ * fields_.count) << '\n';
     }
 
     // Sequencer pins, every cycle.
-    ReadoutSequencerPins gp;
-    gp.phase = static_cast<ReadoutPhase>(port_field(phase.read(), 0, 3));
-    gp.pix_reset = pix_reset.read();
-    gp.latch = latch.read();
-    gp.search_start = search_start.read();
-    gp.frame_done = frame_done.read();
-    gp.sampling = static_cast<int>(port_field(sampling.read(), 0, sb_));
-    gp.frame = port_field(frame.read(), 0, 32);
+    const ReadoutSequencerPins gp = sig.sequencer_pins(fields_);
     ReadoutSequencerPins mp = sp;
     mp.frame &= 0xffffffffULL;  // frame_o is 32 bits wide (its wrap is an RTL assertion)
     if (!(gp == mp)) add({"sequencer", frame_no, -1, -1, static_cast<std::uint64_t>(cycle), seq_string(mp), seq_string(gp)});
 
     // Rows: busy every cycle, address streams per sampling.
-    const auto& av = addr_valid.read();
-    const auto& ab = addr_bit.read();
-    const auto& bz = busy.read();
+    const auto& av = sig.addr_valid.read();
+    const auto& ab = sig.addr_bit.read();
+    const auto& bz = sig.busy.read();
     for (int r = 0; r < rows_; ++r) {
       const auto m = kernel_.search(r).pins();
       const bool g_busy = port_bit(bz, r);
@@ -323,18 +284,10 @@ class LsCosimTop : public sc_core::sc_module {
 
   void check_frame(const ReadoutSequencerPins& sp, long long cycle) {
     const long long frame_no = static_cast<long long>(sp.frame);
-    const auto& cv = centre_valid.read();
-    const auto& cq = centre_q.read();
-    const auto& su = sum.read();
-    const auto& co = count.read();
     const FrameStimulus& stim = kernel_.pixels().stimulus();
     for (int r = 0; r < rows_; ++r) {
       const CentreProcessorPins m = kernel_.centre(r).pins();
-      CentreProcessorPins g;
-      g.valid = port_bit(cv, r);
-      g.centre_q = static_cast<std::uint32_t>(port_field(cq, r * cb_, cb_));
-      g.sum = static_cast<std::uint32_t>(port_field(su, r * sumb_, sumb_));
-      g.count = static_cast<int>(port_field(co, r * cntb_, cntb_));
+      CentreProcessorPins g = sig.centre_pins(fields_, r);
       if (o_.inject_fault == "dropped_row" && r == drop_row_ && frame_no == drop_frame_) g = {};
       if (o_.inject_fault == "centre_off_by_one" && !report_.fault_injected && frame_no >= fault_frame_ && g.valid) {
         g.centre_q += 1;
@@ -380,7 +333,7 @@ class LsCosimTop : public sc_core::sc_module {
   LsConventionalConfig cfg_;
   bool noise_free_;
   LsConventionalSensorKernel kernel_;
-  int sb_, cb_, sumb_, cntb_;  // RTL field widths: sampling, centre Q.8, sum, count
+  LsReadoutFields fields_;            // RTL field widths: sampling, centre Q.8, sum, count
   CosimReport report_;
   CosimScoreboard board_;             // records into report_ (no SC reports: see cosim.h)
   std::vector<StreamRecord> rec_[2];  // per row, [0] model, [1] RTL
