@@ -178,14 +178,19 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
       "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
       "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
+      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (ls-conventional,\n"
+      "tof-spad, ls-demodulation): its Verilog parameters come from the preset, the RTL is verilated\n"
+      "and compiled at run time (needs verilator) and cached in $RANGESIM_RTL_CACHE (default\n"
+      "$XDG_CACHE_HOME/rangesim/rtl, else ~/.cache/rangesim/rtl).\n"
       "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input,\n"
       "130 interrupted (Ctrl-C; 'all' keeps its journal and prints the command that resumes).");
-  co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), or 'all'");
+  co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), 'all', or a preset file (.toml)");
   co->add_option("--cycles", co_opt.cycles, "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
   co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
   co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
   co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");
-  co->add_option("--inject-fault", co_opt.inject_fault, "Run with this named fault of the target (see --list); it must be reported");
+  co->add_option("--inject-fault", co_opt.inject_fault,
+                 "Run with this named fault of the target (see --list; a preset takes its sensor's); it must be reported");
   co->add_flag("--json", co_opt.json, "Print JSON (keys cycles, transactions, mismatches, coverage_line, coverage_toggle, ...)");
   co->add_flag("--list", co_opt.list, "List the targets and their faults");
   co->add_option("--journal", co_opt.journal,

@@ -3,6 +3,9 @@
 //
 // SystemC elaborates once per process, so `cosim all` runs each target in a child process (this
 // binary again, `cosim <target> --json`) and gathers the JSON; a single target runs in-process.
+// A preset (`cosim <preset.toml>`, or the id of a preset that is not a target name) runs the
+// sensor's readout verilated at run time with the preset's parameters, in a child process built
+// and cached by tb/common/rtl_build.h; its report comes back as JSON and renders the same way.
 #include <fmt/format.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,9 +24,11 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "app/sweep_journal.h"
+#include "core/preset.h"
 #include "core/user_error.h"
 #include "tb/common/cosim_coverage.h"
 #include "tb/common/cosim_target.h"
+#include "tb/common/rtl_build.h"
 
 namespace rangesim::app {
 namespace {
@@ -36,7 +41,11 @@ constexpr unsigned long long kAllFullCycles = 1000;  // ls-conventional-full in 
 std::string target_names() {
   std::string s;
   for (const auto& t : tb::cosim_targets()) s += (s.empty() ? "" : ", ") + std::string(t.name);
-  return s + ", all";
+  return s + ", all, or a preset file (.toml) of " + [] {
+    std::string p;
+    for (const auto& c : tb::preset_cosims()) p += (p.empty() ? "" : ", ") + std::string(c.sensor);
+    return p;
+  }();
 }
 
 const tb::CosimTarget* find_target(const std::string& name) {
@@ -194,6 +203,69 @@ std::string resume_command(const CosimCommandOptions& o) {
 }
 
 // Runs `rangesim cosim <target> --json ...` as a child process and parses its JSON.
+// UserError unless `fault` is "" or one of the target's faults.
+void check_fault(const std::string& fault, const tb::CosimTarget& target, const std::string& what) {
+  if (fault.empty()) return;
+  std::string names;
+  for (const auto& f : target.faults) {
+    if (f == fault) return;
+    names += (names.empty() ? "" : ", ") + f;
+  }
+  throw UserError("cosim: --inject-fault '" + fault + "' is not a fault of " + what + "; allowed: " +
+                  (names.empty() ? std::string("none") : names));
+}
+
+// A fault that never went in proves nothing: it counts as a mismatch.
+void require_fault_applied(tb::CosimReport& r, const std::string& fault) {
+  if (fault.empty() || r.fault_injected) return;
+  ++r.mismatches;
+  r.first_mismatches.push_back({"fault", -1, -1, -1, r.cycles, fault + " applied", "not applied (run longer)"});
+}
+
+// The preset file `name` stands for: a .toml file, or a preset id that is not a target.
+std::string preset_path_of(const std::string& name) {
+  if (name.find('/') != std::string::npos || name.find(".toml") != std::string::npos) return resolve_preset(name);
+  try {
+    return resolve_preset(name);
+  } catch (const UserError&) {
+    throw UserError("cosim: unknown target '" + name + "'; allowed: " + target_names());
+  }
+}
+
+// `cosim <preset>`: the sensor's readout verilated with the preset's Verilog parameters (cached),
+// run in a child process on the same options as a built-in target.
+json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigned long long cycles,
+                const std::string& trace_file) {
+  const ParamSet preset = load_preset_file(path);
+  const tb::PresetCosim* pc = nullptr;
+  for (const auto& c : tb::preset_cosims())
+    if (c.sensor == preset.sensor_id()) pc = &c;
+  if (!pc) {
+    std::string ids;
+    for (const auto& c : tb::preset_cosims()) ids += (ids.empty() ? "" : ", ") + std::string(c.sensor);
+    throw UserError(fmt::format("{}: sensor.id = {}: no RTL co-simulation at a preset's own parameters; allowed: {} "
+                                "(or the built-in target: rangesim cosim {})",
+                                path, preset.sensor_id(), ids, preset.sensor_id()));
+  }
+  const tb::CosimTarget* target = find_target(pc->target);
+  check_fault(opt.inject_fault, *target, path + " (the faults of " + pc->target + ")");
+  const tb::RtlBuildSpec spec = pc->spec(preset);
+  const std::string exe = tb::rtl_cosim_executable(spec);
+  if (!opt.json) fmt::print(stderr, "cosim: {} ({} cycles, seed {})...\n", path, cycles, opt.seed);
+  tb::CosimOptions o;
+  o.cycles = cycles;
+  o.seed = opt.seed;
+  o.inject_fault = opt.inject_fault;
+  o.trace_path = trace_file;
+  const auto t0 = std::chrono::steady_clock::now();
+  tb::CosimReport r;
+  tb::RtlCoverage cov;
+  tb::run_rtl_cosim(exe, path, o, r, cov);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  require_fault_applied(r, opt.inject_fault);
+  return report_json(r, cov, opt.inject_fault, wall);
+}
+
 json run_child(const std::string& target, const CosimCommandOptions& opt, unsigned long long cycles, const std::string& trace) {
   std::vector<std::string> args{"rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed",
                                 std::to_string(opt.seed)};
@@ -250,23 +322,14 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (opt.target.empty()) throw UserError("cosim: name a target (" + target_names() + ") or use --list");
   const bool all = opt.target == "all";
   const tb::CosimTarget* target = all ? nullptr : find_target(opt.target);
-  if (!all && !target) throw UserError("cosim: unknown target '" + opt.target + "'; allowed: " + target_names());
+  const std::string preset_path = all || target ? std::string() : preset_path_of(opt.target);
   const unsigned long long cycles = opt.cycles.value_or(kDefaultCycles);
   if (cycles < 1 || cycles > kMaxCycles)
     throw UserError(fmt::format("cosim: --cycles {} out of range; allowed 1..{}", cycles, kMaxCycles));
   if (opt.resume && !all) throw UserError("cosim: --resume continues an interrupted 'all' run; a single target has no journal");
-  if (!opt.inject_fault.empty()) {
-    if (all) throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
-    bool known = false;
-    std::string names;
-    for (const auto& f : target->faults) {
-      known = known || f == opt.inject_fault;
-      names += (names.empty() ? "" : ", ") + f;
-    }
-    if (!known)
-      throw UserError("cosim: --inject-fault '" + opt.inject_fault + "' is not a fault of " + opt.target + "; allowed: " +
-                      (names.empty() ? std::string("none") : names));
-  }
+  if (all && !opt.inject_fault.empty())
+    throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
+  if (target) check_fault(opt.inject_fault, *target, opt.target);
   // Output files are staged next to their destination and appear only when complete.
   std::unique_ptr<OutputDir> junit_dir, trace_dir;
   std::string junit_name, trace_file;
@@ -279,8 +342,14 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (!opt.trace.empty() && !all) {
     auto [d, n] = split_path(opt.trace);
     if (n.empty()) throw UserError("cosim: --trace '" + opt.trace + "' names a directory; give a file");
-    trace_dir = std::make_unique<OutputDir>(d, "--trace");
-    trace_file = trace_dir->staged(n);
+    // One staging folder per directory: a second OutputDir there would share (and on commit
+    // remove) the first one's, losing the VCD when --junit goes to the same directory.
+    if (junit_dir && d == split_path(opt.junit).first) {
+      trace_file = junit_dir->staged(n);
+    } else {
+      trace_dir = std::make_unique<OutputDir>(d, "--trace");
+      trace_file = trace_dir->staged(n);
+    }
   }
 
   std::vector<json> runs;
@@ -324,6 +393,8 @@ int run_cosim(const CosimCommandOptions& opt) {
       runs.push_back(std::move(r));
       fmt::print(stderr, "cosim: {} done: {} mismatches\n", t.name, runs.back()["mismatches"].get<unsigned long long>());
     }
+  } else if (!preset_path.empty()) {
+    runs.push_back(run_preset(opt, preset_path, cycles, trace_file));
   } else {
     if (!opt.json) fmt::print(stderr, "cosim: {} ({} cycles, seed {})...\n", target->name, cycles, opt.seed);
     tb::CosimOptions o;
@@ -350,10 +421,7 @@ int run_cosim(const CosimCommandOptions& opt) {
     std::fflush(stdout);
     dup2(saved_stdout, STDOUT_FILENO);
     close(saved_stdout);
-    if (!opt.inject_fault.empty() && !r.fault_injected) {  // a fault that never went in proves nothing
-      ++r.mismatches;
-      r.first_mismatches.push_back({"fault", -1, -1, -1, r.cycles, opt.inject_fault + " applied", "not applied (run longer)"});
-    }
+    require_fault_applied(r, opt.inject_fault);
     runs.push_back(report_json(r, tb::rtl_coverage(), opt.inject_fault, wall));
   }
 

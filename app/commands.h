@@ -96,7 +96,7 @@ int run_bench(const BenchOptions& opt);
 // `rangesim cosim` (app/cmd_cosim.cpp): RTL co-simulation targets of tb/cosim_targets.cpp.
 inline constexpr int kExitCosimMismatch = 4;  // the run completed and found mismatches
 struct CosimCommandOptions {
-  std::string target;                   // sensor id, block name or "all" ("" with --list)
+  std::string target;                   // sensor id, block name, "all" or a preset file ("" with --list)
   std::optional<unsigned long long> cycles;  // clock cycles (default 100000)
   unsigned long long seed = 1;
   std::string trace;                    // RTL VCD file ("" = none)

@@ -11,8 +11,10 @@
 #include "Vls_conventional_readout.h"
 #include "app/bench/bench_util.h"
 #include "golden/ls_conventional/frame_timing.h"
-#include "rtl/ls_conventional_params.h"
 #include "tb/common/cosim_ports.h"
+#include "tb/common/instance_check.h"
+#include "tb/ls_conventional/readout_ports.h"
+#include "tb/ls_conventional/verilog_parameters.h"
 
 namespace rangesim::app::bench {
 
@@ -23,12 +25,6 @@ using tb::port_bit;
 using tb::port_field;
 
 constexpr int kResetCycles = 3;  // rst high; the RTL's state is random before its first edge
-
-int clog2(int v) {  // $clog2
-  int b = 0;
-  while ((1 << b) < v) ++b;
-  return b;
-}
 
 struct Schedule {
   long long frame_cycles = 0;             // F
@@ -49,68 +45,31 @@ Schedule schedule(const LsConventionalConfig& cfg) {
   return s;
 }
 
+// The verilated Vls_conventional_readout must be the preset's readout: verilog_parameters() of
+// its config are what rtl/CMakeLists.txt verilated (tb/common/instance_check.h).
 void check_instance(const LsConventionalConfig& cfg) {
-  const auto& p = rtl::kLsConventionalFull;
-  const FrameTimingConfig& t = cfg.timing;
-  if (cfg.pixel.rows != p.rows || cfg.pixel.columns != p.columns || cfg.search.address_bits != p.address_bits ||
-      cfg.multisampling.samplings != p.samplings || t.reset_cycles != p.reset_cycles || t.latch_cycles != p.latch_cycles ||
-      t.search_cycles != p.search_cycles || t.output_cycles != p.output_cycles || t.addresses_per_sampling != 2)
-    throw std::invalid_argument("bench: the verilated Vls_conventional_readout is built for " + std::to_string(p.rows) + " x " +
-                                std::to_string(p.columns) + " pixels, " + std::to_string(p.samplings) + " samplings, " +
-                                std::to_string(p.address_bits) + " address bits and the preset's cycle counts; the preset differs");
+  try {
+    tb::check_instance_parameters("Vls_conventional_readout", tb::verilog_parameters(cfg, "bench"));
+  } catch (const std::logic_error& e) {
+    throw std::invalid_argument(std::string("bench: the preset differs from the verilated readout: ") + e.what());
+  }
 }
 
 class ReadoutTop : public sc_core::sc_module {
-  template <class P>
-  using Sig = sc_core::sc_signal<PortData<P>>;
-
  public:
   sc_core::sc_clock clk;
   sc_core::sc_signal<bool> rst{"rst", true};
   Vls_conventional_readout rtl{"rtl"};
-  Sig<decltype(rtl.cmp_i)> cmp{"cmp"};
-  Sig<decltype(rtl.phase_o)> phase{"phase"};
-  Sig<decltype(rtl.pix_reset_o)> pix_reset{"pix_reset"};
-  Sig<decltype(rtl.latch_o)> latch{"latch"};
-  Sig<decltype(rtl.search_start_o)> search_start{"search_start"};
-  Sig<decltype(rtl.frame_done_o)> frame_done{"frame_done"};
-  Sig<decltype(rtl.sampling_o)> sampling{"sampling"};
-  Sig<decltype(rtl.frame_o)> frame{"frame"};
-  Sig<decltype(rtl.busy_o)> busy{"busy"};
-  Sig<decltype(rtl.addr_valid_o)> addr_valid{"addr_valid"};
-  Sig<decltype(rtl.addr_bit_o)> addr_bit{"addr_bit"};
-  Sig<decltype(rtl.centre_valid_o)> centre_valid{"centre_valid"};
-  Sig<decltype(rtl.centre_q_o)> centre_q{"centre_q"};
-  Sig<decltype(rtl.sum_o)> sum{"sum"};
-  Sig<decltype(rtl.count_o)> count{"count"};
+  tb::LsReadoutSignals<Vls_conventional_readout> sig;  // the harness's ports (tb/ls_conventional/readout_ports.h)
 
   SC_HAS_PROCESS(ReadoutTop);
   ReadoutTop(sc_core::sc_module_name name, const LsConventionalConfig& cfg, const ReadoutStimulus& stim, sc_core::sc_time period)
-      : sc_core::sc_module(name), clk("clk", period), frames_(stim.frames), sched_(schedule(cfg)) {
+      : sc_core::sc_module(name), clk("clk", period), frames_(stim.frames), sched_(schedule(cfg)), fields_(cfg) {
     rows_ = cfg.pixel.rows;
     columns_ = cfg.pixel.columns;
     N_ = cfg.multisampling.samplings;
     B_ = cfg.search.address_bits;
-    cb_ = B_ + 8;
-    sumb_ = B_ + 1 + clog2(N_ + 1);
-    cntb_ = clog2(N_ + 1);
-    rtl.clk(clk);
-    rtl.rst(rst);
-    rtl.cmp_i(cmp);
-    rtl.phase_o(phase);
-    rtl.pix_reset_o(pix_reset);
-    rtl.latch_o(latch);
-    rtl.search_start_o(search_start);
-    rtl.frame_done_o(frame_done);
-    rtl.sampling_o(sampling);
-    rtl.frame_o(frame);
-    rtl.busy_o(busy);
-    rtl.addr_valid_o(addr_valid);
-    rtl.addr_bit_o(addr_bit);
-    rtl.centre_valid_o(centre_valid);
-    rtl.centre_q_o(centre_q);
-    rtl.sum_o(sum);
-    rtl.count_o(count);
+    sig.bind(rtl, clk, rst);
     build_cmp_values(stim);
     open_.assign(static_cast<std::size_t>(rows_), {});
     SC_THREAD(stimulus);
@@ -162,7 +121,7 @@ class ReadoutTop : public sc_core::sc_module {
         cycle_ = f * F + c;
         for (int k = 0; k < N_; ++k)
           if (sched_.latch_in_frame[static_cast<std::size_t>(k)] == c)
-            cmp.write(cmp_values_[static_cast<std::size_t>(f) * N_ + static_cast<std::size_t>(k)]);
+            sig.cmp.write(cmp_values_[static_cast<std::size_t>(f) * N_ + static_cast<std::size_t>(k)]);
         wait();
       }
     }
@@ -191,12 +150,12 @@ class ReadoutTop : public sc_core::sc_module {
   // Mid-cycle: every output has settled after the rising edge.
   void monitor() {
     if (cycle_ < 0) return;
-    const auto& av = addr_valid.read();
+    const auto& av = sig.addr_valid.read();
     bool any = n_open_ > 0;
     for (int i = 0; !any && i < (rows_ + 31) / 32; ++i) any = av.get_word(i) != 0;
     if (any) {
-      const auto& ab = addr_bit.read();
-      const int f = static_cast<int>(port_field(frame.read(), 0, 32)), k = static_cast<int>(port_field(sampling.read(), 0, 8));
+      const auto& ab = sig.addr_bit.read();
+      const int f = static_cast<int>(port_field(sig.frame.read(), 0, 32)), k = static_cast<int>(port_field(sig.sampling.read(), 0, 8));
       for (int r = 0; r < rows_; ++r) {
         Open& s = open_[static_cast<std::size_t>(r)];
         const bool v = port_bit(av, r);
@@ -210,22 +169,12 @@ class ReadoutTop : public sc_core::sc_module {
         if (++s.bits == 2 * B_) close(r, s);
       }
     }
-    if (frame_done.read()) {
+    if (sig.frame_done.read()) {
       systemc::FrameResult fr;
-      fr.frame = port_field(frame.read(), 0, 32);
+      fr.frame = port_field(sig.frame.read(), 0, 32);
       fr.end_cycle = cycle_ + 1;
       fr.rows.resize(static_cast<std::size_t>(rows_));
-      const auto& cv = centre_valid.read();
-      const auto& cq = centre_q.read();
-      const auto& su = sum.read();
-      const auto& co = count.read();
-      for (int r = 0; r < rows_; ++r) {
-        systemc::CentreProcessorPins& g = fr.rows[static_cast<std::size_t>(r)];
-        g.valid = port_bit(cv, r);
-        g.centre_q = static_cast<std::uint32_t>(port_field(cq, r * cb_, cb_));
-        g.sum = static_cast<std::uint32_t>(port_field(su, r * sumb_, sumb_));
-        g.count = static_cast<int>(port_field(co, r * cntb_, cntb_));
-      }
+      for (int r = 0; r < rows_; ++r) fr.rows[static_cast<std::size_t>(r)] = sig.centre_pins(fields_, r);
       frame_results_.push_back(std::move(fr));
     }
   }
@@ -233,7 +182,7 @@ class ReadoutTop : public sc_core::sc_module {
   int frames_ = 0;
   Schedule sched_;
   int rows_ = 0, columns_ = 0, N_ = 0, B_ = 0;
-  int cb_ = 0, sumb_ = 0, cntb_ = 0;  // RTL field widths: centre Q.8, sum, count
+  tb::LsReadoutFields fields_;  // RTL field widths: sampling, centre Q.8, sum, count
   std::vector<PortData<decltype(rtl.cmp_i)>> cmp_values_;  // per (frame, sampling)
   long long cycle_ = -1;  // cycle since reset release of the current cycle (-1: in reset)
   long long cycles_ = 0;

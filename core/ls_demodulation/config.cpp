@@ -95,4 +95,6 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
   return c;
 }
 
+int readout_search_cycles(const DemodReadoutConfig& r) { return r.row_cycles - 1 - 2 * r.address_bits; }
+
 }  // namespace rangesim

@@ -105,4 +105,9 @@ struct LsDemodulationConfig {
 // (cycles / f0 against the integration time, address bits, grid order), naming file and keys.
 LsDemodulationConfig ls_demodulation_from_params(const ParamSet& params);
 
+// Derived: the chain-settle cycles of one row's readout, S = row_cycles - 1 - 2 address_bits
+// (search start, settle, the two streamed edge addresses; systemc/ls_demodulation/sensor_kernel.h
+// and the RTL's SEARCH_CYCLES). Below 1 the row cannot be read in row_cycles.
+int readout_search_cycles(const DemodReadoutConfig& readout);
+
 }  // namespace rangesim

@@ -118,8 +118,16 @@ module multisampling_sequencer #(
   end
 
   wire frame_wraps = output_last && (frame_q == '1);
+  // With SAMPLINGS = 2^k - 1 the index field cannot exceed SAMPLINGS: the comparison would be
+  // constant (Verilator CMPCONST, fatal), so it exists only where an index can be out of range.
+  logic sampling_over;
+  if ((1 << SamplingBits) - 1 > SAMPLINGS) begin : g_sampling_over
+    assign sampling_over = sampling_q > SamplingBits'(SAMPLINGS);
+  end else begin : g_sampling_full_range
+    assign sampling_over = 1'b0;
+  end
   wire sampling_bad = (phase_q == LATCH || phase_q == SEARCH || phase_q == STREAM) &&
-                      (sampling_q == '0 || sampling_q > SamplingBits'(SAMPLINGS));
+                      (sampling_q == '0 || sampling_over);
   always @(posedge clk) begin
     if (!rst) begin
 `ifdef __ICARUS__

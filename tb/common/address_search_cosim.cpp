@@ -22,6 +22,7 @@
 #include "core/ls_conventional/config.h"
 #include "rtl/address_search_params.h"
 #include "systemc/common/address_search.h"
+#include "tb/common/cosim_target.h"  // kKeptMismatches
 
 namespace rangesim::tb {
 namespace {
@@ -30,7 +31,6 @@ using rangesim::systemc::ActivationRow;
 using rangesim::systemc::AddressSearchPins;
 
 constexpr const char* kMsgType = "rangesim/cosim/address_search";
-constexpr std::size_t kMaxStoredMismatches = 20;  // the rest are only counted
 constexpr int kResetCycles = 3;  // rst high; before its first edge the RTL state is random
 
 // A laser sheet lights a narrow run of columns; add empties, false activations and dense rows
@@ -288,7 +288,7 @@ class CosimTop : public sc_core::sc_module {
 
   void mismatch(const std::string& what) {
     ++report_.mismatch_count;
-    if (report_.mismatches.size() < kMaxStoredMismatches) {
+    if (report_.mismatches.size() < kKeptMismatches) {
       report_.mismatches.push_back(what);
       SC_REPORT_ERROR(kMsgType, what.c_str());  // counted; set to display, not throw
     }

@@ -1,15 +1,15 @@
 #pragma once
-// Scoreboard helpers shared by the tof-lockin / column ADC co-simulation targets
-// (tb/lockin_gate_generator_cosim.cpp, tb/column_adc_cosim.cpp, tb/tof_lockin_cosim.cpp):
-// collect mismatches into a CosimReport as readable records and count them as SC_ERRORs
-// (display only, so a run goes on and reports everything), plus the Verilator context setup
-// every target repeats.
+// The scoreboard of every co-simulation target: collects mismatches into a CosimReport as
+// readable records (the first kKeptMismatches kept, all counted) and, given a message type,
+// also reports them as SC_ERRORs (display only, so a run goes on and reports everything); plus
+// the Verilator context setup and the report closing every target repeats.
 #include <verilated.h>
 
 #include <cstdint>
 #include <sstream>
 #include <string>
 #include <systemc>
+#include <utility>
 
 #include "tb/common/cosim_target.h"
 
@@ -17,10 +17,9 @@ namespace rangesim::tb {
 
 class CosimScoreboard {
  public:
-  static constexpr std::size_t kMaxStored = 20;  // CosimReport keeps the first 20
-
-  CosimScoreboard(CosimReport& report, const char* msg_type) : r_(report), type_(msg_type) {
-    sc_core::sc_report_handler::set_actions(type_, sc_core::SC_ERROR, sc_core::SC_DISPLAY);
+  // msg_type nullptr: mismatches are only recorded (sc_errors stays the count of other errors).
+  explicit CosimScoreboard(CosimReport& report, const char* msg_type = nullptr) : r_(report), type_(msg_type) {
+    if (type_) sc_core::sc_report_handler::set_actions(type_, sc_core::SC_ERROR, sc_core::SC_DISPLAY);
   }
 
   // One compared transaction (counted); a mismatch if expected != actual.
@@ -43,9 +42,13 @@ class CosimScoreboard {
 
   void mismatch(const std::string& check, long long frame, long long row, long long column,
                 std::uint64_t cycle, const std::string& expected, const std::string& actual) {
+    add({check, frame, row, column, cycle, expected, actual});
+  }
+  void add(CosimMismatch m) {
     ++r_.mismatches;
-    if (r_.first_mismatches.size() >= kMaxStored) return;
-    r_.first_mismatches.push_back({check, frame, row, column, cycle, expected, actual});
+    if (r_.first_mismatches.size() >= kKeptMismatches) return;
+    r_.first_mismatches.push_back(std::move(m));
+    if (!type_) return;
     const std::string text = format(r_.first_mismatches.back());
     SC_REPORT_ERROR(type_, text.c_str());
   }
@@ -73,13 +76,22 @@ class CosimScoreboard {
 
 // Verilator context for one co-simulation run: random initial state (the reset must clear
 // everything that matters), seeded; failing assertions are counted, not fatal.
-inline VerilatedContext* cosim_verilator_context(const CosimOptions& o) {
+inline VerilatedContext* cosim_verilator_context(std::uint64_t seed, const std::string& trace_path) {
   VerilatedContext* ctx = Verilated::defaultContextp();
   ctx->randReset(2);
-  ctx->randSeed(static_cast<int>(o.seed & 0x7fffffff));
+  ctx->randSeed(static_cast<int>(seed & 0x7fffffff));
   ctx->fatalOnError(false);
-  if (!o.trace_path.empty()) ctx->traceEverOn(true);
+  if (!trace_path.empty()) ctx->traceEverOn(true);
   return ctx;
+}
+inline VerilatedContext* cosim_verilator_context(const CosimOptions& o) {
+  return cosim_verilator_context(o.seed, o.trace_path);
+}
+
+// The mismatch recorded when a Verilog assertion fired (Verilator counts, not names, them).
+inline CosimMismatch rtl_assertion_mismatch(std::uint64_t cycle) {
+  return {"rtl_assertion", -1, -1, -1, cycle, "no assertion fails",
+          "a Verilog assertion fired (its $error message names it)"};
 }
 
 // Closes a report: SC errors and whether a Verilog assertion fired (counted as a mismatch).

@@ -4,6 +4,7 @@
 // golden model where it is exact) on randomised stimulus drawn from the seed, and reports what
 // its scoreboard compared. Targets live in tb/<block>_cosim.cpp and are listed in
 // tb/cosim_targets.cpp (one line each).
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,12 +26,16 @@ struct CosimMismatch {
   std::string expected, actual;
 };
 
+// CosimReport::first_mismatches keeps this many (every scoreboard goes through
+// tb/common/cosim_scoreboard.h); the rest are counted.
+inline constexpr std::size_t kKeptMismatches = 20;
+
 struct CosimReport {
   std::string target;
   std::uint64_t cycles = 0;        // clock cycles simulated
   std::uint64_t transactions = 0;  // scoreboard transactions compared (RTL vs SystemC vs golden)
   std::uint64_t mismatches = 0;    // total, including assertion failures
-  std::vector<CosimMismatch> first_mismatches;  // at most 20 kept
+  std::vector<CosimMismatch> first_mismatches;  // at most kKeptMismatches
   std::uint64_t golden_checks = 0;  // reconstructed positions/ranges compared with the golden model
   int rtl_assertions_failed = 0;    // named SystemVerilog assertions that fired
   int sc_errors = 0;                // SC_ERROR reports

@@ -6,38 +6,46 @@
 #include <verilated.h>
 #include <verilated_vcd_sc.h>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <sstream>
+#include <string>
 #include <systemc>
+#include <vector>
 
 #include "Vcentre_processor_small.h"
 #include "Vmultisampling_sequencer_small.h"
-#include "rtl/ls_conventional_params.h"
 #include "systemc/ls_conventional/centre_processor_kernel.h"
 #include "systemc/ls_conventional/multisampling_sequencer_kernel.h"
 #include "tb/common/cosim_ports.h"
+#include "tb/common/cosim_scoreboard.h"
+#include "tb/common/instance_check.h"
+#include "tb/common/verilog_parameters.h"
+#include "tb/ls_conventional/cosim.h"
+#include "tb/ls_conventional/verilog_parameters.h"
 
 namespace rangesim::tb {
 namespace {
 
 constexpr int kResetEdges = 3;
-constexpr std::size_t kKeptMismatches = 20;
 
-void add(CosimReport& r, CosimMismatch m) {
-  ++r.mismatches;
-  if (r.first_mismatches.size() < kKeptMismatches) r.first_mismatches.push_back(std::move(m));
+// The blocks of the small readout instance: its config (tb/ls_conventional/cosim.cpp).
+const LsConventionalConfig& small_config() {
+  static const LsConventionalConfig c = ls_conventional_instance_config(false);
+  return c;
 }
 
-// Verilator context setup shared by both harnesses.
-VerilatedContext* prepare(const CosimOptions& o) {
-  VerilatedContext* ctx = Verilated::defaultContextp();
-  ctx->randReset(2);
-  ctx->randSeed(static_cast<int>(o.seed & 0x7fffffff));
-  ctx->fatalOnError(false);
-  if (!o.trace_path.empty()) ctx->traceEverOn(true);
-  return ctx;
+// verilog_parameters() of the small readout restricted to those a block takes; checked against
+// the block's verilated instance.
+void check_block_instance(const std::string& prefix, const std::vector<std::string>& names) {
+  VerilogParameters p;
+  for (const auto& x : verilog_parameters(small_config(), prefix))
+    if (std::find(names.begin(), names.end(), x.name) != names.end()) p.push_back(x);
+  check_instance_parameters(prefix, p);
 }
+
+void add(CosimReport& r, CosimMismatch m) { CosimScoreboard(r).add(std::move(m)); }
 
 template <class Top>
 void run_top(Top& top, const CosimOptions& o, sc_core::sc_time period, long long cycles) {
@@ -50,12 +58,6 @@ void run_top(Top& top, const CosimOptions& o, sc_core::sc_time period, long long
   }
   sc_core::sc_start(period * static_cast<double>(cycles + kResetEdges));
   if (tf) tf->close();
-}
-
-int clog2(int v) {
-  int b = 0;
-  while ((1 << b) < v) ++b;
-  return b;
 }
 
 // ---------------- centre_processor ----------------
@@ -72,7 +74,7 @@ class CentreTop : public sc_core::sc_module {
 
   SC_HAS_PROCESS(CentreTop);
   CentreTop(sc_core::sc_module_name n, const CosimOptions& o, sc_core::sc_time period)
-      : sc_core::sc_module(n), clk("clk", period), o_(o), kernel_(rtl::kLsConventionalSmall.address_bits), rng_(o.seed) {
+      : sc_core::sc_module(n), clk("clk", period), o_(o), kernel_(small_config().search.address_bits), rng_(o.seed) {
     rtl.clk(clk);
     rtl.rst(rst);
     rtl.clear_i(clear);
@@ -94,7 +96,7 @@ class CentreTop : public sc_core::sc_module {
 
  private:
   // Stimulus of the next cycle: a clear every few streams (at most SAMPLINGS between clears,
-  // unless the count-wrap fault asks for one more), streams of 2B contiguous bits, random gaps.
+  // unless the count_wrap fault asks for one more), streams of 2B contiguous bits, random gaps.
   void on_posedge() {
     const long long e = edges_++;
     // The edge that ends the current cycle: the kernel sees the current inputs.
@@ -108,7 +110,7 @@ class CentreTop : public sc_core::sc_module {
       kernel_.tick(clear.read(), pins);
     }
     if (e < kResetEdges - 1) return;
-    const int B = rtl::kLsConventionalSmall.address_bits, N = rtl::kLsConventionalSmall.samplings;
+    const int B = small_config().search.address_bits, N = small_config().multisampling.samplings;
     std::uniform_int_distribution<int> gap(0, 3), bitd(0, 1);
     bool c = false, v = false, b = false;
     if (stream_left_ > 0) {
@@ -118,7 +120,7 @@ class CentreTop : public sc_core::sc_module {
     } else if (gap_left_ > 0) {
       --gap_left_;
     } else {
-      const int limit = (o_.inject_fault == "count-wrap" && !report.fault_injected) ? N + 1 : N;
+      const int limit = (o_.inject_fault == "count_wrap" && !report.fault_injected) ? N + 1 : N;
       if (streams_ >= limit || std::uniform_int_distribution<int>(0, 9)(rng_) == 0) {
         if (streams_ > N) {
           report.fault_injected = true;
@@ -146,7 +148,7 @@ class CentreTop : public sc_core::sc_module {
     if (period < kResetEdges - 1) return;
     const long long cycle = period - (kResetEdges - 1);
     report.cycles = static_cast<std::uint64_t>(cycle + 1);
-    const int B = rtl::kLsConventionalSmall.address_bits, N = rtl::kLsConventionalSmall.samplings;
+    const int B = small_config().search.address_bits, N = small_config().multisampling.samplings;
     const int cb = B + 8, sumb = B + 1 + clog2(N + 1), cntb = clog2(N + 1);
     const systemc::CentreProcessorPins m = kernel_.pins();
     systemc::CentreProcessorPins g;
@@ -154,7 +156,7 @@ class CentreTop : public sc_core::sc_module {
     g.centre_q = static_cast<std::uint32_t>(port_field(centre_q.read(), 0, cb));
     g.sum = static_cast<std::uint32_t>(port_field(sum.read(), 0, sumb));
     g.count = static_cast<int>(port_field(count.read(), 0, cntb));
-    if (o_.inject_fault == "centre-off-by-one" && !report.fault_injected && g.valid && cycle > 100) {
+    if (o_.inject_fault == "centre_off_by_one" && !report.fault_injected && g.valid && cycle > 100) {
       g.centre_q += 1;
       report.fault_injected = true;
       report.fault_site = "cycle " + std::to_string(cycle) + ": centre + 1 LSB";
@@ -179,17 +181,6 @@ class CentreTop : public sc_core::sc_module {
 
 // ---------------- multisampling_sequencer ----------------
 
-FrameTimingConfig small_timing() {
-  const auto& p = rtl::kLsConventionalSmall;
-  FrameTimingConfig t;
-  t.reset_cycles = p.reset_cycles;
-  t.latch_cycles = p.latch_cycles;
-  t.search_cycles = p.search_cycles;
-  t.address_bits = p.address_bits;
-  t.output_cycles = p.output_cycles;
-  return t;
-}
-
 class SequencerTop : public sc_core::sc_module {
  public:
   sc_core::sc_clock clk;
@@ -205,7 +196,7 @@ class SequencerTop : public sc_core::sc_module {
       : sc_core::sc_module(n),
         clk("clk", period),
         o_(o),
-        kernel_(small_timing(), rtl::kLsConventionalSmall.samplings),
+        kernel_(small_config().timing, small_config().multisampling.samplings),
         rng_(o.seed) {
     rtl.clk(clk);
     rtl.rst(rst);
@@ -242,7 +233,7 @@ class SequencerTop : public sc_core::sc_module {
     if (period < kResetEdges - 1) return;
     const long long cycle = period - (kResetEdges - 1);
     report.cycles = static_cast<std::uint64_t>(cycle + 1);
-    const int sb = clog2(rtl::kLsConventionalSmall.samplings + 1);
+    const int sb = clog2(small_config().multisampling.samplings + 1);
     systemc::ReadoutSequencerPins m = kernel_.pins();
     m.frame &= 0xffffffffULL;
     systemc::ReadoutSequencerPins g;
@@ -254,7 +245,7 @@ class SequencerTop : public sc_core::sc_module {
     g.sampling = static_cast<int>(port_field(sampling.read(), 0, sb));
     g.frame = port_field(frame.read(), 0, 32);
     // Fault: the RTL's search start seen one cycle late, once.
-    if (o_.inject_fault == "search-start-late" && cycle > 50) {
+    if (o_.inject_fault == "search_start_late" && cycle > 50) {
       if (!report.fault_injected && g.search_start) {
         g.search_start = false;
         late_ = true;
@@ -290,21 +281,27 @@ class SequencerTop : public sc_core::sc_module {
 
 template <class Top>
 CosimReport run_block(const CosimOptions& o) {
-  VerilatedContext* ctx = prepare(o);
+  VerilatedContext* ctx = cosim_verilator_context(o);
   const sc_core::sc_time period(1.0 / FrameTimingConfig{}.clock_Hz, sc_core::SC_SEC);
   Top top("cosim", o, period);
   run_top(top, o, period, static_cast<long long>(o.cycles) + 2);
   CosimReport r = top.report;
   r.rtl_assertions_failed = ctx->gotError() ? 1 : 0;
-  if (r.rtl_assertions_failed) add(r, {"rtl_assertion", -1, -1, -1, r.cycles, "no assertion fails",
-                                       "a Verilog assertion fired (its $error message names it)"});
+  if (r.rtl_assertions_failed) add(r, rtl_assertion_mismatch(r.cycles));
   r.sc_errors = static_cast<int>(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR));
   return r;
 }
 
 }  // namespace
 
-CosimReport run_centre_processor_cosim(const CosimOptions& options) { return run_block<CentreTop>(options); }
-CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options) { return run_block<SequencerTop>(options); }
+CosimReport run_centre_processor_cosim(const CosimOptions& options) {
+  check_block_instance("Vcentre_processor_small", {"ADDRESS_BITS", "SAMPLINGS"});
+  return run_block<CentreTop>(options);
+}
+CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options) {
+  check_block_instance("Vmultisampling_sequencer_small",
+                       {"SAMPLINGS", "RESET_CYCLES", "LATCH_CYCLES", "SEARCH_CYCLES", "ADDRESS_BITS", "OUTPUT_CYCLES"});
+  return run_block<SequencerTop>(options);
+}
 
 }  // namespace rangesim::tb

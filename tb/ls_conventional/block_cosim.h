@@ -10,11 +10,11 @@
 
 namespace rangesim::tb {
 
-// Faults: "centre-off-by-one" (RTL centre seen 1 LSB high once), "count-wrap" (the stimulus
+// Faults: "centre_off_by_one" (RTL centre seen 1 LSB high once), "count_wrap" (the stimulus
 // sends SAMPLINGS + 1 streams without a clear: assertion a_count_no_wrap must fire).
 CosimReport run_centre_processor_cosim(const CosimOptions& options);
 
-// Faults: "search-start-late" (the RTL's search_start seen one cycle late once).
+// Faults: "search_start_late" (the RTL's search_start seen one cycle late once).
 CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options);
 
 }  // namespace rangesim::tb

@@ -1,5 +1,5 @@
 #pragma once
-// Co-simulation of the ls-conventional readout: the verilated rtl/ls_conventional_readout.sv
+// Co-simulation of the ls-conventional readout: the verilated rtl/ls_conventional/ls_conventional_readout.sv
 // (frame sequencer, per-row comparator latches, address searches and centre processors) beside
 // the clock-level ls-conventional model (systemc::LsConventionalSensorKernel ticked every clock
 // under SystemC, the kernel the sc_module LsConventionalSensor runs), on the same stimulus: the
@@ -10,11 +10,15 @@
 // row) the streamed left and right addresses with the cycles of their first and last bit; per
 // (frame, row) at frame_done the centre (valid, Q.8 centre, sum, n). With noise off, the centre
 // of every row is also checked against golden::direct_estimate (exact: sum / 2n equals it).
-// Elaborates SystemC: once per process.
+// The harness is tb/ls_conventional/cosim_harness.h. Elaborates SystemC: once per process.
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
+#include "core/ls_conventional/config.h"
+#include "golden/ls_conventional/frame_timing.h"
 #include "tb/common/cosim_target.h"
 
 namespace rangesim::tb {
@@ -23,7 +27,7 @@ struct LsConventionalCosimOptions {
   bool full_size = false;        // Vls_conventional_readout (375 x 365) instead of the small instance
   long long frames = 10;         // frame accesses
   std::uint64_t seed = 1;        // scenes, noise on (even seeds) or off (odd), Verilator's initial state
-  std::string inject_fault;      // "", "address-bit-flip", "dropped-row", "centre-off-by-one"
+  std::string inject_fault;      // "", "address_bit_flip", "dropped_row", "centre_off_by_one"
   std::string trace_path;        // RTL VCD ("" = none)
   // Icarus replay (tb/ls_conventional_readout_tb.sv): the inputs of every clock period as
   // $readmemh lines {rst, cmp_i}, and the outputs from the reset edge on as %h fields.
@@ -39,10 +43,26 @@ struct LsConventionalCosimResult {
 };
 
 inline const std::vector<std::string>& ls_conventional_faults() {
-  static const std::vector<std::string> f{"address-bit-flip", "dropped-row", "centre-off-by-one"};
+  static const std::vector<std::string> f{"address_bit_flip", "dropped_row", "centre_off_by_one"};
   return f;
 }
 
+// Whole frame accesses covering `cycles` (at least one), for a CosimOptions run.
+inline LsConventionalCosimOptions ls_conventional_options(const CosimOptions& o, const LsConventionalConfig& cfg) {
+  LsConventionalCosimOptions lo;
+  const long long fc = golden::frame_timing(cfg.timing, cfg.multisampling.samplings).frame_cycles;
+  lo.frames = std::max<long long>(1, (static_cast<long long>(o.cycles) + fc - 1) / fc);
+  lo.seed = o.seed;
+  lo.inject_fault = o.inject_fault;
+  lo.trace_path = o.trace_path;
+  return lo;
+}
+
+// The built-in instances: Vls_conventional_readout_small, or with full_size Vls_conventional_readout.
 LsConventionalCosimResult run_ls_conventional_cosim(const LsConventionalCosimOptions& options);
+
+// The configs of the built-in instances (rtl/CMakeLists.txt verilates them with
+// verilog_parameters() of these): the small one, or the full-size 375 x 365 one.
+LsConventionalConfig ls_conventional_instance_config(bool full_size);
 
 }  // namespace rangesim::tb

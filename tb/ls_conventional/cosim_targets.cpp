@@ -5,29 +5,27 @@
 #include <string>
 
 #include "rtl/address_search_params.h"
-#include "rtl/ls_conventional_params.h"
 #include "tb/common/address_search_cosim.h"
 #include "tb/common/cosim_target.h"
 #include "tb/ls_conventional/block_cosim.h"
+#include "tb/common/rtl_build.h"
 #include "tb/ls_conventional/cosim.h"
+#include "tb/ls_conventional/verilog_parameters.h"
 
 namespace rangesim::tb {
 namespace {
 
-long long ls_frame_cycles(const rtl::LsConventionalRtlParams& p) {
-  return p.reset_cycles + static_cast<long long>(p.samplings) * (p.latch_cycles + p.search_cycles + 2 * p.address_bits) +
-         p.output_cycles;
+CosimReport run_ls(const CosimOptions& o, bool full) {
+  LsConventionalCosimOptions lo = ls_conventional_options(o, ls_conventional_instance_config(full));
+  lo.full_size = full;
+  return run_ls_conventional_cosim(lo).report;
 }
 
-CosimReport run_ls(const CosimOptions& o, bool full) {
-  LsConventionalCosimOptions lo;
-  lo.full_size = full;
-  const long long fc = ls_frame_cycles(full ? rtl::kLsConventionalFull : rtl::kLsConventionalSmall);
-  lo.frames = std::max<long long>(1, (static_cast<long long>(o.cycles) + fc - 1) / fc);  // whole frame accesses
-  lo.seed = o.seed;
-  lo.inject_fault = o.inject_fault;
-  lo.trace_path = o.trace_path;
-  return run_ls_conventional_cosim(lo).report;
+// `rangesim cosim <ls-conventional preset>`: the readout at the preset's parameters.
+RtlBuildSpec preset_readout(const ParamSet& preset) {
+  return {"ls_conventional", "ls_conventional_readout",
+          verilog_parameters(ls_conventional_from_params(preset), preset.origin()),
+          "tb/ls_conventional/cosim_harness.h", "rangesim::tb::run_ls_conventional_preset"};
 }
 CosimReport run_ls_small(const CosimOptions& o) { return run_ls(o, false); }
 CosimReport run_ls_full(const CosimOptions& o) { return run_ls(o, true); }
@@ -42,10 +40,10 @@ CosimReport run_address_search(const CosimOptions& o) {
   // lower bound of the mean, so the run covers at least the cycles asked for.
   const long long per_frame = ao.rows_per_frame * (p.search_cycles + 2 * p.address_bits);  // low: rounds up
   ao.frames = static_cast<int>(std::max<long long>(1, (static_cast<long long>(o.cycles) + per_frame - 1) / per_frame));
-  if (o.inject_fault == "address-bit-flip") {
+  if (o.inject_fault == "address_bit_flip") {
     ao.fault_operation = ao.frames * ao.rows_per_frame / 2;
     ao.fault_bit = 1;
-  } else if (o.inject_fault == "start-while-busy") {
+  } else if (o.inject_fault == "start_while_busy") {
     ao.restart_operation = 3;
     ao.restart_cycle = 2;
   }
@@ -91,12 +89,14 @@ std::vector<CosimTarget> ls_conventional_cosim_targets() {
        "full-size ls-conventional readout RTL (375 x 365, 4 samplings, uninstrumented) vs the clock-level model",
        ls_conventional_faults(), run_ls_full},
       {"address_search", "row address search RTL (16 columns) vs its SystemC model, random rows",
-       {"address-bit-flip", "start-while-busy"}, run_address_search},
+       {"address_bit_flip", "start_while_busy"}, run_address_search},
       {"centre_processor", "row centre processor RTL vs its cycle kernel, random address streams and clears",
-       {"centre-off-by-one", "count-wrap"}, run_centre_processor_cosim},
+       {"centre_off_by_one", "count_wrap"}, run_centre_processor_cosim},
       {"multisampling_sequencer", "ls-conventional frame sequencer RTL vs its cycle kernel, random reset pulses",
-       {"search-start-late"}, run_multisampling_sequencer_cosim},
+       {"search_start_late"}, run_multisampling_sequencer_cosim},
   };
 }
+
+std::vector<PresetCosim> ls_conventional_preset_cosims() { return {{"ls-conventional", "ls-conventional", &preset_readout}}; }
 
 }  // namespace rangesim::tb

@@ -1,5 +1,6 @@
 // The co-simulation targets of tof-lockin (tb/common/cosim_target.h): its readout and its blocks.
 #include "tb/common/cosim_target.h"
+#include "tb/common/rtl_build.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
 namespace rangesim::tb {
@@ -25,5 +26,8 @@ std::vector<CosimTarget> tof_lockin_cosim_targets() {
        &column_adc},
   };
 }
+
+// No co-simulation at a preset's own parameters yet.
+std::vector<PresetCosim> tof_lockin_preset_cosims() { return {}; }
 
 }  // namespace rangesim::tb

@@ -1,6 +1,6 @@
 #pragma once
 // Co-simulation of the tof-spad readout RTL: rtl/tof_spad_sequencer.sv (rtl/tdc.sv +
-// rtl/tdc_histogram.sv, one TDC group of 4 columns) against the SystemC kernels
+// tdc_histogram.sv, one TDC group of 4 columns) against the SystemC kernels
 // (systemc/tof_spad: SpadPixelKernel avalanches, TdcGroupKernel per hit, TofSpadKernel
 // histograms and schedule). Elaborates SystemC: one run per process.
 //   tof-spad  rows of integration + histogram readout: TDC codes / grants / lost hits per
@@ -15,7 +15,7 @@
 namespace rangesim::tb {
 
 // high_rates: the `tdc` target. record_path: per-cycle inputs and RTL outputs for the Icarus
-// replay (tb/tof_spad_sequencer_replay_tb.sv).
+// replay (tb/tof_spad/tof_spad_sequencer_replay_tb.sv). The harness: tb/tof_spad/cosim_harness.h.
 CosimReport run_tof_spad_cosim(const CosimOptions& options, bool high_rates,
                                const std::string& record_path = {});
 

@@ -1,12 +1,19 @@
 // The co-simulation targets of tof-spad (tb/common/cosim_target.h): its readout, and the shared
 // TDC alone at high count rates.
 #include "tb/common/cosim_target.h"
+#include "tb/common/rtl_build.h"
 #include "tb/tof_spad/cosim.h"
+#include "tb/tof_spad/verilog_parameters.h"
 
 namespace rangesim::tb {
 namespace {
 CosimReport tof_spad(const CosimOptions& o) { return run_tof_spad_cosim(o, false); }
 CosimReport tdc(const CosimOptions& o) { return run_tof_spad_cosim(o, true); }
+
+RtlBuildSpec preset_group(const ParamSet& preset) {
+  return {"tof_spad", "tof_spad_sequencer", verilog_parameters(tof_spad_from_params(preset), preset.origin()),
+          "tb/tof_spad/cosim_harness.h", "rangesim::tb::run_tof_spad_preset"};
+}
 }  // namespace
 
 std::vector<CosimTarget> tof_spad_cosim_targets() {
@@ -23,5 +30,8 @@ std::vector<CosimTarget> tof_spad_cosim_targets() {
        &tdc},
   };
 }
+
+// `rangesim cosim <tof-spad preset>`: one TDC group of the preset's width (tdc.columns_per_tdc).
+std::vector<PresetCosim> tof_spad_preset_cosims() { return {{"tof-spad", "tof-spad", &preset_group}}; }
 
 }  // namespace rangesim::tb

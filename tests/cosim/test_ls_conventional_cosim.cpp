@@ -54,7 +54,7 @@ TEST(LsConventionalCosim, NoisyScenesMatchModel) {
 TEST(LsConventionalCosim, FlippedAddressBitIsReported) {
   LsConventionalCosimOptions o;
   o.frames = 5;
-  o.inject_fault = "address-bit-flip";
+  o.inject_fault = "address_bit_flip";
   const CosimReport r = run_ls_conventional_cosim(o).report;
   ASSERT_TRUE(r.fault_injected);
   EXPECT_EQ(r.mismatches, 1u) << r.fault_site;
@@ -69,7 +69,7 @@ TEST(LsConventionalCosim, FlippedAddressBitIsReported) {
 TEST(LsConventionalCosim, DroppedRowIsReported) {
   LsConventionalCosimOptions o;
   o.frames = 5;
-  o.inject_fault = "dropped-row";
+  o.inject_fault = "dropped_row";
   const CosimReport r = run_ls_conventional_cosim(o).report;
   ASSERT_TRUE(r.fault_injected);
   EXPECT_GE(count_check(r, "address"), 1);
@@ -85,7 +85,7 @@ TEST(LsConventionalCosim, DroppedRowIsReported) {
 TEST(LsConventionalCosim, CentreOffByOneIsReported) {
   LsConventionalCosimOptions o;
   o.frames = 5;
-  o.inject_fault = "centre-off-by-one";
+  o.inject_fault = "centre_off_by_one";
   const CosimReport r = run_ls_conventional_cosim(o).report;
   ASSERT_TRUE(r.fault_injected);
   EXPECT_EQ(r.mismatches, 1u);
@@ -123,7 +123,7 @@ TEST(CentreProcessorCosim, MatchesKernel) {
 TEST(CentreProcessorCosim, OffByOneIsReported) {
   CosimOptions o;
   o.cycles = 2000;
-  o.inject_fault = "centre-off-by-one";
+  o.inject_fault = "centre_off_by_one";
   const CosimReport r = run_centre_processor_cosim(o);
   ASSERT_TRUE(r.fault_injected);
   EXPECT_EQ(r.mismatches, 1u);
@@ -133,7 +133,7 @@ TEST(CentreProcessorCosim, OffByOneIsReported) {
 TEST(CentreProcessorCosim, CountWrapFiresAssertion) {
   CosimOptions o;
   o.cycles = 2000;
-  o.inject_fault = "count-wrap";
+  o.inject_fault = "count_wrap";
   const CosimReport r = run_centre_processor_cosim(o);
   ASSERT_TRUE(r.fault_injected);
   EXPECT_EQ(r.rtl_assertions_failed, 1);  // a_count_no_wrap
@@ -151,7 +151,7 @@ TEST(MultisamplingSequencerCosim, MatchesKernelThroughResets) {
 TEST(MultisamplingSequencerCosim, LateSearchStartIsReported) {
   CosimOptions o;
   o.cycles = 2000;
-  o.inject_fault = "search-start-late";
+  o.inject_fault = "search_start_late";
   const CosimReport r = run_multisampling_sequencer_cosim(o);
   ASSERT_TRUE(r.fault_injected);
   EXPECT_EQ(r.mismatches, 2u);  // the cycle it should have come and the cycle it came
