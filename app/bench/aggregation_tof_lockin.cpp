@@ -6,7 +6,7 @@
 #include "app/bench/bench_util.h"
 #include "core/preset.h"
 #include "core/tof_lockin/config.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::app::bench {
 

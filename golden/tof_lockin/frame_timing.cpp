@@ -38,7 +38,7 @@ FrameTiming frame_timing_tof_lockin(const ParamSet &params) {
   const long long period = std::llround(period_exact);
   // The clock schedule needs T_rep = T0 / duty on the gate-clock grid too (same
   // rule as the clock-level gate generator,
-  // systemc/tof_lockin/lockin_kernel.cpp).
+  // systemc/tof_lockin/lockin_gate_generator_kernel.cpp).
   if (std::fabs(period_exact - static_cast<double>(period)) >
       1e-6 * std::max(1.0, period_exact))
     throw UserError(fmt::format(

@@ -2,13 +2,13 @@
 
 namespace rangesim::systemc {
 
-ReadoutSequencer::ReadoutSequencer(sc_core::sc_module_name name, const FrameTimingConfig& timing, int samplings)
+MultisamplingSequencer::MultisamplingSequencer(sc_core::sc_module_name name, const FrameTimingConfig& timing, int samplings)
     : sc_core::sc_module(name), kernel_(timing, samplings) {
   SC_METHOD(on_clock);
   sensitive << clk_i.pos();
   dont_initialize();
   kernel_.tick(true);  // outputs start as after reset: frame 0, cycle 0 (reset phase)
-  const ReadoutSequencerPins p = kernel_.pins();
+  const MultisamplingSequencerPins p = kernel_.pins();
   pix_reset_o.initialize(p.pix_reset);
   latch_o.initialize(p.latch);
   search_start_o.initialize(p.search_start);
@@ -18,13 +18,13 @@ ReadoutSequencer::ReadoutSequencer(sc_core::sc_module_name name, const FrameTimi
   frame_o.initialize(p.frame);
 }
 
-void ReadoutSequencer::on_clock() {
+void MultisamplingSequencer::on_clock() {
   kernel_.tick(rst_i.read());
   write_pins();
 }
 
-void ReadoutSequencer::write_pins() {
-  const ReadoutSequencerPins p = kernel_.pins();
+void MultisamplingSequencer::write_pins() {
+  const MultisamplingSequencerPins p = kernel_.pins();
   pix_reset_o.write(p.pix_reset);
   latch_o.write(p.latch);
   search_start_o.write(p.search_start);

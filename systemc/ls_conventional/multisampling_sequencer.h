@@ -1,5 +1,5 @@
 #pragma once
-// Clock-level view of the readout sequencer: a thin sc_module around ReadoutSequencerKernel
+// Clock-level view of the readout sequencer: a thin sc_module around MultisamplingSequencerKernel
 // (systemc/readout_sequencer_kernel.h has the schedule). All behaviour is in the kernel.
 #include <systemc>
 
@@ -8,7 +8,7 @@
 
 namespace rangesim::systemc {
 
-class ReadoutSequencer : public sc_core::sc_module {
+class MultisamplingSequencer : public sc_core::sc_module {
  public:
   sc_core::sc_in<bool> clk_i{"clk_i"};                  // rising edge active
   sc_core::sc_in<bool> rst_i{"rst_i"};                  // synchronous, active high
@@ -20,19 +20,19 @@ class ReadoutSequencer : public sc_core::sc_module {
   sc_core::sc_out<unsigned> sampling_o{"sampling_o"};   // k during sampling k, else 0
   sc_core::sc_out<sc_dt::uint64> frame_o{"frame_o"};    // frame-access counter
 
-  SC_HAS_PROCESS(ReadoutSequencer);
+  SC_HAS_PROCESS(MultisamplingSequencer);
   // Throws std::invalid_argument (from the kernel) for a schedule that cannot run.
-  ReadoutSequencer(sc_core::sc_module_name name, const FrameTimingConfig& timing, int samplings);
+  MultisamplingSequencer(sc_core::sc_module_name name, const FrameTimingConfig& timing, int samplings);
 
-  const ReadoutSequencerKernel& kernel() const { return kernel_; }
+  const MultisamplingSequencerKernel& kernel() const { return kernel_; }
   // The pins as the kernel has them (the ports carry the same values one delta later).
-  ReadoutSequencerPins pins() const { return kernel_.pins(); }
+  MultisamplingSequencerPins pins() const { return kernel_.pins(); }
 
  private:
   void on_clock();
   void write_pins();
 
-  ReadoutSequencerKernel kernel_;  // all state and behaviour
+  MultisamplingSequencerKernel kernel_;  // all state and behaviour
 };
 
 }  // namespace rangesim::systemc

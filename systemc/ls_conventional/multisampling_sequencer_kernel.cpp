@@ -20,11 +20,11 @@ const char* readout_phase_name(ReadoutPhase p) {
 
 namespace {
 void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("ReadoutSequencerKernel: " + what);
+  if (!ok) throw std::invalid_argument("MultisamplingSequencerKernel: " + what);
 }
 }  // namespace
 
-ReadoutSequencerKernel::ReadoutSequencerKernel(const FrameTimingConfig& timing, int samplings)
+MultisamplingSequencerKernel::MultisamplingSequencerKernel(const FrameTimingConfig& timing, int samplings)
     : timing_(timing), samplings_(samplings) {
   require(samplings >= 1, "samplings must be >= 1, got " + std::to_string(samplings));
   require(timing.reset_cycles >= 1, "reset_cycles must be >= 1, got " + std::to_string(timing.reset_cycles));
@@ -51,13 +51,13 @@ ReadoutSequencerKernel::ReadoutSequencerKernel(const FrameTimingConfig& timing, 
   pins_ = pins_at(0);
 }
 
-void ReadoutSequencerKernel::tick(bool rst) {
+void MultisamplingSequencerKernel::tick(bool rst) {
   cycle_ = rst ? 0 : cycle_ + 1;
   pins_ = pins_at(cycle_);
 }
 
-ReadoutSequencerPins ReadoutSequencerKernel::pins_at(long long cycle) const {
-  ReadoutSequencerPins p;
+MultisamplingSequencerPins MultisamplingSequencerKernel::pins_at(long long cycle) const {
+  MultisamplingSequencerPins p;
   p.frame = static_cast<std::uint64_t>(cycle / frame_cycles_);
   const long long c = cycle % frame_cycles_;
   const long long R = timing_.reset_cycles, L = timing_.latch_cycles, S = timing_.search_cycles;
@@ -83,14 +83,14 @@ ReadoutSequencerPins ReadoutSequencerKernel::pins_at(long long cycle) const {
   return p;
 }
 
-long long ReadoutSequencerKernel::next_event_cycle() const {
+long long MultisamplingSequencerKernel::next_event_cycle() const {
   const long long c = cycle_in_frame();
   const auto it = std::upper_bound(events_.begin(), events_.end(), c);
   assert(it != events_.end());
   return cycle_ - c + *it;
 }
 
-void ReadoutSequencerKernel::advance_to(long long cycle) {
+void MultisamplingSequencerKernel::advance_to(long long cycle) {
   assert(cycle >= cycle_ && "advance_to goes forward only");
   cycle_ = cycle;
   pins_ = pins_at(cycle_);

@@ -31,7 +31,7 @@ inline constexpr int kReadoutPhases = 5;
 const char* readout_phase_name(ReadoutPhase p);
 
 // Output ports of the sequencer during one cycle.
-struct ReadoutSequencerPins {
+struct MultisamplingSequencerPins {
   ReadoutPhase phase = ReadoutPhase::Reset;
   bool pix_reset = false;     // reset phase
   bool latch = false;         // latch phase (comparator latch)
@@ -39,21 +39,21 @@ struct ReadoutSequencerPins {
   bool frame_done = false;    // last cycle of the frame access
   int sampling = 0;           // k (1..N) during latch/search/stream of sampling k, else 0
   std::uint64_t frame = 0;    // frame-access counter
-  bool operator==(const ReadoutSequencerPins& o) const {
+  bool operator==(const MultisamplingSequencerPins& o) const {
     return phase == o.phase && pix_reset == o.pix_reset && latch == o.latch && search_start == o.search_start &&
            frame_done == o.frame_done && sampling == o.sampling && frame == o.frame;
   }
 };
 
-class ReadoutSequencerKernel {
+class MultisamplingSequencerKernel {
  public:
   // Throws std::invalid_argument naming the field for a schedule that cannot run.
-  ReadoutSequencerKernel(const FrameTimingConfig& timing, int samplings);
+  MultisamplingSequencerKernel(const FrameTimingConfig& timing, int samplings);
 
   // One rising clock edge; synchronous reset back to cycle 0 of frame 0 (which is held while rst).
   void tick(bool rst);
-  const ReadoutSequencerPins& pins() const { return pins_; }  // of the current cycle (cached)
-  ReadoutSequencerPins pins_at(long long cycle) const;
+  const MultisamplingSequencerPins& pins() const { return pins_; }  // of the current cycle (cached)
+  MultisamplingSequencerPins pins_at(long long cycle) const;
 
   long long cycle() const { return cycle_; }                 // cycles since reset release
   long long cycle_in_frame() const { return cycle_ % frame_cycles_; }
@@ -73,7 +73,7 @@ class ReadoutSequencerKernel {
   long long frame_cycles_ = 0;    // F
   std::vector<long long> events_; // cycles within a frame at which pins change (sorted, ends with F)
   long long cycle_ = 0;           // current cycle since reset release
-  ReadoutSequencerPins pins_;     // pins_at(cycle_), recomputed only when the cycle moves
+  MultisamplingSequencerPins pins_;     // pins_at(cycle_), recomputed only when the cycle moves
 };
 
 }  // namespace rangesim::systemc

@@ -118,7 +118,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 long long default_budget(const LsConventionalConfig& c, long long frames) {
-  const ReadoutSequencerKernel seq(c.timing, c.multisampling.samplings);
+  const MultisamplingSequencerKernel seq(c.timing, c.multisampling.samplings);
   return 2 * seq.frame_cycles() * frames + 16;
 }
 }  // namespace

@@ -2,7 +2,7 @@
 // Clock-level SystemC model of the ls-conventional sensor (thesis [31]): the top-level sc_module
 // that connects the block modules exactly as LsConventionalSensorKernel connects their kernels:
 //
-//   ReadoutSequencer --pix_reset/sampling/frame--> PixelArray --act[r]--> RowReadoutArray:
+//   MultisamplingSequencer --pix_reset/sampling/frame--> PixelArray --act[r]--> RowReadoutArray:
 //          |--search_start------------------------------------------->  AddressSearch[r]
 //          |--pix_reset (clear)---------------------------------------> -> CentreProcessor[r]
 //
@@ -56,7 +56,7 @@ class LsConventionalSensor : public sc_core::sc_module {
 
   LsConventionalConfig config_;
   // Block modules.
-  ReadoutSequencer sequencer_;
+  MultisamplingSequencer sequencer_;
   PixelArray pixels_;
   RowReadoutArray rows_;  // every row's address search and centre processor
   // Sequencer outputs.

@@ -39,7 +39,7 @@ LsConventionalSensorKernel::LsConventionalSensorKernel(const LsConventionalConfi
 }
 
 void LsConventionalSensorKernel::settle() {
-  const ReadoutSequencerPins p = sequencer_.pins();
+  const MultisamplingSequencerPins p = sequencer_.pins();
   pixels_.control(p.pix_reset, p.frame, p.sampling);
 }
 
@@ -51,11 +51,11 @@ void LsConventionalSensorKernel::reset() {
   settle();
 }
 
-void LsConventionalSensorKernel::account(const ReadoutSequencerPins& p, long long cycles) {
+void LsConventionalSensorKernel::account(const MultisamplingSequencerPins& p, long long cycles) {
   phase_cycles_[static_cast<std::size_t>(p.phase)] += cycles;
 }
 
-void LsConventionalSensorKernel::finish_frame(const ReadoutSequencerPins& p) {
+void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& p) {
   FrameResult fr;
   fr.frame = p.frame;
   fr.rows.reserve(centre_.size());
@@ -68,7 +68,7 @@ void LsConventionalSensorKernel::finish_frame(const ReadoutSequencerPins& p) {
 }
 
 void LsConventionalSensorKernel::tick() {
-  const ReadoutSequencerPins p = sequencer_.pins();
+  const MultisamplingSequencerPins p = sequencer_.pins();
   account(p, 1);
   const std::size_t rows = search_.size();
   for (std::size_t r = 0; r < rows; ++r) search_pins_[r] = search_[r].pins();
@@ -97,7 +97,7 @@ void LsConventionalSensorKernel::step() {
     tick();
     return;
   }
-  const ReadoutSequencerPins p = sequencer_.pins();
+  const MultisamplingSequencerPins p = sequencer_.pins();
   const long long next = sequencer_.next_event_cycle();
   account(p, next - sequencer_.cycle());
   if (p.frame_done) finish_frame(p);  // a one-cycle interval: the frame's last cycle

@@ -69,7 +69,7 @@ class LsConventionalSensorKernel {
   long long cycle() const { return sequencer_.cycle(); }
   long long ticks() const { return ticks_; }  // clock edges actually evaluated (tick mode)
 
-  const ReadoutSequencerKernel& sequencer() const { return sequencer_; }
+  const MultisamplingSequencerKernel& sequencer() const { return sequencer_; }
   const PixelArrayKernel& pixels() const { return pixels_; }
   const AddressSearchKernel& search(int row) const { return search_[static_cast<std::size_t>(row)]; }
   const CentreProcessorKernel& centre(int row) const { return centre_[static_cast<std::size_t>(row)]; }
@@ -77,12 +77,12 @@ class LsConventionalSensorKernel {
 
  private:
   void settle();                                       // pixel array follows the sequencer's pins
-  void account(const ReadoutSequencerPins& p, long long cycles);
-  void finish_frame(const ReadoutSequencerPins& p);   // in the frame_done cycle
+  void account(const MultisamplingSequencerPins& p, long long cycles);
+  void finish_frame(const MultisamplingSequencerPins& p);   // in the frame_done cycle
 
   LsConventionalConfig config_;
   SensorKernelOptions options_;
-  ReadoutSequencerKernel sequencer_;
+  MultisamplingSequencerKernel sequencer_;
   PixelArrayKernel pixels_;
   std::vector<AddressSearchKernel> search_;     // per row
   std::vector<CentreProcessorKernel> centre_;   // per row

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/tof_lockin/config.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::systemc::lockin {
 

@@ -3,7 +3,7 @@
 
 #include "systemc/tof_lockin/montecarlo.h"
 #include "golden/tof_lockin/pulse_timing.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::mc {
 

@@ -8,7 +8,7 @@
 #include <systemc>
 #include <vector>
 
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::systemc::lockin {
 

@@ -281,7 +281,7 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
   if (req.tick && !req.kernel_only) throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only");
   check_time_step(req, cfg);
   const lk::LockinScene sc = scene::to_lockin_scene(scene::load_scene(req.scene, "tof-lockin"), cfg);
-  { lk::LockinGateKernel check(cfg); }  // T_rep on the gate-clock grid, or UserError before anything is written
+  { lk::LockinGateGeneratorKernel check(cfg); }  // T_rep on the gate-clock grid, or UserError before anything is written
   host.open_output(sc.name);
   const int R = sc.window_rows(cfg), C = sc.window_columns(cfg);
   const lk::LockinSimOptions kopt = kernel_options(req);

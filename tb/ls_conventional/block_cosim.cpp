@@ -234,9 +234,9 @@ class SequencerTop : public sc_core::sc_module {
     const long long cycle = period - (kResetEdges - 1);
     report.cycles = static_cast<std::uint64_t>(cycle + 1);
     const int sb = clog2(small_config().multisampling.samplings + 1);
-    systemc::ReadoutSequencerPins m = kernel_.pins();
+    systemc::MultisamplingSequencerPins m = kernel_.pins();
     m.frame &= 0xffffffffULL;
-    systemc::ReadoutSequencerPins g;
+    systemc::MultisamplingSequencerPins g;
     g.phase = static_cast<systemc::ReadoutPhase>(port_field(phase.read(), 0, 3));
     g.pix_reset = pix_reset.read();
     g.latch = latch.read();
@@ -260,7 +260,7 @@ class SequencerTop : public sc_core::sc_module {
     // Strobes are the transactions: each search start, frame end and reset phase start.
     if (m.search_start || m.frame_done) ++report.transactions;
     if (!(m == g)) {
-      auto str = [](const systemc::ReadoutSequencerPins& p) {
+      auto str = [](const systemc::MultisamplingSequencerPins& p) {
         std::ostringstream s;
         s << "phase " << systemc::readout_phase_name(p.phase) << " pix_reset " << p.pix_reset << " latch " << p.latch
           << " search_start " << p.search_start << " frame_done " << p.frame_done << " sampling " << p.sampling
@@ -273,7 +273,7 @@ class SequencerTop : public sc_core::sc_module {
   }
 
   CosimOptions o_;
-  systemc::ReadoutSequencerKernel kernel_;
+  systemc::MultisamplingSequencerKernel kernel_;
   std::mt19937_64 rng_;
   long long edges_ = 0;
   bool late_ = false;

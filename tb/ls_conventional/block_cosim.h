@@ -3,7 +3,7 @@
 // instance beside its cycle kernel under SystemC, compared pin by pin every cycle:
 //   centre_processor        Vcentre_processor_small vs systemc::CentreProcessorKernel, on random
 //                           address streams (contiguous 2B bits, random gaps) and clears;
-//   multisampling_sequencer Vmultisampling_sequencer_small vs systemc::ReadoutSequencerKernel,
+//   multisampling_sequencer Vmultisampling_sequencer_small vs systemc::MultisamplingSequencerKernel,
 //                           free-running frame accesses with random reset pulses.
 // Each elaborates SystemC: one per process.
 #include "tb/common/cosim_target.h"

@@ -46,7 +46,7 @@ using rangesim::systemc::CentreProcessorPins;
 using rangesim::systemc::FrameStimulus;
 using rangesim::systemc::LsConventionalSensorKernel;
 using rangesim::systemc::ReadoutPhase;
-using rangesim::systemc::ReadoutSequencerPins;
+using rangesim::systemc::MultisamplingSequencerPins;
 
 constexpr int kResetEdges = 3;  // rst high; before its first edge the RTL state is random
 
@@ -157,7 +157,7 @@ class LsCosimTop : public sc_core::sc_module {
   // ---- scoreboard ----
   void add(CosimMismatch m) { board_.add(std::move(m)); }
 
-  static std::string seq_string(const ReadoutSequencerPins& s) {
+  static std::string seq_string(const MultisamplingSequencerPins& s) {
     std::ostringstream o;
     o << "phase " << systemc::readout_phase_name(s.phase) << " pix_reset " << s.pix_reset << " latch " << s.latch
       << " search_start " << s.search_start << " frame_done " << s.frame_done << " sampling " << s.sampling
@@ -182,7 +182,7 @@ class LsCosimTop : public sc_core::sc_module {
     return o.str();
   }
 
-  void compare_streams(const ReadoutSequencerPins& sp) {
+  void compare_streams(const MultisamplingSequencerPins& sp) {
     for (int r = 0; r < rows_; ++r) {
       StreamRecord& m = rec_[0][static_cast<std::size_t>(r)];
       StreamRecord& g = rec_[1][static_cast<std::size_t>(r)];
@@ -212,7 +212,7 @@ class LsCosimTop : public sc_core::sc_module {
     if (period < kResetEdges - 1) return;
     const long long cycle = period - (kResetEdges - 1);
     report_.cycles = static_cast<std::uint64_t>(cycle + 1);
-    const ReadoutSequencerPins sp = kernel_.sequencer().pins();
+    const MultisamplingSequencerPins sp = kernel_.sequencer().pins();
     const long long frame_no = static_cast<long long>(sp.frame);
 
     if (out_out_.is_open()) {
@@ -228,8 +228,8 @@ class LsCosimTop : public sc_core::sc_module {
     }
 
     // Sequencer pins, every cycle.
-    const ReadoutSequencerPins gp = sig.sequencer_pins(fields_);
-    ReadoutSequencerPins mp = sp;
+    const MultisamplingSequencerPins gp = sig.sequencer_pins(fields_);
+    MultisamplingSequencerPins mp = sp;
     mp.frame &= 0xffffffffULL;  // frame_o is 32 bits wide (its wrap is an RTL assertion)
     if (!(gp == mp)) add({"sequencer", frame_no, -1, -1, static_cast<std::uint64_t>(cycle), seq_string(mp), seq_string(gp)});
 
@@ -282,7 +282,7 @@ class LsCosimTop : public sc_core::sc_module {
            what;
   }
 
-  void check_frame(const ReadoutSequencerPins& sp, long long cycle) {
+  void check_frame(const MultisamplingSequencerPins& sp, long long cycle) {
     const long long frame_no = static_cast<long long>(sp.frame);
     const FrameStimulus& stim = kernel_.pixels().stimulus();
     for (int r = 0; r < rows_; ++r) {

@@ -67,8 +67,8 @@ struct LsReadoutSignals {
   }
 
   // The sequencer's pins (frame_o is 32 bits wide).
-  systemc::ReadoutSequencerPins sequencer_pins(const LsReadoutFields& f) const {
-    systemc::ReadoutSequencerPins p;
+  systemc::MultisamplingSequencerPins sequencer_pins(const LsReadoutFields& f) const {
+    systemc::MultisamplingSequencerPins p;
     p.phase = static_cast<systemc::ReadoutPhase>(port_field(phase.read(), 0, 3));
     p.pix_reset = pix_reset.read();
     p.latch = latch.read();

@@ -1,4 +1,4 @@
-// Co-simulation of rtl/column_adc.sv against LockinColumnAdcKernel.
+// Co-simulation of rtl/column_adc.sv against ColumnAdcKernel.
 //
 // The analog side (V_in against the ramp) is the testbench's: in every conversion cycle the
 // falling-edge monitor reads the RTL's ramp DAC code c and drives cmp_i = V_in < (c + 1) LSB,
@@ -16,14 +16,14 @@
 
 #include "Vcolumn_adc.h"
 #include "core/tof_lockin/config.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
 namespace rangesim::tb {
 namespace {
 
-using rangesim::systemc::lockin::LockinColumnAdcKernel;
+using rangesim::systemc::lockin::ColumnAdcKernel;
 
 constexpr const char* kMsgType = "rangesim/cosim/column_adc";
 constexpr int kResetCycles = 3;
@@ -120,7 +120,7 @@ class AdcCosimTop : public sc_core::sc_module {
     // The comparator for this cycle, from the DAC code the RTL shows now.
     // V < (ramp + 1) LSB, in the kernel's arithmetic (floor(V / LSB)): inputs on a code
     // boundary compare as the kernel rounds them.
-    const double lsb = LockinColumnAdcKernel(cur_.cfg).lsb_V();
+    const double lsb = ColumnAdcKernel(cur_.cfg).lsb_V();
     const bool c = in_conv_ && std::floor(cur_.v_in / lsb) <= static_cast<double>(ramp.read());
     cmp.write(c);
     if (record_.is_open()) {
@@ -144,7 +144,7 @@ class AdcCosimTop : public sc_core::sc_module {
     const long long n = conversions_;
     if (check_code_) {
       check_code_ = false;
-      const LockinColumnAdcKernel adc(cur_.cfg);
+      const ColumnAdcKernel adc(cur_.cfg);
       long long got = code.read();
       if (o_.inject_fault == "adc_code_off_by_one" && n == 2) {
         got += got < adc.top_code() ? 1 : -1;

@@ -25,7 +25,7 @@
 #include "Vtof_lockin_sequencer.h"
 #include "core/tof_lockin/config.h"
 #include "golden/tof_lockin/pulse_timing.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
@@ -218,7 +218,7 @@ class LockinCosimTop : public sc_core::sc_module {
   }
 
   void stimulus() {
-    const LockinGateKernel g(s_.cfg);
+    const LockinGateGeneratorKernel g(s_.cfg);
     t0.write(static_cast<std::uint32_t>(g.t0_cycles()));
     period.write(static_cast<std::uint32_t>(g.period_cycles()));
     acc_n.write(static_cast<std::uint32_t>(g.accumulations()));
@@ -339,7 +339,7 @@ class LockinCosimTop : public sc_core::sc_module {
   Setup s_;
   TofLockinSensorKernel kernel_;  // reference, stepped once per cycle
   TofLockinSensorKernel ahead_;   // same run, finished up front (drives the comparators)
-  LockinColumnAdcKernel adc_;
+  ColumnAdcKernel adc_;
   bool started_ = false;          // start_i seen: the kernel steps from the next cycle
   std::uint64_t cycle_ = 0;
   bool prev_tx2_ = false;         // RTL tx2 of the previous cycle (fault injection)

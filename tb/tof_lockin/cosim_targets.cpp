@@ -17,11 +17,11 @@ std::vector<CosimTarget> tof_lockin_cosim_targets() {
        {"gate_shift", "adc_code_off_by_one"},
        &run_tof_lockin_cosim},
       {"lockin_gate_generator",
-       "PHASE1/2/3 (TX1/TX2/TXD) and light pulse vs LockinGateKernel, random T0/duty/N_acc",
+       "PHASE1/2/3 (TX1/TX2/TXD) and light pulse vs LockinGateGeneratorKernel, random T0/duty/N_acc",
        {"gate_shift", "period_change_while_busy"},
        &gate_generator},
       {"column_adc",
-       "single-slope column ADC counter vs LockinColumnAdcKernel, random resolution/inputs",
+       "single-slope column ADC counter vs ColumnAdcKernel, random resolution/inputs",
        {"adc_code_off_by_one"},
        &column_adc},
   };

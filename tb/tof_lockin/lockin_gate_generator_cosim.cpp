@@ -1,4 +1,4 @@
-// Co-simulation of rtl/lockin_gate_generator.sv against LockinGateKernel (tick by tick).
+// Co-simulation of rtl/lockin_gate_generator.sv against LockinGateGeneratorKernel (tick by tick).
 //
 // Timing: stimulus drives right after a rising edge; one SC_METHOD on the falling edge samples
 // the RTL pins, compares them with the kernel's state for this cycle, then advances the kernel
@@ -17,14 +17,14 @@
 
 #include "Vlockin_gate_generator.h"
 #include "core/tof_lockin/config.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
 namespace rangesim::tb {
 namespace {
 
-using rangesim::systemc::lockin::LockinGateKernel;
+using rangesim::systemc::lockin::LockinGateGeneratorKernel;
 
 constexpr const char* kMsgType = "rangesim/cosim/lockin_gate_generator";
 constexpr int kResetCycles = 3;
@@ -118,7 +118,7 @@ class GateCosimTop : public sc_core::sc_module {
     while (true) {
       for (int g = gap(rng_); g > 0; --g) wait();
       const TofLockinConfig cfg = random_gate_config(rng_);
-      const LockinGateKernel k(cfg);
+      const LockinGateGeneratorKernel k(cfg);
       t0.write(static_cast<std::uint32_t>(k.t0_cycles()));
       period.write(static_cast<std::uint32_t>(k.period_cycles()));
       acc_n.write(static_cast<std::uint32_t>(k.accumulations()));
@@ -212,7 +212,7 @@ class GateCosimTop : public sc_core::sc_module {
   CosimScoreboard sb_;
   std::mt19937_64 rng_;                  // stimulus
   TofLockinConfig pending_;              // parameters of the operation being started
-  std::optional<LockinGateKernel> kernel_;  // reference for the current operation
+  std::optional<LockinGateGeneratorKernel> kernel_;  // reference for the current operation
   std::uint64_t cycle_ = 0;              // cycles seen by the monitor
   long long op_ = 0;                     // operations completed by the model
   long long ops_started_ = 0;

@@ -1,9 +1,9 @@
 #pragma once
 // Co-simulation targets of the tof-lockin readout RTL against the SystemC cycle kernels
-// (systemc/tof_lockin/lockin_kernel.h). Each elaborates SystemC: one run per process.
-//   lockin_gate_generator  rtl/lockin_gate_generator.sv vs LockinGateKernel: gate pins every
+// (systemc/tof_lockin/sensor_kernel.h). Each elaborates SystemC: one run per process.
+//   lockin_gate_generator  rtl/lockin_gate_generator.sv vs LockinGateGeneratorKernel: gate pins every
 //                          cycle, gate edges as transactions; faults: gate_shift
-//   column_adc             rtl/column_adc.sv vs LockinColumnAdcKernel: codes and conversion
+//   column_adc             rtl/column_adc.sv vs ColumnAdcKernel: codes and conversion
 //                          ends; faults: adc_code_off_by_one
 //   tof-lockin             rtl/tof_lockin_sequencer.sv + column_adc per tap and column vs
 //                          TofLockinSensorKernel in tick mode: phases, gate pins, rows,

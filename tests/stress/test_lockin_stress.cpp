@@ -22,7 +22,7 @@
 #include "golden/tof_lockin/tap_charge.h"
 #include "stress_gen.h"
 #include "stress_print.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::golden {
 namespace {

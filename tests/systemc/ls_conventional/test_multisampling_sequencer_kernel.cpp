@@ -1,4 +1,4 @@
-// ReadoutSequencerKernel: the schedule counted tick by tick equals golden::frame_timing, phase
+// MultisamplingSequencerKernel: the schedule counted tick by tick equals golden::frame_timing, phase
 // by phase and in total, for samplings 1..8 and varied cycle parameters; event skipping
 // (next_event_cycle / advance_to) visits exactly the cycles where the ticked pins change.
 #include <gtest/gtest.h>
@@ -36,10 +36,10 @@ std::vector<FrameTimingConfig> timing_variants() {
 
 }  // namespace
 
-TEST(ReadoutSequencerKernel, TickedScheduleEqualsGoldenFrameTiming) {
+TEST(MultisamplingSequencerKernel, TickedScheduleEqualsGoldenFrameTiming) {
   for (const FrameTimingConfig& t : timing_variants()) {
     for (int N = 1; N <= 8; ++N) {
-      rs::ReadoutSequencerKernel k(t, N);
+      rs::MultisamplingSequencerKernel k(t, N);
       k.tick(true);
       const rangesim::golden::FrameTiming g = rangesim::golden::frame_timing(t, N);
       ASSERT_EQ(k.frame_cycles(), g.frame_cycles);
@@ -48,7 +48,7 @@ TEST(ReadoutSequencerKernel, TickedScheduleEqualsGoldenFrameTiming) {
         long long cycles = 0, latches = 0, starts = 0, done = 0;
         int last_sampling = 0;
         for (;;) {
-          const rs::ReadoutSequencerPins p = k.pins();
+          const rs::MultisamplingSequencerPins p = k.pins();
           ASSERT_EQ(p.frame, static_cast<std::uint64_t>(frame));
           ++counted[static_cast<std::size_t>(p.phase)];
           ++cycles;
@@ -84,14 +84,14 @@ TEST(ReadoutSequencerKernel, TickedScheduleEqualsGoldenFrameTiming) {
   }
 }
 
-TEST(ReadoutSequencerKernel, EventSkippingVisitsExactlyThePinChanges) {
+TEST(MultisamplingSequencerKernel, EventSkippingVisitsExactlyThePinChanges) {
   for (const FrameTimingConfig& t : timing_variants()) {
     for (int N : {1, 3, 8}) {
-      rs::ReadoutSequencerKernel ticked(t, N), skipped(t, N);
+      rs::MultisamplingSequencerKernel ticked(t, N), skipped(t, N);
       ticked.tick(true);
       skipped.tick(true);
       const long long end = 3 * ticked.frame_cycles();
-      rs::ReadoutSequencerPins prev = ticked.pins();
+      rs::MultisamplingSequencerPins prev = ticked.pins();
       while (skipped.cycle() < end) {
         const long long next = skipped.next_event_cycle();
         ASSERT_GT(next, skipped.cycle());
@@ -110,8 +110,8 @@ TEST(ReadoutSequencerKernel, EventSkippingVisitsExactlyThePinChanges) {
   }
 }
 
-TEST(ReadoutSequencerKernel, ResetHoldsCycleZeroAndRejectsBadSchedules) {
-  rs::ReadoutSequencerKernel k(FrameTimingConfig{}, 4);
+TEST(MultisamplingSequencerKernel, ResetHoldsCycleZeroAndRejectsBadSchedules) {
+  rs::MultisamplingSequencerKernel k(FrameTimingConfig{}, 4);
   k.tick(false);
   k.tick(false);
   k.tick(true);
@@ -121,6 +121,6 @@ TEST(ReadoutSequencerKernel, ResetHoldsCycleZeroAndRejectsBadSchedules) {
   EXPECT_EQ(k.pins().frame, 0U);
   FrameTimingConfig bad;
   bad.latch_cycles = 0;
-  EXPECT_THROW(rs::ReadoutSequencerKernel(bad, 4), std::invalid_argument);
-  EXPECT_THROW(rs::ReadoutSequencerKernel(FrameTimingConfig{}, 0), std::invalid_argument);
+  EXPECT_THROW(rs::MultisamplingSequencerKernel(bad, 4), std::invalid_argument);
+  EXPECT_THROW(rs::MultisamplingSequencerKernel(FrameTimingConfig{}, 0), std::invalid_argument);
 }

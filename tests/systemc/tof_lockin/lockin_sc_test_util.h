@@ -10,7 +10,7 @@
 #include "core/preset.h"
 #include "core/tof_lockin/config.h"
 #include "golden/tof_lockin/pulse_timing.h"
-#include "systemc/tof_lockin/lockin_kernel.h"
+#include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::systemc::lockin::test {
 

@@ -90,13 +90,13 @@ TEST(LockinTiming, PresetFrameRateIsThePublished30fps) {
 TEST(LockinTiming, PeriodOffTheClockGridIsAUserError) {
   const TofLockinConfig cfg =
       test::edited_config({{"source", "duty_cycle", "0.3"}});
-  EXPECT_THROW(LockinGateKernel{cfg}, rangesim::UserError);
+  EXPECT_THROW(LockinGateGeneratorKernel{cfg}, rangesim::UserError);
 }
 
 TEST(LockinGates, PatternOfOnePeriod) {
   const TofLockinConfig cfg = test::edited_config(
       {{"source", "pulse_width_s", "40e-9"}}); // 4 + 4 + 32 cycles
-  LockinGateKernel g(cfg);
+  LockinGateGeneratorKernel g(cfg);
   g.start();
   for (long long c = 0; c < g.period_cycles(); ++c) {
     EXPECT_EQ(g.tx1(), c < 4) << c;
