@@ -97,8 +97,8 @@ McBenchFigures measure_mc_bench(bool quick) {
       const double x0 = row.centre_pixel - 0.5 + rangesim::mc::trial_uniform(key, static_cast<std::uint64_t>(t));
       for (long long j = 0; j < per_trial; ++j) {
         const int col = first + static_cast<int>(j);
-        pcg32 rng = systemc::pixel_stream(systemc::pixel_stream_key(key, static_cast<std::uint64_t>(t), 0,
-                                                                    static_cast<std::uint32_t>(col)));
+        pcg32 rng = systemc::pixel_stream(
+            systemc::pixel_stream_key(key, static_cast<std::uint64_t>(t), 0, static_cast<std::uint32_t>(col)));
         double ktc = 0, read = 0;
         systemc::standard_normal_pair(rng, ktc, read);
         sink += ktc + read;

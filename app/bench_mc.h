@@ -23,7 +23,7 @@ struct McBenchFigures {
   // threads over 1 is ~1 unless the threads slow each other down (caches, allocator, SMT siblings).
   double sweep_1thread_cpu_s = 0, sweep_2threads_cpu_s = 0;
   double cpu_share_2threads = 0, cpu_2threads_vs_1 = 0;
-  double load_average_1min = -1;   // of the machine just before the sweeps (-1: unknown)
+  double load_average_1min = -1;  // of the machine just before the sweeps (-1: unknown)
 };
 
 // Throws std::runtime_error if the 1- and 2-thread sweeps differ in any bit.

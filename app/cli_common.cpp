@@ -33,7 +33,8 @@ GridAxis parse_grid_axis(const std::string& text, const std::string& flag) {
   if (!std::isfinite(g.lo) || !std::isfinite(g.hi))
     throw UserError(fmt::format("{} {}: LO and HI must be finite numbers; allowed: 0 < LO <= HI", flag, text));
   if (!(g.lo > 0))
-    throw UserError(fmt::format("{} {}: LO = {:g} must be > 0 (log-spaced grid); allowed: 0 < LO <= HI", flag, text, g.lo));
+    throw UserError(
+        fmt::format("{} {}: LO = {:g} must be > 0 (log-spaced grid); allowed: 0 < LO <= HI", flag, text, g.lo));
   if (g.lo > g.hi)
     throw UserError(fmt::format("{} {}: LO = {:g} > HI = {:g}; allowed: 0 < LO <= HI", flag, text, g.lo, g.hi));
   if (!(n >= 1 && n <= 10000 && n == std::floor(n)))

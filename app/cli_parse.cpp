@@ -29,10 +29,14 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   list->add_flag("--json", list_opt.json, "Print JSON");
 
   ShowOptions& show_opt = c.show;
-  auto* show = app.add_subcommand("show", "Show a preset's resolved parameters with units, sources and the file each came from");
+  auto* show =
+      app.add_subcommand("show", "Show a preset's resolved parameters with units, sources and the file each came from");
   show->add_option("preset", show_opt.preset, "Preset id or path to a .toml file")->required();
   show->add_flag("--json", show_opt.json, "Print JSON");
-  show->add_option("--set", show_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")->type_name("KEY=VALUE");
+  show->add_option("--set", show_opt.settings,
+                   "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set "
+                   "timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")
+      ->type_name("KEY=VALUE");
 
   EvaluateOptions& ev_opt = c.evaluate;
   auto* ev = app.add_subcommand(
@@ -41,13 +45,17 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "detectable area with reasons, accuracy map, SBR' both ways, dynamic ranges, 1-D sweeps. Writes CSV\n"
       "maps, summary.json, heat maps and line plots (PNG, SVG) into --out.");
   ev->add_option("sensor", ev_opt.sensor, "Preset id or path to a .toml file")->required();
-  ev->add_option("--set", ev_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")->type_name("KEY=VALUE");
+  ev->add_option("--set", ev_opt.settings,
+                 "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked "
+                 "like a preset value (`rangesim show <sensor>` lists the keys)")
+      ->type_name("KEY=VALUE");
   ev->add_option("--signal", ev_opt.signal,
                  "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
                  "tof-lockin), Hz count rate (tof-spad) (default: preset)");
   ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
   ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)");
-  ev->add_option("--adc-bits", ev_opt.adc_bits, "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)");
+  ev->add_option("--adc-bits", ev_opt.adc_bits,
+                 "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)");
   ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)");
   ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)");
   ev->add_flag("--json", ev_opt.json, "Print summary.json to stdout instead of the table");
@@ -75,7 +83,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   fr->add_option("sensor", fr_opt.sensor, "Preset id or path to a .toml file")->required();
   fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)");
   fr->add_flag("--json", fr_opt.json, "Print JSON");
-  fr->add_option("--set", fr_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked like a preset value (`rangesim show <sensor>` lists the keys)")->type_name("KEY=VALUE");
+  fr->add_option("--set", fr_opt.settings,
+                 "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked "
+                 "like a preset value (`rangesim show <sensor>` lists the keys)")
+      ->type_name("KEY=VALUE");
 
   SimulateOptions& sim_opt = c.simulate;
   auto* sim = app.add_subcommand(
@@ -84,20 +95,29 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "error against the scene's ground truth, per-frame cycle counts by phase and the frame rate measured\n"
       "from simulated time beside the clock schedule. Writes range_map.csv/.png, points.csv, frames.csv and\n"
       "summary.json into --out.");
-  sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")
+  sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")->required();
+  sim->add_option("--scene", sim_opt.scene,
+                  "Scene file (TOML) for the sensor: scenes/plane.toml (ls-conventional), scenes/<sensor>-plane.toml; "
+                  "target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
       ->required();
-  sim->add_option("--scene", sim_opt.scene, "Scene file (TOML) for the sensor: scenes/plane.toml (ls-conventional), scenes/<sensor>-plane.toml; target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")->required();
-  sim->add_option("--frames", sim_opt.frames, "Frame accesses to simulate (default: one range map = timing.beam_positions)");
+  sim->add_option("--frames", sim_opt.frames,
+                  "Frame accesses to simulate (default: one range map = timing.beam_positions)");
   sim->add_option("--seed", sim_opt.seed, "Seed of the noise streams (default: 1)");
-  sim->add_option("--set", sim_opt.settings, "Set a parameter after the preset, KEY=VALUE (repeatable), checked like a preset value")
+  sim->add_option("--set", sim_opt.settings,
+                  "Set a parameter after the preset, KEY=VALUE (repeatable), checked like a preset value")
       ->type_name("KEY=VALUE");
-  sim->add_option("--trace", sim_opt.trace, "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the gtkwave package); off by default");
+  sim->add_option("--trace", sim_opt.trace,
+                  "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
+                  "gtkwave package); off by default");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)");
   sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");
   sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");
-  sim->add_flag("--tick,--no-event-skip", sim_opt.tick, "With --kernel-only: evaluate every clock cycle (event skipping off)");
+  sim->add_flag("--tick,--no-event-skip", sim_opt.tick,
+                "With --kernel-only: evaluate every clock cycle (event skipping off)");
   sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
-  sim->add_flag("--dense,--no-sparse", sim_opt.dense, "Simulate every pixel one by one (sparse pixels off: no window around the beam; tof-spad: background-only pixels not drawn as one class)");
+  sim->add_flag("--dense,--no-sparse", sim_opt.dense,
+                "Simulate every pixel one by one (sparse pixels off: no window around the beam; tof-spad: "
+                "background-only pixels not drawn as one class)");
   sim->add_flag("--no-aggregate", sim_opt.no_aggregate,
                 "ls-demodulation: step the N correlation periods of each window one by one instead of one jump\n"
                 "(golden's exact sum, one shot-noise draw per integrator; --tick always steps them);\n"
@@ -116,7 +136,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "and why they differ), plus the chips' published figures with their status");
   tb->add_flag("--json", tb_opt.json, "Print JSON (table and published figures)");
   tb->add_flag("--published", tb_opt.published, "Also list the published figures on the terminal");
-  tb->add_option("--out", tb_opt.out, "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
+  tb->add_option("--out", tb_opt.out,
+                 "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
 
   BenchOptions& bench_opt = c.bench;
   auto* bench = app.add_subcommand(
@@ -128,7 +149,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "in one run beside its target. Writes bench.json, figures.md, pareto.md/.csv/.png/.svg into --out.\n"
       "Exit code 1 if an identity check inside the bench failed (speed targets are reported, not enforced).\n"
       "docs/bench.md explains every figure.");
-  bench->add_flag("--quick", bench_opt.quick, "Fewer frames for the slow references: the same keys in under two minutes");
+  bench->add_flag("--quick", bench_opt.quick,
+                  "Fewer frames for the slow references: the same keys in under two minutes");
   bench->add_flag("--json", bench_opt.json, "Print bench.json to stdout instead of the tables");
   bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)");
   bench->add_flag("--resume", bench_opt.resume,
@@ -147,9 +169,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sw->add_option("--vary", sw_opt.vary,
                  "KEY=LO:HI:N (linear), KEY=LO:HI:N:log or KEY=v1,v2,... (repeatable; integer keys take the\n"
                  "nearest integers of a range); the variants are the cross product, first --vary outermost")
-      ->type_name("KEY=SPEC")->required();
+      ->type_name("KEY=SPEC")
+      ->required();
   sw->add_flag("--zip", sw_opt.zip, "Take the i-th value of every --vary together instead of the cross product");
-  sw->add_option("--set", sw_opt.settings, "Set a parameter of every variant, KEY=VALUE (repeatable)")->type_name("KEY=VALUE");
+  sw->add_option("--set", sw_opt.settings, "Set a parameter of every variant, KEY=VALUE (repeatable)")
+      ->type_name("KEY=VALUE");
   sw->add_option("--shard", sw_opt.shard,
                  "K/N: compute only the variants i with i mod N = K-1 and write sweep.shard-K-of-N.json\n"
                  "(batch arrays; `rangesim merge` combines the N shards into the unsharded output)");
@@ -185,16 +209,20 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input,\n"
       "130 interrupted (Ctrl-C; 'all' keeps its journal and prints the command that resumes).");
   co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), 'all', or a preset file (.toml)");
-  co->add_option("--cycles", co_opt.cycles, "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
+  co->add_option("--cycles", co_opt.cycles,
+                 "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
   co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
   co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
   co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");
-  co->add_option("--inject-fault", co_opt.inject_fault,
-                 "Run with this named fault of the target (see --list; a preset takes its sensor's); it must be reported");
-  co->add_flag("--json", co_opt.json, "Print JSON (keys cycles, transactions, mismatches, coverage_line, coverage_toggle, ...)");
+  co->add_option(
+      "--inject-fault", co_opt.inject_fault,
+      "Run with this named fault of the target (see --list; a preset takes its sensor's); it must be reported");
+  co->add_flag("--json", co_opt.json,
+               "Print JSON (keys cycles, transactions, mismatches, coverage_line, coverage_toggle, ...)");
   co->add_flag("--list", co_opt.list, "List the targets and their faults");
-  co->add_option("--journal", co_opt.journal,
-                 "'all': journal of the finished targets (default: rangesim-out/cosim/all.journal; removed on completion)");
+  co->add_option(
+      "--journal", co_opt.journal,
+      "'all': journal of the finished targets (default: rangesim-out/cosim/all.journal; removed on completion)");
   co->add_flag("--resume", co_opt.resume,
                "'all': continue a killed or interrupted run from its journal (same options); the report equals an\n"
                "uninterrupted run's apart from wall times");
@@ -227,16 +255,26 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
     return result;
   }
 
-  if (*list) c.kind = CommandKind::List;
-  else if (*show) c.kind = CommandKind::Show;
-  else if (*ev) c.kind = CommandKind::Evaluate;
-  else if (*fr) c.kind = CommandKind::FrameRate;
-  else if (*tb) c.kind = CommandKind::Table;
-  else if (*sim) c.kind = CommandKind::Simulate;
-  else if (*bench) c.kind = CommandKind::Bench;
-  else if (*co) c.kind = CommandKind::Cosim;
-  else if (*sw) c.kind = CommandKind::Sweep;
-  else if (*mg) c.kind = CommandKind::Merge;
+  if (*list)
+    c.kind = CommandKind::List;
+  else if (*show)
+    c.kind = CommandKind::Show;
+  else if (*ev)
+    c.kind = CommandKind::Evaluate;
+  else if (*fr)
+    c.kind = CommandKind::FrameRate;
+  else if (*tb)
+    c.kind = CommandKind::Table;
+  else if (*sim)
+    c.kind = CommandKind::Simulate;
+  else if (*bench)
+    c.kind = CommandKind::Bench;
+  else if (*co)
+    c.kind = CommandKind::Cosim;
+  else if (*sw)
+    c.kind = CommandKind::Sweep;
+  else if (*mg)
+    c.kind = CommandKind::Merge;
   return result;
 }
 

@@ -37,16 +37,23 @@ struct FigureSpec {
 };
 const FigureSpec kFigures[] = {
     {"sparse_vs_dense", ">= 20", "ls-conventional map: dense / sparse CPU time per frame access, bit-identical output"},
-    {"model_vs_rtl", ">= 100", "RTL readout CPU time / clock-level model CPU time per frame access, identical addresses and cycles"},
+    {"model_vs_rtl", ">= 100",
+     "RTL readout CPU time / clock-level model CPU time per frame access, identical addresses and cycles"},
     {"touch_limit_ratio", "<= 4", "model time / a loop reading each lit pixel once per sampling"},
     {"systemc_vs_kernel", ">= 0.5", "bare kernel time / SystemC module time (both per clock)"},
     {"mc_vs_bare_rng", ">= 0.5", "Monte Carlo sweep variates per second / bare loop drawing them"},
-    {"aggregated_vs_per_clock_lockin", ">= 1000", "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
-    {"aggregated_vs_per_clock_spad", ">= 1000", "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
-    {"sparse_vs_dense_spad", ">= 5", "tof-spad beam spot: dense / sparse CPU time per frame (background-only groups as one class), lit pixels identical"},
-    {"aggregated_vs_per_clock_demod", ">= 1000", "ls-demodulation per-period frame time / aggregated frame time (N = 10,000 periods), statistically identical"},
+    {"aggregated_vs_per_clock_lockin", ">= 1000",
+     "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
+    {"aggregated_vs_per_clock_spad", ">= 1000",
+     "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
+    {"sparse_vs_dense_spad", ">= 5",
+     "tof-spad beam spot: dense / sparse CPU time per frame (background-only groups as one class), lit pixels "
+     "identical"},
+    {"aggregated_vs_per_clock_demod", ">= 1000",
+     "ls-demodulation per-period frame time / aggregated frame time (N = 10,000 periods), statistically identical"},
     {"threads2_vs_1", ">= 1.8", "Monte Carlo sweep time with 1 thread / with 2 threads"},
-    {"realtime_factor", "report (chip 1.0)", "simulated time / CPU time of the ls-conventional map (full 375 frame accesses)"},
+    {"realtime_factor", "report (chip 1.0)",
+     "simulated time / CPU time of the ls-conventional map (full 375 frame accesses)"},
 };
 
 std::string value_text(const json& v) { return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "null"; }
@@ -60,9 +67,10 @@ std::string pareto_script(const std::string& data, const std::string& ext, const
       "set key outside right top\nset grid\nplot ",
       ext == "png" ? "pngcairo" : "svg", path);
   for (std::size_t i = 0; i < sensors.size(); ++i)
-    s += fmt::format("{}'{}' index {} using 1:2 with points pt {} ps 1.5 title '{}', '' index {} using 1:2:3 with labels "
-                     "font ',7' offset 0,0.8 notitle",
-                     i ? ", " : "", data, i, 5 + 2 * i, sensors[i], i);
+    s += fmt::format(
+        "{}'{}' index {} using 1:2 with points pt {} ps 1.5 title '{}', '' index {} using 1:2:3 with labels "
+        "font ',7' offset 0,0.8 notitle",
+        i ? ", " : "", data, i, 5 + 2 * i, sensors[i], i);
   return s + "\n";
 }
 
@@ -73,7 +81,8 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
   const std::string data = out.scratch("pareto.dat");
   std::ofstream(data) << pareto_gnuplot_data(rows);
   std::string script;
-  for (const char* ext : {"png", "svg"}) script += pareto_script(data, ext, out.staged(fmt::format("pareto.{}", ext)), pareto_sensors(rows));
+  for (const char* ext : {"png", "svg"})
+    script += pareto_script(data, ext, out.staged(fmt::format("pareto.{}", ext)), pareto_sensors(rows));
   const std::string gp = out.scratch("pareto.gp");
   std::ofstream(gp) << script;
   if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0)
@@ -112,14 +121,18 @@ int run_bench(const BenchOptions& opt) {
   // continues with --resume and measures only what is missing.
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
   SweepJournal journal(journal_dir + "/bench.journal",
-                       fmt::format("rangesim bench\nquick {}\nrtl {}\n", opt.quick, RANGESIM_BENCH_HAS_RTL != 0), opt.resume);
+                       fmt::format("rangesim bench\nquick {}\nrtl {}\n", opt.quick, RANGESIM_BENCH_HAS_RTL != 0),
+                       opt.resume);
   if (opt.resume) remove_stale_staging(dir);
-  if (!journal.done().empty()) progress(fmt::format("resuming: {} results from {}", journal.done().size(), journal.path()));
+  if (!journal.done().empty())
+    progress(fmt::format("resuming: {} results from {}", journal.done().size(), journal.path()));
   progress(fmt::format("start ({} run); output into {}", opt.quick ? "quick" : "full", out.dir()));
   SigintGuard sigint;  // the children die of Ctrl-C; the bench stops after them
   const auto interrupted = [&] {
-    fmt::print(stderr, "rangesim bench: interrupted; {} results kept in {}; continue with:\n  rangesim bench{} --out {} --resume\n",
-               journal.done().size(), journal.path(), opt.quick ? " --quick" : "", shell_quote(dir));
+    fmt::print(
+        stderr,
+        "rangesim bench: interrupted; {} results kept in {}; continue with:\n  rangesim bench{} --out {} --resume\n",
+        journal.done().size(), journal.path(), opt.quick ? " --quick" : "", shell_quote(dir));
     return kExitInterrupted;
   };
   // A figure group from the journal, or measured now and journaled.
@@ -136,7 +149,9 @@ int run_bench(const BenchOptions& opt) {
   try {
     pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
     if (sigint_flag()) return interrupted();
-    ls = group(kJournalLs, [&] { return bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0}); });
+    ls = group(kJournalLs, [&] {
+      return bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0});
+    });
     if (sigint_flag()) return interrupted();
     lockin = group(kJournalLockin, [&] { return bench_aggregation_lockin(opt.quick); });
     if (sigint_flag()) return interrupted();
@@ -163,8 +178,10 @@ int run_bench(const BenchOptions& opt) {
         ParetoRow x = r;
         x.setting = "verilated RTL readout";
         x.harness = "rtl";
-        const double per_frame = ls["model_vs_rtl"]["rtl_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
-        const double wall_per_frame = ls["model_vs_rtl"]["rtl_wall_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
+        const double per_frame =
+            ls["model_vs_rtl"]["rtl_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
+        const double wall_per_frame =
+            ls["model_vs_rtl"]["rtl_wall_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
         x.cpu_s = per_frame * static_cast<double>(r.frames);
         x.wall_s = wall_per_frame * static_cast<double>(r.frames);
         x.note = fmt::format("RTL time of {} frame accesses scaled to {}; error as the model (identical addresses)",
@@ -184,11 +201,14 @@ int run_bench(const BenchOptions& opt) {
   details["sparse_vs_dense_spad"] = spad_sparse;
   checks["spad_sparse_cycles_identical"] = spad_sparse["cycles_identical"].get<bool>();
   checks["spad_sparse_lit_pixels_identical"] = spad_sparse["lit_pixels_identical"].get<bool>();
-  checks["spad_sparse_background_statistically_identical"] = spad_sparse["background_statistically_identical"].get<bool>();
+  checks["spad_sparse_background_statistically_identical"] =
+      spad_sparse["background_statistically_identical"].get<bool>();
   details["aggregated_vs_per_clock_demod"] = demod;
   checks["demod_aggregated_statistically_identical"] = demod["statistically_identical"].get<bool>();
-  details["mc_vs_bare_rng"] = json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
-  details["threads2_vs_1"] = json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
+  details["mc_vs_bare_rng"] =
+      json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
+  details["threads2_vs_1"] =
+      json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
   if (!mc.details.is_null()) details["monte_carlo"] = mc.details;
   checks["mc_threads_bit_identical"] = mc.threads2_vs_1.has_value();
 
@@ -207,9 +227,11 @@ int run_bench(const BenchOptions& opt) {
   j["wall_s"] = seconds_since(t0);
 
   std::string figures_md = "| figure | value | target | meaning |\n|---|---:|---|---|\n";
-  for (const auto& f : kFigures) figures_md += fmt::format("| `{}` | {} | {} | {} |\n", f.key, value_text(j[f.key]), f.target, f.meaning);
+  for (const auto& f : kFigures)
+    figures_md += fmt::format("| `{}` | {} | {} | {} |\n", f.key, value_text(j[f.key]), f.target, f.meaning);
   std::string checks_md;
-  for (const auto& [k, v] : checks.items()) checks_md += fmt::format("- {}: {}\n", k, v.get<bool>() ? "passed" : "FAILED");
+  for (const auto& [k, v] : checks.items())
+    checks_md += fmt::format("- {}: {}\n", k, v.get<bool>() ? "passed" : "FAILED");
 
   out.write("bench.json", j.dump(2) + "\n");
   out.write("figures.md", figures_md);
@@ -225,8 +247,9 @@ int run_bench(const BenchOptions& opt) {
   if (opt.json) {
     std::cout << j.dump(2) << "\n";
   } else {
-    fmt::print("rangesim bench ({}), {:.1f} s; files in {}\n\n{}\nIdentity checks:\n{}\n{}", opt.quick ? "quick" : "full",
-               seconds_since(t0), out.dir(), figures_md, checks_md, pareto_markdown(pareto));
+    fmt::print("rangesim bench ({}), {:.1f} s; files in {}\n\n{}\nIdentity checks:\n{}\n{}",
+               opt.quick ? "quick" : "full", seconds_since(t0), out.dir(), figures_md, checks_md,
+               pareto_markdown(pareto));
   }
   if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
   if (!all_ok) fmt::print(stderr, "rangesim: bench: an identity check failed (see checks in bench.json)\n");

@@ -87,11 +87,17 @@ json report_json(const tb::CosimReport& r, const tb::RtlCoverage& cov, const std
   j["coverage_line"] = percent_or_null(cov.line_hit, cov.line_points);
   j["coverage_toggle"] = percent_or_null(cov.toggle_hit, cov.toggle_points);
   j["coverage"] = coverage_json(cov);
-  j["fault"] = fault.empty() ? json(nullptr) : json{{"name", fault}, {"injected", r.fault_injected}, {"site", r.fault_site}};
+  j["fault"] =
+      fault.empty() ? json(nullptr) : json{{"name", fault}, {"injected", r.fault_injected}, {"site", r.fault_site}};
   json ms = json::array();
   for (const auto& m : r.first_mismatches)
-    ms.push_back({{"check", m.check}, {"frame", m.frame}, {"row", m.row}, {"column", m.column}, {"cycle", m.cycle},
-                  {"expected", m.expected}, {"actual", m.actual}});
+    ms.push_back({{"check", m.check},
+                  {"frame", m.frame},
+                  {"row", m.row},
+                  {"column", m.column},
+                  {"cycle", m.cycle},
+                  {"expected", m.expected},
+                  {"actual", m.actual}});
   j["first_mismatches"] = ms;
   j["wall_time_s"] = wall_s;
   return j;
@@ -120,7 +126,9 @@ std::string mismatch_line(const json& m) {
 }
 
 void print_text(const json& r) {
-  auto pct = [](const json& v) { return v.is_null() ? std::string("n/a (uninstrumented)") : fmt::format("{:.1f} %", v.get<double>()); };
+  auto pct = [](const json& v) {
+    return v.is_null() ? std::string("n/a (uninstrumented)") : fmt::format("{:.1f} %", v.get<double>());
+  };
   fmt::print("cosim {}: {}\n", r["target"].get<std::string>(), passed(r) ? "PASS" : "FAIL");
   fmt::print("  cycles compared      {}\n", r["cycles"].get<unsigned long long>());
   fmt::print("  transactions matched {} of {}\n",
@@ -163,17 +171,19 @@ std::string junit_xml(const std::vector<json>& runs) {
     total += r["wall_time_s"].get<double>();
   }
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", runs.size(), failures, total);
-  x += fmt::format("  <testsuite name=\"rangesim.cosim\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n", runs.size(),
+  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", runs.size(),
                    failures, total);
+  x += fmt::format("  <testsuite name=\"rangesim.cosim\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
+                   runs.size(), failures, total);
   for (const auto& r : runs) {
     x += fmt::format("    <testcase classname=\"rangesim.cosim\" name=\"{}\" time=\"{:.3f}\">\n",
                      xml_escape(r["target"].get<std::string>()), r["wall_time_s"].get<double>());
     if (!passed(r)) {
       std::string body;
       for (const auto& m : r["first_mismatches"]) body += mismatch_line(m) + "\n";
-      if (!r["fault"].is_null()) body += "injected fault " + r["fault"]["name"].get<std::string>() + ": " +
-                                         r["fault"]["site"].get<std::string>() + "\n";
+      if (!r["fault"].is_null())
+        body += "injected fault " + r["fault"]["name"].get<std::string>() + ": " +
+                r["fault"]["site"].get<std::string>() + "\n";
       x += fmt::format("      <failure message=\"{} mismatches\" type=\"mismatch\">{}</failure>\n",
                        r["mismatches"].get<unsigned long long>(), xml_escape(body));
     }
@@ -187,7 +197,8 @@ std::string junit_xml(const std::vector<json>& runs) {
 }
 
 // What makes the results of `all` what they are: a journal from other options is refused.
-std::string all_fingerprint(const CosimCommandOptions& o, unsigned long long cycles, const std::vector<tb::CosimTarget>& targets) {
+std::string all_fingerprint(const CosimCommandOptions& o, unsigned long long cycles,
+                            const std::vector<tb::CosimTarget>& targets) {
   std::string f = fmt::format("rangesim cosim all\ncycles {}\nseed {}\ntrace {}\ntargets", cycles, o.seed, o.trace);
   for (const auto& t : targets) f += std::string(" ") + t.name;
   return f + "\n";
@@ -211,8 +222,8 @@ void check_fault(const std::string& fault, const tb::CosimTarget& target, const 
     if (f == fault) return;
     names += (names.empty() ? "" : ", ") + f;
   }
-  throw UserError("cosim: --inject-fault '" + fault + "' is not a fault of " + what + "; allowed: " +
-                  (names.empty() ? std::string("none") : names));
+  throw UserError("cosim: --inject-fault '" + fault + "' is not a fault of " + what +
+                  "; allowed: " + (names.empty() ? std::string("none") : names));
 }
 
 // A fault that never went in proves nothing: it counts as a mismatch.
@@ -243,9 +254,10 @@ json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigne
   if (!pc) {
     std::string ids;
     for (const auto& c : tb::preset_cosims()) ids += (ids.empty() ? "" : ", ") + std::string(c.sensor);
-    throw UserError(fmt::format("{}: sensor.id = {}: no RTL co-simulation at a preset's own parameters; allowed: {} "
-                                "(or the built-in target: rangesim cosim {})",
-                                path, preset.sensor_id(), ids, preset.sensor_id()));
+    throw UserError(
+        fmt::format("{}: sensor.id = {}: no RTL co-simulation at a preset's own parameters; allowed: {} "
+                    "(or the built-in target: rangesim cosim {})",
+                    path, preset.sensor_id(), ids, preset.sensor_id()));
   }
   const tb::CosimTarget* target = find_target(pc->target);
   check_fault(opt.inject_fault, *target, path + " (the faults of " + pc->target + ")");
@@ -266,9 +278,10 @@ json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigne
   return report_json(r, cov, opt.inject_fault, wall);
 }
 
-json run_child(const std::string& target, const CosimCommandOptions& opt, unsigned long long cycles, const std::string& trace) {
-  std::vector<std::string> args{"rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed",
-                                std::to_string(opt.seed)};
+json run_child(const std::string& target, const CosimCommandOptions& opt, unsigned long long cycles,
+               const std::string& trace) {
+  std::vector<std::string> args{
+      "rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed", std::to_string(opt.seed)};
   if (!trace.empty()) args.insert(args.end(), {"--trace", trace});
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("cosim all: pipe failed");
@@ -296,8 +309,8 @@ json run_child(const std::string& target, const CosimCommandOptions& opt, unsign
   const std::string text = out.rfind('{', 0) == 0 ? out : (start == std::string::npos ? "" : out.substr(start + 1));
   json j = json::parse(text, nullptr, false);
   if (j.is_discarded() || !j.is_object())
-    throw std::runtime_error("cosim all: target " + target + " exited with status " + std::to_string(WEXITSTATUS(status)) +
-                             " without a report");
+    throw std::runtime_error("cosim all: target " + target + " exited with status " +
+                             std::to_string(WEXITSTATUS(status)) + " without a report");
   return j;
 }
 
@@ -308,7 +321,8 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (opt.list) {
     if (opt.json) {
       json j = json::array();
-      for (const auto& t : targets) j.push_back({{"name", t.name}, {"description", t.description}, {"faults", t.faults}});
+      for (const auto& t : targets)
+        j.push_back({{"name", t.name}, {"description", t.description}, {"faults", t.faults}});
       std::cout << j.dump(2) << "\n";
     } else {
       for (const auto& t : targets) {
@@ -326,7 +340,8 @@ int run_cosim(const CosimCommandOptions& opt) {
   const unsigned long long cycles = opt.cycles.value_or(kDefaultCycles);
   if (cycles < 1 || cycles > kMaxCycles)
     throw UserError(fmt::format("cosim: --cycles {} out of range; allowed 1..{}", cycles, kMaxCycles));
-  if (opt.resume && !all) throw UserError("cosim: --resume continues an interrupted 'all' run; a single target has no journal");
+  if (opt.resume && !all)
+    throw UserError("cosim: --resume continues an interrupted 'all' run; a single target has no journal");
   if (all && !opt.inject_fault.empty())
     throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
   if (target) check_fault(opt.inject_fault, *target, opt.target);
@@ -357,7 +372,8 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (all) {
     journal = std::make_unique<SweepJournal>(opt.journal, all_fingerprint(opt, cycles, targets), opt.resume);
     if (!journal->done().empty())
-      fmt::print(stderr, "cosim: resuming: {} of {} targets from {}\n", journal->done().size(), targets.size(), journal->path());
+      fmt::print(stderr, "cosim: resuming: {} of {} targets from {}\n", journal->done().size(), targets.size(),
+                 journal->path());
     SigintGuard sigint;  // children die of Ctrl-C themselves; the parent stops after them
     for (std::size_t i = 0; i < targets.size(); ++i) {
       const auto& t = targets[i];
@@ -385,13 +401,14 @@ int run_cosim(const CosimCommandOptions& opt) {
         if (!sigint_flag().load()) throw;
       }
       if (sigint_flag().load()) {
-        fmt::print(stderr, "cosim: interrupted; {} of {} targets kept in {}; continue with:\n  {}\n", runs.size(), targets.size(),
-                   journal->path(), resume_command(opt));
+        fmt::print(stderr, "cosim: interrupted; {} of {} targets kept in {}; continue with:\n  {}\n", runs.size(),
+                   targets.size(), journal->path(), resume_command(opt));
         return kExitInterrupted;
       }
       journal->append(static_cast<long long>(i), r.dump());
       runs.push_back(std::move(r));
-      fmt::print(stderr, "cosim: {} done: {} mismatches\n", t.name, runs.back()["mismatches"].get<unsigned long long>());
+      fmt::print(stderr, "cosim: {} done: {} mismatches\n", t.name,
+                 runs.back()["mismatches"].get<unsigned long long>());
     }
   } else if (!preset_path.empty()) {
     runs.push_back(run_preset(opt, preset_path, cycles, trace_file));
@@ -438,8 +455,13 @@ int run_cosim(const CosimCommandOptions& opt) {
       tp += r["coverage"]["toggle_points"].get<long long>();
       th += r["coverage"]["toggle_hit"].get<long long>();
     }
-    out = {{"target", "all"}, {"cycles", c}, {"transactions", t}, {"mismatches", m},
-           {"coverage_line", percent_or_null(lh, lp)}, {"coverage_toggle", percent_or_null(th, tp)}, {"targets", runs}};
+    out = {{"target", "all"},
+           {"cycles", c},
+           {"transactions", t},
+           {"mismatches", m},
+           {"coverage_line", percent_or_null(lh, lp)},
+           {"coverage_toggle", percent_or_null(th, tp)},
+           {"targets", runs}};
   } else {
     out = runs.front();
   }

@@ -75,7 +75,8 @@ ParamSet evaluate_params(const EvaluateOptions& opt) {
   ParamSet params = load_modelled_preset(opt.sensor, "evaluate", opt.settings);
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   if (opt.samplings) {
-    require_key(schema.find("multisampling.samplings") ? "multisampling.samplings" : "", "--samplings", params, "samplings");
+    require_key(schema.find("multisampling.samplings") ? "multisampling.samplings" : "", "--samplings", params,
+                "samplings");
     params.set_integer("multisampling.samplings", *opt.samplings, "--samplings", schema);
   }
   if (opt.adc_bits) {

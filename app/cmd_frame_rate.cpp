@@ -53,7 +53,8 @@ int run_frame_rate(const FrameRateOptions& opt) {
   const char* unit = scale == 1e9 ? "ns" : scale == 1e6 ? "us" : scale == 1e3 ? "ms" : "s";
   fmt::print("  {:<18} {:>14} {:>14}\n", "phase", "cycles", "time");
   for (const auto& p : t.phases) fmt::print("  {:<18} {:>14} {:>11.3f} {}\n", p.name, p.cycles, p.time_s * scale, unit);
-  fmt::print("  {:<18} {:>14} {:>11.3f} {}\n\n", ls ? "frame access" : "frame", t.frame_cycles, t.frame_time_s * scale, unit);
+  fmt::print("  {:<18} {:>14} {:>11.3f} {}\n\n", ls ? "frame access" : "frame", t.frame_cycles, t.frame_time_s * scale,
+             unit);
   fmt::print("  {:<18} {:>14.3f} Hz\n", ls ? "frame access rate" : "frame rate", t.frame_access_rate_Hz);
   fmt::print("  {:<18} {:>14.6f} s  ({} frame{} per range map)\n", "range map", t.range_map_time_s,
              t.frames_per_range_map, t.frames_per_range_map == 1 ? "" : "s");

@@ -22,8 +22,12 @@ int run_list(const ListOptions& opt) {
       file = "(preset file not found)";
     }
     if (opt.json)
-      list.push_back({{"id", s.id}, {"title", s.title}, {"thesis_ref", s.thesis_ref},
-                      {"golden_modelled", modelled}, {"timing_modelled", modelled}, {"file", file}});
+      list.push_back({{"id", s.id},
+                      {"title", s.title},
+                      {"thesis_ref", s.thesis_ref},
+                      {"golden_modelled", modelled},
+                      {"timing_modelled", modelled},
+                      {"file", file}});
     else
       fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s.id, s.thesis_ref, modelled ? "yes" : "not yet",
                  modelled ? "yes" : "not yet", s.title);
@@ -69,15 +73,19 @@ int run_show(const ShowOptions& opt) {
     nlohmann::json ps = nlohmann::json::object();
     for (const auto& spec : schema.params) {
       const ParamValue& v = params.at(spec.key);
-      ps[spec.key] = {{"value", value_json(v)}, {"unit", spec.unit}, {"source", v.source}, {"file", v.file},
-                      {"description", spec.description}, {"allowed", describe_range(spec)}};
+      ps[spec.key] = {{"value", value_json(v)},
+                      {"unit", spec.unit},
+                      {"source", v.source},
+                      {"file", v.file},
+                      {"description", spec.description},
+                      {"allowed", describe_range(spec)}};
     }
     j["parameters"] = ps;
     fmt::print("{}\n", j.dump(2));
     return 0;
   }
-  fmt::print("{} ({}) — {}\nfile: {}\n", params.sensor_id(), info ? info->thesis_ref : "?",
-             info ? info->title : "", params.origin());
+  fmt::print("{} ({}) — {}\nfile: {}\n", params.sensor_id(), info ? info->thesis_ref : "?", info ? info->title : "",
+             params.origin());
   std::string section;
   for (const auto& spec : schema.params) {
     const std::string sec = spec.key.substr(0, spec.key.find('.'));

@@ -76,9 +76,10 @@ int run_simulate(const SimulateOptions& opt) {
     throw UserError(fmt::format("--no-aggregate: {} has no aggregated path to switch off; allowed with {}",
                                 params.sensor_id(), allowed(&SimulateEntry::aggregation)));
   if (opt.time_step_s != 0.0 && !entry->time_step)
-    throw UserError(fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
-                                "step; allowed with {} (or 0)",
-                                params.sensor_id(), allowed(&SimulateEntry::time_step)));
+    throw UserError(
+        fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
+                    "step; allowed with {} (or 0)",
+                    params.sensor_id(), allowed(&SimulateEntry::time_step)));
   return run_and_render(opt, params, *entry);
 }
 

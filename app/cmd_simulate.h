@@ -12,21 +12,22 @@
 namespace rangesim::app {
 
 struct SimulateOptions {
-  std::string sensor;               // preset id or path
+  std::string sensor;                 // preset id or path
   std::vector<std::string> settings;  // --set KEY=VALUE after the preset
-  std::string scene;                // --scene FILE.toml (required)
-  std::optional<long long> frames;  // --frames N: frame accesses (default: one range map = beam_positions)
-  std::uint64_t seed = 1;           // --seed S: key of the noise streams
-  std::string trace;                // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
-  std::string out;                  // --out DIR ("" -> rangesim-out/simulate/<scene name>)
-  bool json = false;                // --json: summary.json to stdout instead of the table
-  bool kernel_only = false;         // --kernel-only: bare C++ kernels, no SystemC elaboration
-  bool tick = false;                // --tick / --no-event-skip: evaluate every clock cycle (no event skipping; kernel only)
-  bool noise_free = false;          // --noise-free: all noise sources off
-  bool dense = false;               // --dense / --no-sparse: simulate every pixel (no sparse window)
-  bool no_aggregate = false;        // --no-aggregate: ls-demodulation correlation periods / tof-lockin accumulation periods / tof-spad laser cycles one by one
-  bool no_plots = false;            // --no-plots: skip range_map.png
-  double time_step_s = 0;           // --time-step S: tof-lockin pulse/gate overlaps integrated at step S (0 = exact closed form)
+  std::string scene;                  // --scene FILE.toml (required)
+  std::optional<long long> frames;    // --frames N: frame accesses (default: one range map = beam_positions)
+  std::uint64_t seed = 1;             // --seed S: key of the noise streams
+  std::string trace;                  // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
+  std::string out;                    // --out DIR ("" -> rangesim-out/simulate/<scene name>)
+  bool json = false;                  // --json: summary.json to stdout instead of the table
+  bool kernel_only = false;           // --kernel-only: bare C++ kernels, no SystemC elaboration
+  bool tick = false;          // --tick / --no-event-skip: evaluate every clock cycle (no event skipping; kernel only)
+  bool noise_free = false;    // --noise-free: all noise sources off
+  bool dense = false;         // --dense / --no-sparse: simulate every pixel (no sparse window)
+  bool no_aggregate = false;  // --no-aggregate: ls-demodulation correlation periods / tof-lockin accumulation periods /
+                              // tof-spad laser cycles one by one
+  bool no_plots = false;      // --no-plots: skip range_map.png
+  double time_step_s = 0;  // --time-step S: tof-lockin pulse/gate overlaps integrated at step S (0 = exact closed form)
 };
 
 // Returns the exit code; throws UserError (exit 2) for bad input, NotModelled (exit 3) for a

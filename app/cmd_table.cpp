@@ -79,9 +79,7 @@ Column build_column(const golden::ThesisColumn& tc) {
     const auto& r = rows[i];
     double v = golden::kNaN;
     switch (r.row) {
-      case golden::TableRow::Type:
-        cell.ours = tc.sensor.rfind("ls-", 0) == 0 ? "LS" : "TOF";
-        break;
+      case golden::TableRow::Type: cell.ours = tc.sensor.rfind("ls-", 0) == 0 ? "LS" : "TOF"; break;
       case golden::TableRow::IntegrationTime: {
         const std::string k = key_with_suffix(params, "integration_time_s");
         if (!k.empty()) v = params.real(k);
@@ -131,20 +129,21 @@ std::string markdown(const std::vector<Column>& cols, bool published) {
   std::ostringstream o;
   o << "# Thesis Table 5.1 beside rangesim\n";
   for (const auto& c : cols) {
-    o << fmt::format("\n## {} {}{}\n\n| row | thesis | rangesim | difference | note |\n|---|---|---|---|---|\n", c.sensor,
-                     c.reference, c.modelled ? "" : " (golden model not yet available)");
+    o << fmt::format("\n## {} {}{}\n\n| row | thesis | rangesim | difference | note |\n|---|---|---|---|---|\n",
+                     c.sensor, c.reference, c.modelled ? "" : " (golden model not yet available)");
     for (size_t i = 0; i < c.cells.size(); ++i) {
       const auto& cell = c.cells[i];
-      o << fmt::format("| {} | {} | {} | {} | {} |\n", golden::table_rows()[i].label, cell.thesis, cell.ours, cell.difference,
-                       cell.note);
+      o << fmt::format("| {} | {} | {} | {} | {} |\n", golden::table_rows()[i].label, cell.thesis, cell.ours,
+                       cell.difference, cell.note);
     }
   }
   if (published) {
-    o << "\n# Published figures\n\n| sensor | figure | published | rangesim | status | note |\n|---|---|---|---|---|---|\n";
+    o << "\n# Published figures\n\n| sensor | figure | published | rangesim | status | note "
+         "|\n|---|---|---|---|---|---|\n";
     for (const auto& c : cols)
       for (const auto& f : c.published)
-        o << fmt::format("| {} | {} | {:.4g} {} | {:.4g} {} | {} | {} |\n", f.sensor, f.description, f.published, f.unit,
-                         f.ours, f.unit, f.reproduced() ? "reproduced" : "differs", f.note);
+        o << fmt::format("| {} | {} | {:.4g} {} | {:.4g} {} | {} | {} |\n", f.sensor, f.description, f.published,
+                         f.unit, f.ours, f.unit, f.reproduced() ? "reproduced" : "differs", f.note);
   }
   return o.str();
 }
@@ -163,11 +162,13 @@ std::string html(const std::vector<Column>& cols) {
        "td.n{text-align:right;white-space:nowrap}td.note{max-width:40em;font-size:90%}</style>"
        "<h1>Thesis Table 5.1 beside rangesim</h1>";
   for (const auto& c : cols) {
-    o << fmt::format("<h2>{} {}</h2><table><tr><th>row<th>thesis<th>rangesim<th>difference<th>note", c.sensor, c.reference);
+    o << fmt::format("<h2>{} {}</h2><table><tr><th>row<th>thesis<th>rangesim<th>difference<th>note", c.sensor,
+                     c.reference);
     for (size_t i = 0; i < c.cells.size(); ++i) {
       const auto& cell = c.cells[i];
-      o << fmt::format("<tr><td>{}<td class=n>{}<td class=n>{}<td class=n>{}<td class=note>{}", golden::table_rows()[i].label,
-                       html_escape(cell.thesis), html_escape(cell.ours), html_escape(cell.difference), html_escape(cell.note));
+      o << fmt::format("<tr><td>{}<td class=n>{}<td class=n>{}<td class=n>{}<td class=note>{}",
+                       golden::table_rows()[i].label, html_escape(cell.thesis), html_escape(cell.ours),
+                       html_escape(cell.difference), html_escape(cell.note));
     }
     o << "</table>";
   }
@@ -201,7 +202,8 @@ int run_table(const TableOptions& opt) {
   // The columns of the registered sensors that have one in the thesis's table, in registry order.
   std::vector<const golden::ThesisColumn*> thesis;
   for (const auto& s : sensors())
-    if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column) thesis.push_back(m->table_column);
+    if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column)
+      thesis.push_back(m->table_column);
   std::vector<Column> cols;
   g_sensor_count = static_cast<int>(thesis.size());
   for (const golden::ThesisColumn* tc : thesis) {
@@ -216,11 +218,18 @@ int run_table(const TableOptions& opt) {
     for (size_t i = 0; i < c.cells.size(); ++i) {
       const auto& cell = c.cells[i];
       const auto& r = golden::table_rows()[i];
-      rows.push_back({{"row", r.id}, {"label", r.label}, {"unit", r.unit}, {"thesis", cell.thesis},
-                      {"thesis_value", json_num(cell.thesis_value)}, {"rangesim", cell.ours},
-                      {"rangesim_value", json_num(cell.ours_value)}, {"difference", cell.difference}, {"note", cell.note}});
+      rows.push_back({{"row", r.id},
+                      {"label", r.label},
+                      {"unit", r.unit},
+                      {"thesis", cell.thesis},
+                      {"thesis_value", json_num(cell.thesis_value)},
+                      {"rangesim", cell.ours},
+                      {"rangesim_value", json_num(cell.ours_value)},
+                      {"difference", cell.difference},
+                      {"note", cell.note}});
     }
-    j["table_5_1"].push_back({{"sensor", c.sensor}, {"reference", c.reference}, {"golden_modelled", c.modelled}, {"rows", rows}});
+    j["table_5_1"].push_back(
+        {{"sensor", c.sensor}, {"reference", c.reference}, {"golden_modelled", c.modelled}, {"rows", rows}});
   }
   j["published"] = nlohmann::json::array();
   int reproduced = 0, total = 0;
@@ -228,9 +237,15 @@ int run_table(const TableOptions& opt) {
     for (const auto& f : c.published) {
       ++total;
       reproduced += f.reproduced();
-      j["published"].push_back({{"sensor", f.sensor}, {"id", f.id}, {"description", f.description},
-                                {"published", f.published}, {"unit", f.unit}, {"rangesim", json_num(f.ours)},
-                                {"tolerance", f.tolerance}, {"reproduced", f.reproduced()}, {"note", f.note}});
+      j["published"].push_back({{"sensor", f.sensor},
+                                {"id", f.id},
+                                {"description", f.description},
+                                {"published", f.published},
+                                {"unit", f.unit},
+                                {"rangesim", json_num(f.ours)},
+                                {"tolerance", f.tolerance},
+                                {"reproduced", f.reproduced()},
+                                {"note", f.note}});
     }
   j["published_reproduced"] = reproduced;
   j["published_total"] = total;
@@ -242,9 +257,9 @@ int run_table(const TableOptions& opt) {
       for (size_t i = 0; i < c.cells.size(); ++i) {
         const auto& cell = c.cells[i];
         const auto& r = golden::table_rows()[i];
-        csv << fmt::format("{},{},{},{},{},{},{},{},{},{}\n", c.sensor, c.reference, r.id, r.unit, csv_field(cell.thesis),
-                           num_or_empty(cell.thesis_value), csv_field(cell.ours), num_or_empty(cell.ours_value),
-                           csv_field(cell.difference), csv_field(cell.note));
+        csv << fmt::format("{},{},{},{},{},{},{},{},{},{}\n", c.sensor, c.reference, r.id, r.unit,
+                           csv_field(cell.thesis), num_or_empty(cell.thesis_value), csv_field(cell.ours),
+                           num_or_empty(cell.ours_value), csv_field(cell.difference), csv_field(cell.note));
       }
     std::ostringstream pcsv;
     pcsv << "sensor,id,description,published,unit,rangesim,tolerance,status,note\n";
@@ -267,7 +282,9 @@ int run_table(const TableOptions& opt) {
     fmt::print("{}", markdown(cols, opt.published));
     fmt::print("\npublished figures: {} of {} reproduced{}\n", reproduced, total,
                opt.published ? "" : " (--published lists them)");
-    if (out) fmt::print("written to {}/: table5_1.md, table5_1.html, table5_1.csv, table5_1.json, published_figures.csv\n", opt.out);
+    if (out)
+      fmt::print("written to {}/: table5_1.md, table5_1.html, table5_1.csv, table5_1.json, published_figures.csv\n",
+                 opt.out);
   }
   return 0;
 }

@@ -26,19 +26,19 @@ struct EvaluateOptions {
   std::optional<std::string> background;
   std::optional<int> samplings;
   std::optional<int> adc_bits;
-  std::optional<int> frames;          // frames averaged
-  std::string out;                    // output directory ("" -> rangesim-out/<sensor>)
+  std::optional<int> frames;  // frames averaged
+  std::string out;            // output directory ("" -> rangesim-out/<sensor>)
   bool json = false;
   bool no_plots = false;
   // Monte Carlo on the clock-level kernels (app/montecarlo/, docs/evaluate-montecarlo.md); any of
   // trials / target_error switches it on.
-  std::optional<long long> trials;        // trials per grid point (first batch)
-  std::optional<double> target_error;     // m: add trials until the accuracy's 95% CI half-width <= this
-  std::optional<long long> max_trials;    // cap per point (trial budget)
-  std::optional<int> threads;             // worker threads (default: all cores)
-  std::optional<unsigned long long> seed; // key of the random streams
-  std::optional<double> max_seconds;      // wall-time budget of the sweep
-  bool resume = false;                    // continue the sweep journal in --out
+  std::optional<long long> trials;         // trials per grid point (first batch)
+  std::optional<double> target_error;      // m: add trials until the accuracy's 95% CI half-width <= this
+  std::optional<long long> max_trials;     // cap per point (trial budget)
+  std::optional<int> threads;              // worker threads (default: all cores)
+  std::optional<unsigned long long> seed;  // key of the random streams
+  std::optional<double> max_seconds;       // wall-time budget of the sweep
+  bool resume = false;                     // continue the sweep journal in --out
 };
 int run_evaluate(const EvaluateOptions& opt);
 // `evaluate` with --trials / --target-error (app/montecarlo/cmd_evaluate_mc.cpp).
@@ -61,16 +61,16 @@ int run_table(const TableOptions& opt);
 
 // rangesim sweep (app/sweep/): architecture variants of one preset.
 struct SweepOptions {
-  std::string sensor;                       // preset id or path
-  std::vector<std::string> settings;        // --set KEY=VALUE before the variants
-  std::vector<std::string> vary;            // --vary KEY=LO:HI:N[:log] | KEY=v1,v2,...
-  bool zip = false;                         // --zip: the i-th values together, not the cross product
-  std::optional<std::string> shard;         // --shard K/N: every N-th variant from the K-th
-  std::string out;                          // --out DIR ("" -> rangesim-out/sweep/<sensor>)
+  std::string sensor;                 // preset id or path
+  std::vector<std::string> settings;  // --set KEY=VALUE before the variants
+  std::vector<std::string> vary;      // --vary KEY=LO:HI:N[:log] | KEY=v1,v2,...
+  bool zip = false;                   // --zip: the i-th values together, not the cross product
+  std::optional<std::string> shard;   // --shard K/N: every N-th variant from the K-th
+  std::string out;                    // --out DIR ("" -> rangesim-out/sweep/<sensor>)
   bool json = false;
   bool no_plots = false;
-  bool resume = false;                      // continue the journal in --out
-  std::string pareto_accuracy = "min";      // --pareto-accuracy min|max: best or worst accuracy on the front's axis
+  bool resume = false;                  // continue the journal in --out
+  std::string pareto_accuracy = "min";  // --pareto-accuracy min|max: best or worst accuracy on the front's axis
 };
 int run_sweep(const SweepOptions& opt);
 // rangesim merge: the shards of one sweep into its unsharded output.
@@ -85,10 +85,10 @@ int run_merge(const MergeOptions& opt);
 
 // rangesim bench (app/cmd_bench.cpp, app/bench/, docs/bench.md).
 struct BenchOptions {
-  bool quick = false;  // --quick: the same keys in under two minutes (fewer frames for the references)
-  bool json = false;   // --json: bench.json to stdout instead of the tables
-  std::string out;     // --out DIR ("" -> rangesim-out/bench)
-  bool resume = false; // --resume: continue a killed or interrupted bench from its journal in DIR
+  bool quick = false;   // --quick: the same keys in under two minutes (fewer frames for the references)
+  bool json = false;    // --json: bench.json to stdout instead of the tables
+  std::string out;      // --out DIR ("" -> rangesim-out/bench)
+  bool resume = false;  // --resume: continue a killed or interrupted bench from its journal in DIR
 };
 // 0 when every identity check inside the bench passed (speed targets are reported, not
 // enforced), 1 when one failed; throws UserError for an unusable --out.
@@ -96,12 +96,12 @@ int run_bench(const BenchOptions& opt);
 // `rangesim cosim` (app/cmd_cosim.cpp): RTL co-simulation targets of tb/cosim_targets.cpp.
 inline constexpr int kExitCosimMismatch = 4;  // the run completed and found mismatches
 struct CosimCommandOptions {
-  std::string target;                   // sensor id, block name, "all" or a preset file ("" with --list)
+  std::string target;                        // sensor id, block name, "all" or a preset file ("" with --list)
   std::optional<unsigned long long> cycles;  // clock cycles (default 100000)
   unsigned long long seed = 1;
-  std::string trace;                    // RTL VCD file ("" = none)
-  std::string junit;                    // JUnit XML file ("" = none)
-  std::string inject_fault;             // a fault name of the target ("" = none)
+  std::string trace;         // RTL VCD file ("" = none)
+  std::string junit;         // JUnit XML file ("" = none)
+  std::string inject_fault;  // a fault name of the target ("" = none)
   bool json = false;
   bool list = false;
   // `all` journals each finished target (app/sweep_journal.h) so that a killed or interrupted run

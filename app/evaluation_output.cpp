@@ -30,7 +30,8 @@ std::string matrix(const golden::EvalResult& ev, const std::function<std::string
 
 std::string points_csv(const golden::EvalResult& ev) {
   std::ostringstream o;
-  o << fmt::format("signal_{},background_{},detect,sbr_total_dB,sbr_ratio_dB,accuracy_m", ev.signal.unit, ev.background.unit);
+  o << fmt::format("signal_{},background_{},detect,sbr_total_dB,sbr_ratio_dB,accuracy_m", ev.signal.unit,
+                   ev.background.unit);
   for (const auto& m : ev.metric_names) o << "," << m;
   o << "\n";
   for (const auto& p : ev.points) {
@@ -53,7 +54,8 @@ std::string accuracy_mm_matrix_csv(const golden::EvalResult& ev) {
 std::string metric_matrix_csv(const golden::EvalResult& ev, const std::string& metric) {
   size_t k = 0;
   while (k < ev.metric_names.size() && ev.metric_names[k] != metric) ++k;
-  return matrix(ev, [k](const golden::EvalPoint& p) { return k < p.metrics.size() ? num(p.metrics[k]) : std::string(); });
+  return matrix(ev,
+                [k](const golden::EvalPoint& p) { return k < p.metrics.size() ? num(p.metrics[k]) : std::string(); });
 }
 
 nlohmann::json summary_json(const golden::EvalResult& ev, const ParamSet& params) {
@@ -61,9 +63,12 @@ nlohmann::json summary_json(const golden::EvalResult& ev, const ParamSet& params
   nlohmann::json j;
   j["sensor"] = ev.sensor;
   j["preset"] = params.origin();
-  j["grid"] = {{"signal_min_" + su, ev.signal.values.front()},         {"signal_max_" + su, ev.signal.values.back()},
-               {"signal_points", ev.signal.values.size()},              {"background_min_" + bu, ev.background.values.front()},
-               {"background_max_" + bu, ev.background.values.back()}, {"background_points", ev.background.values.size()}};
+  j["grid"] = {{"signal_min_" + su, ev.signal.values.front()},
+               {"signal_max_" + su, ev.signal.values.back()},
+               {"signal_points", ev.signal.values.size()},
+               {"background_min_" + bu, ev.background.values.front()},
+               {"background_max_" + bu, ev.background.values.back()},
+               {"background_points", ev.background.values.size()}};
   j["points_total"] = ev.points.size();
   j["points_detectable"] = ev.points_detectable;
   j["signal_range_dB"] = ev.signal_range.range_dB;
@@ -94,9 +99,10 @@ nlohmann::json summary_json(const golden::EvalResult& ev, const ParamSet& params
 
 std::string summary_text(const golden::EvalResult& ev) {
   const std::string su = ev.signal.unit, bu = ev.background.unit;
-  std::string s = fmt::format("{} evaluation: grid {} x {} (signal {:g}-{:g} {}, background {:g}-{:g} {})\n\n", ev.sensor,
-                              ev.signal.values.size(), ev.background.values.size(), ev.signal.values.front(),
-                              ev.signal.values.back(), su, ev.background.values.front(), ev.background.values.back(), bu);
+  std::string s =
+      fmt::format("{} evaluation: grid {} x {} (signal {:g}-{:g} {}, background {:g}-{:g} {})\n\n", ev.sensor,
+                  ev.signal.values.size(), ev.background.values.size(), ev.signal.values.front(),
+                  ev.signal.values.back(), su, ev.background.values.front(), ev.background.values.back(), bu);
   s += fmt::format("  {:<36} {} / {}\n", "detectable points", ev.points_detectable, ev.points.size());
   if (ev.points_detectable == 0)
     return s + "  nothing is detectable on this grid: detectable_area.csv gives the reason at each point\n";
@@ -112,8 +118,10 @@ std::string summary_text(const golden::EvalResult& ev) {
   s += fmt::format("  {:<36} {:.2f} dB  ({:.4g} .. {:.4g} {} at signal {:.4g} {}{})\n", "background range",
                    ev.background_range.range_dB, ev.background_range.lo, ev.background_range.hi, bu,
                    ev.background_range.at, su, edge_note(ev.background_range));
-  s += fmt::format("  {:<36} {:.2f} .. {:.2f} dB\n", "SBR' (signal+background)/background", ev.sbr_min_dB, ev.sbr_max_dB);
-  s += fmt::format("  {:<36} {:.2f} .. {:.2f} dB\n", "SBR' signal/background", ev.sbr_ratio_min_dB, ev.sbr_ratio_max_dB);
+  s += fmt::format("  {:<36} {:.2f} .. {:.2f} dB\n", "SBR' (signal+background)/background", ev.sbr_min_dB,
+                   ev.sbr_max_dB);
+  s +=
+      fmt::format("  {:<36} {:.2f} .. {:.2f} dB\n", "SBR' signal/background", ev.sbr_ratio_min_dB, ev.sbr_ratio_max_dB);
   s += fmt::format("  {:<36} {:.3f} .. {:.3f} mm at {:g} m\n", "range accuracy (rms)", ev.accuracy_min_m * 1e3,
                    ev.accuracy_max_m * 1e3, ev.distance_m);
   for (const auto& [key, value] : ev.summary_extra) s += fmt::format("  {:<36} {:.6g}\n", key, value);

@@ -16,9 +16,10 @@ ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& 
     std::string modelled;
     for (const auto& s : sensors())
       if (golden::golden_model(s.id)) modelled += (modelled.empty() ? "" : ", ") + s.id;
-    throw NotModelled{fmt::format("rangesim {}: sensor '{}' is not modelled yet (its preset loads and validates; "
-                                  "see `rangesim show {}`); modelled: {}",
-                                  command, params.sensor_id(), params.sensor_id(), modelled)};
+    throw NotModelled{
+        fmt::format("rangesim {}: sensor '{}' is not modelled yet (its preset loads and validates; "
+                    "see `rangesim show {}`); modelled: {}",
+                    command, params.sensor_id(), params.sensor_id(), modelled)};
   }
   return params;
 }

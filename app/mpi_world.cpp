@@ -46,7 +46,8 @@ std::vector<std::string> gather(const World& w, const std::string& mine) {
   std::string all;
   if (w.rank == 0) {
     long long total = 0;
-    for (int r = 0; r < w.size; ++r) offsets[static_cast<std::size_t>(r)] = static_cast<int>(total), total += lengths[static_cast<std::size_t>(r)];
+    for (int r = 0; r < w.size; ++r)
+      offsets[static_cast<std::size_t>(r)] = static_cast<int>(total), total += lengths[static_cast<std::size_t>(r)];
     all.resize(static_cast<std::size_t>(total));
   }
   MPI_Gatherv(mine.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(), MPI_CHAR, 0, MPI_COMM_WORLD);

@@ -79,18 +79,19 @@ std::string area_script(const golden::EvalResult& ev, const std::string& data) {
       if (ch == '_') ch = ' ';
     tics += fmt::format("{}\"{}\" {}", i ? ", " : "", label, i);
   }
-  return heatmap_header(ev) +
-         fmt::format("set title '{} — range-information detectable area'\nset palette defined ({})\n"
-                     "set cbrange [-0.5:{}]\nset cbtics ({})\nsplot '{}' using 1:2:3 with pm3d\n",
-                     ev.sensor, palette, n - 0.5, tics, data);
+  return heatmap_header(ev) + fmt::format(
+                                  "set title '{} — range-information detectable area'\nset palette defined ({})\n"
+                                  "set cbrange [-0.5:{}]\nset cbtics ({})\nsplot '{}' using 1:2:3 with pm3d\n",
+                                  ev.sensor, palette, n - 0.5, tics, data);
 }
 
 std::string accuracy_script(const golden::EvalResult& ev, const std::string& data) {
   const bool px = metric_index(ev, "accuracy_px") >= 0;
-  return heatmap_header(ev) +
-         fmt::format("set title '{} — range accuracy{}'\nset logscale cb\nset cblabel 'rms error [{}]'\n"
-                     "set palette rgbformulae 22,13,-31\nsplot '{}' using 1:2:4 with pm3d\n",
-                     ev.sensor, px ? " [pixel pitch]" : fmt::format(" at {:g} m", ev.distance_m), px ? "px" : "mm", data);
+  return heatmap_header(ev) + fmt::format(
+                                  "set title '{} — range accuracy{}'\nset logscale cb\nset cblabel 'rms error [{}]'\n"
+                                  "set palette rgbformulae 22,13,-31\nsplot '{}' using 1:2:4 with pm3d\n",
+                                  ev.sensor, px ? " [pixel pitch]" : fmt::format(" at {:g} m", ev.distance_m),
+                                  px ? "px" : "mm", data);
 }
 
 std::string sweep_script(const golden::EvalSweep& sw, const std::string& data) {
@@ -113,7 +114,8 @@ void write_sweep_data(const std::string& path, const golden::EvalSweep& sw) {
   std::ofstream out(path);
   for (const auto& series : sw.series) {
     for (size_t i = 0; i < series.x.size() && i < series.y.size(); ++i)
-      out << fmt::format("{:.8g} {}\n", series.x[i], std::isfinite(series.y[i]) ? fmt::format("{:.8g}", series.y[i]) : "NaN");
+      out << fmt::format("{:.8g} {}\n", series.x[i],
+                         std::isfinite(series.y[i]) ? fmt::format("{:.8g}", series.y[i]) : "NaN");
     out << "\n\n";  // gnuplot data block separator for `index`
   }
 }

@@ -23,9 +23,12 @@ constexpr const char* kMagic = "rangesim-sweep-journal 1";
 std::string escape(const std::string& s) {
   std::string r;
   for (char c : s) {
-    if (c == '\\') r += "\\\\";
-    else if (c == '\n') r += "\\n";
-    else r += c;
+    if (c == '\\')
+      r += "\\\\";
+    else if (c == '\n')
+      r += "\\n";
+    else
+      r += c;
   }
   return r;
 }
@@ -62,7 +65,8 @@ void write_durable(int fd, const std::string& text, const std::string& path) {
     }
     off += static_cast<size_t>(n);
   }
-  if (::fsync(fd) != 0) throw std::runtime_error(fmt::format("journal {}: fsync failed ({})", path, std::strerror(errno)));
+  if (::fsync(fd) != 0)
+    throw std::runtime_error(fmt::format("journal {}: fsync failed ({})", path, std::strerror(errno)));
 }
 
 std::string record_line(long long index, const std::string& payload) {
@@ -108,10 +112,10 @@ SweepJournal::SweepJournal(const std::string& path, const std::string& fingerpri
           break;
         }
       }
-      throw UserError(fmt::format(
-          "{}: --resume refused: the journal belongs to a sweep with a different preset or options: {}. "
-          "Rerun with the original options, or delete the journal to start over",
-          path_, diff));
+      throw UserError(
+          fmt::format("{}: --resume refused: the journal belongs to a sweep with a different preset or options: {}. "
+                      "Rerun with the original options, or delete the journal to start over",
+                      path_, diff));
     }
     good_bytes = static_cast<long long>(h2 + 1);
     size_t pos = h2 + 1;
@@ -126,7 +130,8 @@ SweepJournal::SweepJournal(const std::string& path, const std::string& fingerpri
           static_cast<size_t>(consumed) + len + 17 != line.size())
         break;
       const std::string payload = line.substr(static_cast<size_t>(consumed), len);
-      if (line.substr(static_cast<size_t>(consumed) + len) != fmt::format(" {:016x}", hash(fmt::format("{} {}", index, payload))))
+      if (line.substr(static_cast<size_t>(consumed) + len) !=
+          fmt::format(" {:016x}", hash(fmt::format("{} {}", index, payload))))
         break;
       done_[index] = payload;
       pos = end + 1;

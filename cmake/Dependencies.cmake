@@ -23,3 +23,6 @@ endif()
 if(RANGESIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
+
+# Optional: MPI for `mpirun -n N rangesim sweep` (app/mpi_world.h); built without it otherwise.
+find_package(MPI COMPONENTS CXX QUIET)

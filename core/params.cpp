@@ -57,8 +57,8 @@ void ParamSet::set_from_text(const std::string& assignment, const std::string& f
   const std::string where = fmt::format("{} {}", flag, assignment);
   const ParamSpec* spec = schema.find(key);
   if (!spec)
-    throw UserError(fmt::format("{}: no parameter '{}' for sensor {}; the keys are listed by `rangesim show {}`", where, key,
-                                sensor_id_, sensor_id_));
+    throw UserError(fmt::format("{}: no parameter '{}' for sensor {}; the keys are listed by `rangesim show {}`", where,
+                                key, sensor_id_, sensor_id_));
   ParamValue v;
   v.kind = spec->kind;
   v.source = fmt::format("command line {}", flag);
@@ -88,7 +88,8 @@ void check_choice(const ParamSpec& spec, const std::string& value, const std::st
   if (spec.choices.empty()) return;
   for (const auto& c : spec.choices)
     if (c == value) return;
-  throw UserError(fmt::format("{}: {} = \"{}\" is not allowed; allowed: {}", where, spec.key, value, describe_range(spec)));
+  throw UserError(
+      fmt::format("{}: {} = \"{}\" is not allowed; allowed: {}", where, spec.key, value, describe_range(spec)));
 }
 
 std::string describe_range(const ParamSpec& spec) {
@@ -99,8 +100,7 @@ std::string describe_range(const ParamSpec& spec) {
       for (const auto& c : spec.choices) s += " \"" + c + "\"";
       return s;
     }
-    case ParamKind::Boolean:
-      return "true or false";
+    case ParamKind::Boolean: return "true or false";
     case ParamKind::Integer:
       return fmt::format("integer in {}{:g}, {:g}]", spec.min_exclusive ? "(" : "[", spec.min, spec.max);
     case ParamKind::Real:
@@ -115,8 +115,8 @@ void check_range(const ParamSpec& spec, double value, const std::string& where) 
   const bool ok = std::isfinite(value) && (spec.min_exclusive ? value > spec.min : value >= spec.min) &&
                   value <= spec.max && (spec.kind != ParamKind::Integer || value == std::floor(value));
   if (!ok)
-    throw UserError(fmt::format("{}: {} = {:g} is out of range; allowed: {}", where, spec.key, value,
-                                describe_range(spec)));
+    throw UserError(
+        fmt::format("{}: {} = {:g} is out of range; allowed: {}", where, spec.key, value, describe_range(spec)));
 }
 
 }  // namespace rangesim

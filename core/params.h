@@ -16,13 +16,13 @@ namespace rangesim {
 enum class ParamKind { Real, Integer, Text, Boolean };
 
 struct ParamSpec {
-  std::string key;          // "section.name", name ends in its SI unit where it has one
-  ParamKind kind;           // value type in the TOML file
-  std::string unit;         // SI unit for display ("s", "F", "V", "" for dimensionless)
-  double min = 0.0;         // allowed range (Real/Integer)
+  std::string key;   // "section.name", name ends in its SI unit where it has one
+  ParamKind kind;    // value type in the TOML file
+  std::string unit;  // SI unit for display ("s", "F", "V", "" for dimensionless)
+  double min = 0.0;  // allowed range (Real/Integer)
   double max = 0.0;
-  bool min_exclusive = false;  // true: value must be > min (e.g. capacitance > 0)
-  std::string description;  // one line, shown by `rangesim show`
+  bool min_exclusive = false;             // true: value must be > min (e.g. capacitance > 0)
+  std::string description;                // one line, shown by `rangesim show`
   std::vector<std::string> choices = {};  // allowed values (Text); empty = any
 };
 

@@ -60,8 +60,7 @@ std::string where_of(const std::string& file, const toml::node& node) {
 
 // The value of `entry`: an inline table { value = ..., source = "..." }, or a plain value (a
 // user's edit), whose source is "user".
-ParamValue read_value(const std::string& file, const std::string& key, const toml::node& entry,
-                      const ParamSpec& spec) {
+ParamValue read_value(const std::string& file, const std::string& key, const toml::node& entry, const ParamSpec& spec) {
   const std::string where = where_of(file, entry);
   const toml::table* t = entry.as_table();
   const toml::node* value = &entry;
@@ -71,35 +70,46 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
   v.file = file;
   if (t) {
     if (!t->contains("value") || !t->contains("source"))
-      throw UserError(fmt::format("{}: {} must be a plain value or an inline table {{ value = ..., source = \"...\" }} "
-                                  "with value {}",
-                                  where, key, describe_range(spec)));
+      throw UserError(
+          fmt::format("{}: {} must be a plain value or an inline table {{ value = ..., source = \"...\" }} "
+                      "with value {}",
+                      where, key, describe_range(spec)));
     for (const auto& [k, _] : *t)
       if (k != "value" && k != "source")
         throw UserError(fmt::format("{}: {} has unknown field '{}'; allowed: value, source", where, key, k.str()));
     const auto* source = (*t)["source"].as_string();
     if (!source || source->get().empty())
-      throw UserError(fmt::format("{}: {}.source must be a non-empty string naming where the value comes from", where, key));
+      throw UserError(
+          fmt::format("{}: {}.source must be a non-empty string naming where the value comes from", where, key));
     v.source = source->get();
     value = t->get("value");
   }
   switch (spec.kind) {
     case ParamKind::Real:
-      if (auto d = value->value_exact<double>()) v.number = *d;
-      else if (auto i = value->value_exact<int64_t>()) v.number = static_cast<double>(*i);
-      else throw UserError(fmt::format("{}: {} must be a number ({})", where, key, describe_range(spec)));
+      if (auto d = value->value_exact<double>())
+        v.number = *d;
+      else if (auto i = value->value_exact<int64_t>())
+        v.number = static_cast<double>(*i);
+      else
+        throw UserError(fmt::format("{}: {} must be a number ({})", where, key, describe_range(spec)));
       break;
     case ParamKind::Integer:
-      if (auto i = value->value_exact<int64_t>()) v.number = static_cast<double>(*i);
-      else throw UserError(fmt::format("{}: {} must be an integer ({})", where, key, describe_range(spec)));
+      if (auto i = value->value_exact<int64_t>())
+        v.number = static_cast<double>(*i);
+      else
+        throw UserError(fmt::format("{}: {} must be an integer ({})", where, key, describe_range(spec)));
       break;
     case ParamKind::Boolean:
-      if (auto b = value->value_exact<bool>()) v.number = *b ? 1.0 : 0.0;
-      else throw UserError(fmt::format("{}: {} must be true or false", where, key));
+      if (auto b = value->value_exact<bool>())
+        v.number = *b ? 1.0 : 0.0;
+      else
+        throw UserError(fmt::format("{}: {} must be true or false", where, key));
       break;
     case ParamKind::Text:
-      if (auto s = value->value_exact<std::string>()) v.text = *s;
-      else throw UserError(fmt::format("{}: {} must be a string ({})", where, key, describe_range(spec)));
+      if (auto s = value->value_exact<std::string>())
+        v.text = *s;
+      else
+        throw UserError(fmt::format("{}: {} must be a string ({})", where, key, describe_range(spec)));
       check_choice(spec, v.text, where);
       break;
   }
@@ -108,7 +118,8 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
 }
 
 std::string read_file(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw UserError(fmt::format("{}: cannot read preset file (not a regular file)", path));
+  if (!fs::is_regular_file(path))
+    throw UserError(fmt::format("{}: cannot read preset file (not a regular file)", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(fmt::format("{}: cannot read preset file", path));
   std::ostringstream text;
@@ -119,8 +130,8 @@ std::string read_file(const std::string& path) {
 
 // The file `base = "..."` names: a preset id, or a path relative to the inheriting file's folder.
 std::string resolve_base(const std::string& base, const std::string& file, const std::string& where) {
-  const bool looks_like_path = base.find('/') != std::string::npos ||
-                               (base.size() > 5 && base.compare(base.size() - 5, 5, ".toml") == 0);
+  const bool looks_like_path =
+      base.find('/') != std::string::npos || (base.size() > 5 && base.compare(base.size() - 5, 5, ".toml") == 0);
   if (!looks_like_path) {
     try {
       return resolve_preset(base);
@@ -152,7 +163,8 @@ ParamSet load_base(const toml::node& base_node, const std::string& path, std::ve
     if (c == canonical) {
       std::string circle;
       for (const auto& x : chain) circle += x + " -> ";
-      throw UserError(fmt::format("{}: base = \"{}\" inherits in a circle: {}{}", where, base->get(), circle, canonical));
+      throw UserError(
+          fmt::format("{}: base = \"{}\" inherits in a circle: {}{}", where, base->get(), circle, canonical));
     }
   chain.push_back(canonical);
   ParamSet set = load_layer(read_file(file), file, chain);
@@ -177,19 +189,21 @@ ParamSet load_layer(const std::string& text, const std::string& path, std::vecto
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line,
-                                e.source().begin.column, e.description()));
+    throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", path, e.source().begin.line, e.source().begin.column,
+                                e.description()));
   }
   std::optional<ParamSet> base;
   if (const toml::node* b = root.get("base")) base = load_base(*b, path, chain);
   const auto* id = root["sensor"]["id"].as_string();
   if (!id && root["sensor"]["id"])
-    throw UserError(fmt::format("{}: sensor.id must be a string; allowed: {}", where_of(path, *root["sensor"]["id"].node()),
-                                sensor_ids()));
-  if (!id && !base) throw UserError(fmt::format("{}: missing key sensor.id; allowed: {} (or base = \"<preset>\")", path, sensor_ids()));
+    throw UserError(fmt::format("{}: sensor.id must be a string; allowed: {}",
+                                where_of(path, *root["sensor"]["id"].node()), sensor_ids()));
+  if (!id && !base)
+    throw UserError(fmt::format("{}: missing key sensor.id; allowed: {} (or base = \"<preset>\")", path, sensor_ids()));
   if (id && base && id->get() != base->sensor_id())
     throw UserError(fmt::format("{}: sensor.id = \"{}\" differs from its base's sensor {}; allowed: {} or no sensor.id",
-                                where_of(path, *root["sensor"]["id"].node()), id->get(), base->sensor_id(), base->sensor_id()));
+                                where_of(path, *root["sensor"]["id"].node()), id->get(), base->sensor_id(),
+                                base->sensor_id()));
   const std::string sensor = id ? id->get() : base->sensor_id();
   const ParamSchema& schema = schema_for(sensor, path);
   ParamSet set(path, sensor);
@@ -212,7 +226,8 @@ ParamSet load_layer(const std::string& text, const std::string& path, std::vecto
   }
   for (const auto& spec : schema.params)
     if (!set.has(spec.key))
-      throw UserError(fmt::format("{}: missing key '{}' ({}; {})", path, spec.key, spec.description, describe_range(spec)));
+      throw UserError(
+          fmt::format("{}: missing key '{}' ({}; {})", path, spec.key, spec.description, describe_range(spec)));
   return set;
 }
 

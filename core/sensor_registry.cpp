@@ -36,7 +36,8 @@ const SensorInfo* find_sensor(const std::string& id) {
 void register_sensor(const SensorInfo& info) {
   if (info.id.empty() || !info.schema || !info.validate)
     throw std::invalid_argument("register_sensor: id, schema and validate are required");
-  if (find_sensor(info.id)) throw std::invalid_argument("register_sensor: sensor " + info.id + " is registered already");
+  if (find_sensor(info.id))
+    throw std::invalid_argument("register_sensor: sensor " + info.id + " is registered already");
   registry().push_back(info);
 }
 
@@ -48,7 +49,8 @@ std::string sensor_ids() {
 
 const ParamSchema& schema_for(const std::string& sensor_id, const std::string& where) {
   if (const SensorInfo* s = find_sensor(sensor_id)) return s->schema();
-  throw UserError(fmt::format("{}: sensor.id = \"{}\" is not a known sensor; allowed: {}", where, sensor_id, sensor_ids()));
+  throw UserError(
+      fmt::format("{}: sensor.id = \"{}\" is not a known sensor; allowed: {}", where, sensor_id, sensor_ids()));
 }
 
 }  // namespace rangesim

@@ -17,9 +17,9 @@
 namespace rangesim {
 
 struct SensorInfo {
-  std::string id;          // preset id, e.g. "ls-conventional"
-  std::string title;       // one line
-  std::string thesis_ref;  // reference number in the thesis, e.g. "[31]"
+  std::string id;                       // preset id, e.g. "ls-conventional"
+  std::string title;                    // one line
+  std::string thesis_ref;               // reference number in the thesis, e.g. "[31]"
   const ParamSchema& (*schema)();       // every preset key with its unit, range and meaning
   void (*validate)(const ParamSet& p);  // builds the configuration: throws UserError on cross-key
                                         // inconsistencies, naming the file and both keys

@@ -29,8 +29,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (!std::isfinite(value)) std::abort();
     } else {
       const double min_m = 0.1, max_m = 100;
-      const rangesim::scene::DepthMap m =
-          rangesim::scene::parse_depth_map(text, "fuzz.pgm", "fuzz.toml: target.depth_map_file", 0.5, 2.0, min_m, max_m);
+      const rangesim::scene::DepthMap m = rangesim::scene::parse_depth_map(
+          text, "fuzz.pgm", "fuzz.toml: target.depth_map_file", 0.5, 2.0, min_m, max_m);
       if (m.width < 1 || m.height < 1 || m.depth_m.size() != static_cast<std::size_t>(m.width) * m.height) std::abort();
       for (double z : m.depth_m)
         if (!(z >= min_m && z <= max_m)) std::abort();

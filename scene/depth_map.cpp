@@ -39,7 +39,8 @@ struct HeaderReader {
     char* end = nullptr;
     const long long v = std::strtoll(t.c_str(), &end, 10);
     if (t.empty() || *end != '\0' || v < lo || v > hi)
-      throw UserError(fmt::format("{}: image header {} = '{}'; allowed an integer in [{}, {}]", where, what, t, lo, hi));
+      throw UserError(
+          fmt::format("{}: image header {} = '{}'; allowed an integer in [{}, {}]", where, what, t, lo, hi));
     return v;
   }
 };
@@ -81,8 +82,9 @@ DepthMap load_depth_map(const std::string& path, const std::string& key, double 
     throw UserError(fmt::format("{}: the depth-map image is not a regular file", where));
   const auto size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxFileBytes)
-    throw UserError(fmt::format("{}: the depth-map image has {} bytes; allowed at most {} ({} x {} floats and a header)", where,
-                                ec ? 0 : size, kMaxFileBytes, kMaxSide, kMaxSide));
+    throw UserError(
+        fmt::format("{}: the depth-map image has {} bytes; allowed at most {} ({} x {} floats and a header)", where,
+                    ec ? 0 : size, kMaxFileBytes, kMaxSide, kMaxSide));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(fmt::format("{}: cannot read the depth-map image (no such file or not readable)", where));
   const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -107,7 +109,9 @@ DepthMap parse_depth_map(std::string_view bytes, const std::string& path, const 
     if (data.size() < h.pos || data.size() - h.pos < min_bytes)
       throw UserError(fmt::format("{}: PGM raster too short for {} x {} pixels", where, m.width, m.height));
     m.depth_m.resize(n);
-    auto gray_to_m = [&](long long g) { return near_m + (far_m - near_m) * static_cast<double>(g) / static_cast<double>(maxval); };
+    auto gray_to_m = [&](long long g) {
+      return near_m + (far_m - near_m) * static_cast<double>(g) / static_cast<double>(maxval);
+    };
     if (magic == "P2") {
       for (std::size_t i = 0; i < n; ++i) {
         const std::string t = h.token();
@@ -115,7 +119,8 @@ DepthMap parse_depth_map(std::string_view bytes, const std::string& path, const 
         const long long g = std::strtoll(t.c_str(), &end, 10);
         if (t.empty()) throw UserError(fmt::format("{}: ASCII PGM ends after {} of {} gray levels", where, i, n));
         if (*end != '\0' || g < 0 || g > maxval)
-          throw UserError(fmt::format("{}: gray level '{}' at pixel {}; allowed an integer in [0, {}] (maxval)", where, t, i, maxval));
+          throw UserError(fmt::format("{}: gray level '{}' at pixel {}; allowed an integer in [0, {}] (maxval)", where,
+                                      t, i, maxval));
         m.depth_m[i] = gray_to_m(g);
       }
     } else {
@@ -127,7 +132,8 @@ DepthMap parse_depth_map(std::string_view bytes, const std::string& path, const 
       for (std::size_t i = 0; i < n; ++i) {
         const auto* p = reinterpret_cast<const unsigned char*>(data.data() + start + i * bytes);
         const long long g = bytes == 2 ? (p[0] << 8 | p[1]) : p[0];  // 16-bit PGM is big-endian
-        if (g > maxval) throw UserError(fmt::format("{}: gray level {} at pixel {} exceeds maxval {}", where, g, i, maxval));
+        if (g > maxval)
+          throw UserError(fmt::format("{}: gray level {} at pixel {} exceeds maxval {}", where, g, i, maxval));
         m.depth_m[i] = gray_to_m(g);
       }
     }
@@ -148,21 +154,22 @@ DepthMap parse_depth_map(std::string_view bytes, const std::string& path, const 
       for (int x = 0; x < m.width; ++x) {
         unsigned char b[4];
         std::memcpy(b, data.data() + start + (static_cast<std::size_t>(y) * m.width + x) * 4, 4);
-        const std::uint32_t u = little ? (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[1]} << 8 | b[0])
-                                       : (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 | b[3]);
+        const std::uint32_t u =
+            little ? (std::uint32_t{b[3]} << 24 | std::uint32_t{b[2]} << 16 | std::uint32_t{b[1]} << 8 | b[0])
+                   : (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 | b[3]);
         float f;
         std::memcpy(&f, &u, 4);
         m.depth_m[static_cast<std::size_t>(m.height - 1 - y) * m.width + x] = f;  // PFM rows go bottom to top
       }
   } else {
-    throw UserError(fmt::format("{}: not a depth-map image: magic '{}'; allowed PGM (P2, P5) or grayscale PFM (Pf)", where,
-                                magic.substr(0, 8)));
+    throw UserError(fmt::format("{}: not a depth-map image: magic '{}'; allowed PGM (P2, P5) or grayscale PFM (Pf)",
+                                where, magic.substr(0, 8)));
   }
   for (std::size_t i = 0; i < m.depth_m.size(); ++i) {
     const double z = m.depth_m[i];
     if (!std::isfinite(z) || z < min_m || z > max_m)
-      throw UserError(fmt::format("{}: distance {:g} m at pixel (x {}, y {}) is out of range; allowed [{:g}, {:g}] m", where, z,
-                                  i % m.width, i / m.width, min_m, max_m));
+      throw UserError(fmt::format("{}: distance {:g} m at pixel (x {}, y {}) is out of range; allowed [{:g}, {:g}] m",
+                                  where, z, i % m.width, i / m.width, min_m, max_m));
   }
   return m;
 }

@@ -14,9 +14,9 @@
 namespace rangesim::scene {
 
 struct DepthMap {
-  std::string file;            // resolved path (for messages)
-  int width = 0, height = 0;   // image size in pixels
-  std::vector<double> depth_m; // row-major, row 0 = top of the image
+  std::string file;             // resolved path (for messages)
+  int width = 0, height = 0;    // image size in pixels
+  std::vector<double> depth_m;  // row-major, row 0 = top of the image
 
   double at(int x, int y) const { return depth_m[static_cast<std::size_t>(y) * width + x]; }
   // Bilinear resampling of the image onto a rows x columns pixel grid: pixel centres are mapped
@@ -58,7 +58,10 @@ double first_lit_column(int n, const G& g) {
       double lo = c - 1, hi = c;
       for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (lo + hi);
-        if ((g(mid) < 0) == (prev < 0)) lo = mid; else hi = mid;
+        if ((g(mid) < 0) == (prev < 0))
+          lo = mid;
+        else
+          hi = mid;
       }
       return 0.5 * (lo + hi);
     }

@@ -38,9 +38,7 @@ std::string where(const std::string& file, const toml::node& node) {
 struct Range {
   double lo, hi;
   bool lo_open, hi_open;
-  std::string text() const {
-    return fmt::format("{}{:g}, {:g}{}", lo_open ? "(" : "[", lo, hi, hi_open ? ")" : "]");
-  }
+  std::string text() const { return fmt::format("{}{:g}, {:g}{}", lo_open ? "(" : "[", lo, hi, hi_open ? ")" : "]"); }
   bool contains(double v) const {
     return std::isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
   }
@@ -50,8 +48,8 @@ enum class Kind { Number, Integer, Text };
 
 struct KeySpec {
   Kind kind;
-  Range range;   // numbers and integers
-  bool common;   // every sensor's scenes have it; others belong to the sensors whose SceneRules list them
+  Range range;  // numbers and integers
+  bool common;  // every sensor's scenes have it; others belong to the sensors whose SceneRules list them
 };
 
 const std::map<std::string, KeySpec>& key_specs() {
@@ -143,17 +141,18 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
     const std::string section(section_key.str());
     const toml::table* t = section_node.as_table();
     if (!t)
-      throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections of a {} scene: {}", where(path, section_node),
-                                  section, sensor.id, sections_of(sensor)));
+      throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections of a {} scene: {}",
+                                  where(path, section_node), section, sensor.id, sections_of(sensor)));
     for (const auto& [k, node] : *t) {
       const std::string key = section + "." + std::string(k.str());
       const auto it = key_specs().find(key);
       if (it == key_specs().end())
-        throw UserError(fmt::format("{}: unknown key '{}'; allowed in [{}] of a {} scene: {}", where(path, node), key, section,
-                                    sensor.id, allowed_in(section, sensor)));
+        throw UserError(fmt::format("{}: unknown key '{}'; allowed in [{}] of a {} scene: {}", where(path, node), key,
+                                    section, sensor.id, allowed_in(section, sensor)));
       if (!sensor.allows(key, it->second))
-        throw UserError(fmt::format("{}: key '{}' is not a {} scene key (it belongs to another sensor's scenes); allowed in [{}]: {}",
-                                    where(path, node), key, sensor.id, section, allowed_in(section, sensor)));
+        throw UserError(fmt::format(
+            "{}: key '{}' is not a {} scene key (it belongs to another sensor's scenes); allowed in [{}]: {}",
+            where(path, node), key, sensor.id, section, allowed_in(section, sensor)));
       const KeySpec& spec = it->second;
       line_of[key] = static_cast<int>(node.source().begin.line);
       if (spec.kind == Kind::Text) {
@@ -163,13 +162,16 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
         continue;
       }
       double v;
-      if (auto i = node.value_exact<int64_t>()) v = static_cast<double>(*i);
-      else if (auto d = node.value_exact<double>(); d && spec.kind == Kind::Number) v = *d;
+      if (auto i = node.value_exact<int64_t>())
+        v = static_cast<double>(*i);
+      else if (auto d = node.value_exact<double>(); d && spec.kind == Kind::Number)
+        v = *d;
       else
         throw UserError(fmt::format("{}: {} must be {} in {}", where(path, node), key,
                                     spec.kind == Kind::Integer ? "an integer" : "a number", spec.range.text()));
       if (!spec.range.contains(v))
-        throw UserError(fmt::format("{}: {} = {:g} is out of range; allowed: {}", where(path, node), key, v, spec.range.text()));
+        throw UserError(
+            fmt::format("{}: {} = {:g} is out of range; allowed: {}", where(path, node), key, v, spec.range.text()));
       s.values[key] = v;
     }
   }
@@ -184,16 +186,19 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   s.name = text.count("scene.name") ? text["scene.name"] : fs::path(path).stem().string();
   if (s.name.empty()) throw UserError(fmt::format("{}: scene.name must not be empty", path));
   if (s.name.find_first_of("/\\") != std::string::npos || s.name == "." || s.name == "..")
-    throw UserError(fmt::format("{}: scene.name = \"{}\"; allowed: a name without '/' or '\\' (it names the output folder)", path,
-                                s.name));
+    throw UserError(fmt::format(
+        "{}: scene.name = \"{}\"; allowed: a name without '/' or '\\' (it names the output folder)", path, s.name));
   s.description = text.count("scene.description") ? text["scene.description"] : "";
   const std::string shape = text.count("target.shape") ? text["target.shape"] : "plane";
   bool known_shape = false;
   for (const auto& sh : rules.shapes) known_shape = known_shape || sh == shape;
   if (!known_shape)
-    throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed for {}; allowed: {}", path, shape, sensor.id, join(rules.shapes)));
-  s.shape = shape == "tilted" ? TargetShape::Tilted : shape == "step" ? TargetShape::Step
-          : shape == "depth_map" ? TargetShape::DepthMap : TargetShape::Plane;
+    throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed for {}; allowed: {}", path, shape, sensor.id,
+                                join(rules.shapes)));
+  s.shape = shape == "tilted"      ? TargetShape::Tilted
+            : shape == "step"      ? TargetShape::Step
+            : shape == "depth_map" ? TargetShape::DepthMap
+                                   : TargetShape::Plane;
   auto forbid = [&](const std::string& key) {
     if (s.values.count(key) || text.count(key))
       throw UserError(fmt::format("{}: key '{}' does not apply to target.shape = \"{}\"", path, key, shape));
@@ -211,8 +216,9 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
       need("target.depth_far_m", "depth_map PGM: distance of gray level maxval");
     }
     const std::string key = fmt::format("{}:{}: target.depth_map_file", path, line_of["target.depth_map_file"]);
-    s.depth_map = std::make_shared<DepthMap>(load_depth_map(img.lexically_normal().string(), key, s.get("target.depth_near_m", 0),
-                                                            s.get("target.depth_far_m", 0), 0.01, 1e4));
+    s.depth_map =
+        std::make_shared<DepthMap>(load_depth_map(img.lexically_normal().string(), key, s.get("target.depth_near_m", 0),
+                                                  s.get("target.depth_far_m", 0), 0.01, 1e4));
     s.distance_m = *std::min_element(s.depth_map->depth_m.begin(), s.depth_map->depth_m.end());
   } else {
     for (const char* k : {"target.depth_map_file", "target.depth_near_m", "target.depth_far_m"}) forbid(k);
@@ -231,8 +237,8 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   if (s.shape != TargetShape::Tilted)
     for (const char* k : {"target.tilt_x_rad", "target.tilt_y_rad"}) forbid(k);
   if (s.shape != TargetShape::Step)
-    for (const char* k : {"target.near_distance_m", "target.step_y_m", "target.step_column_fraction", "target.step_distance_m",
-                          "target.step_column"})
+    for (const char* k : {"target.near_distance_m", "target.step_y_m", "target.step_column_fraction",
+                          "target.step_distance_m", "target.step_column"})
       forbid(k);
   if (s.shape == TargetShape::Tilted) {
     need("target.tilt_x_rad", "tilted: rotation about the vertical axis");
@@ -247,8 +253,9 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
       need("target.step_y_m", "step: the near face covers y > step_y_m");
       s.step_y_m = s.values["target.step_y_m"];
       if (!(s.near_distance_m < s.distance_m))
-        throw UserError(fmt::format("{}: target.near_distance_m = {:g} must be < target.distance_m = {:g} (the far wall)", path,
-                                    s.near_distance_m, s.distance_m));
+        throw UserError(
+            fmt::format("{}: target.near_distance_m = {:g} must be < target.distance_m = {:g} (the far wall)", path,
+                        s.near_distance_m, s.distance_m));
     }
   }
   return s;
@@ -267,8 +274,8 @@ Scene load_scene_text(std::string_view text, const std::string& origin, const st
   try {
     root = toml::parse(text, origin);
   } catch (const toml::parse_error& e) {
-    throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", origin, e.source().begin.line, e.source().begin.column,
-                                e.description()));
+    throw UserError(fmt::format("{}:{}:{}: TOML syntax error: {}", origin, e.source().begin.line,
+                                e.source().begin.column, e.description()));
   }
   try {
     return parse(root, origin, SensorScene{info.id, info.scene});
@@ -281,7 +288,8 @@ Scene load_scene_text(std::string_view text, const std::string& origin, const st
 
 Scene load_scene(const std::string& path, const std::string& sensor) {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw UserError(fmt::format("--scene {}: cannot read scene file (no such file)", path));
+  if (!fs::is_regular_file(path, ec))
+    throw UserError(fmt::format("--scene {}: cannot read scene file (no such file)", path));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UserError(fmt::format("--scene {}: cannot read scene file", path));
   std::stringstream ss;

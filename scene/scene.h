@@ -42,12 +42,12 @@ struct Scene {
   std::string description;  // [scene] description
   // [target]
   TargetShape shape = TargetShape::Plane;
-  double distance_m = 1.0;       // depth of the plane at x = y = 0 (step: the far wall)
-  double reflectance = 0.5;      // Lambertian albedo
-  double tilt_x_rad = 0;         // tilted: dz/dx = tan(tilt_x)
-  double tilt_y_rad = 0;         // tilted: dz/dy = tan(tilt_y)
-  double near_distance_m = 0;    // step: depth of the near face
-  double step_y_m = 0;           // step: the near face covers y > step_y_m
+  double distance_m = 1.0;                    // depth of the plane at x = y = 0 (step: the far wall)
+  double reflectance = 0.5;                   // Lambertian albedo
+  double tilt_x_rad = 0;                      // tilted: dz/dx = tan(tilt_x)
+  double tilt_y_rad = 0;                      // tilted: dz/dy = tan(tilt_y)
+  double near_distance_m = 0;                 // step: depth of the near face
+  double step_y_m = 0;                        // step: the near face covers y > step_y_m
   std::shared_ptr<const DepthMap> depth_map;  // depth_map: the image, in metres
   // [beam]
   double beam_power_W = 0.5e-3;

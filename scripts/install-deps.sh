@@ -10,6 +10,7 @@ packages=(
   gnuplot-nox gtkwave
   librapidcheck-dev clang libclang-rt-14-dev
   python3  # tests/cosim: checks the JSON and JUnit XML of `rangesim cosim`
+  openmpi-bin libopenmpi-dev  # optional MPI build: mpirun -n N rangesim sweep / evaluate --trials
 )
 
 missing=()

@@ -32,7 +32,8 @@ struct DemodRun {
   dm::DemodRunResult r;
 };
 
-DemodRun run_demod(const LsDemodulationConfig& c, bool aggregate, double beam_A, long long frames, std::uint64_t seed, bool noise) {
+DemodRun run_demod(const LsDemodulationConfig& c, bool aggregate, double beam_A, long long frames, std::uint64_t seed,
+                   bool noise) {
   dm::DemodKernelOptions o;
   o.aggregate = aggregate;
   o.seed = seed;
@@ -65,7 +66,8 @@ json bench_aggregation_demod(bool quick) {
   const int periods = 10000, rows = quick ? 1 : 2, columns = quick ? 32 : 64;
   const LsDemodulationConfig timed = demod_config(rows, columns, periods);
   const double beam_A = 3e-12;  // near the threshold: D ~ 5 sigma (shot noise dominant)
-  progress(fmt::format("ls-demodulation: {} x {} pixels x {} correlation periods period by period", rows, columns, periods));
+  progress(
+      fmt::format("ls-demodulation: {} x {} pixels x {} correlation periods period by period", rows, columns, periods));
   const DemodRun per = run_demod(timed, false, beam_A, 1, 71, true);
   progress("ls-demodulation: the same frame aggregated");
   double best = 1e300;
@@ -76,7 +78,8 @@ json bench_aggregation_demod(bool quick) {
     for (int i = 0; i < n; ++i) {
       const DemodRun a = run_demod(timed, true, beam_A, 1, 71, true);
       cpu += a.cpu_s;
-      cycles_equal = cycles_equal && a.r.cycles == per.r.cycles && a.r.frames[0].phase_cycles == per.r.frames[0].phase_cycles;
+      cycles_equal =
+          cycles_equal && a.r.cycles == per.r.cycles && a.r.frames[0].phase_cycles == per.r.frames[0].phase_cycles;
     }
     best = std::min(best, cpu / n);
   }
@@ -93,11 +96,13 @@ json bench_aggregation_demod(bool quick) {
   const LsDemodulationConfig check = demod_config(4, 50, 20);
   const long long frames = quick ? 30 : 60;
   progress(fmt::format("ls-demodulation: {} frames x 200 pixels aggregated and per period for the checks", frames));
-  const DemodRun nfa = run_demod(check, true, beam_A, 4, 81, false), nfp = run_demod(check, false, beam_A, 4, 81, false);
+  const DemodRun nfa = run_demod(check, true, beam_A, 4, 81, false),
+                 nfp = run_demod(check, false, beam_A, 4, 81, false);
   bool noise_free_same = nfa.r.cycles == nfp.r.cycles;
   double worst_rel = 0;
   for (std::size_t f = 0; f < nfa.r.frames.size(); ++f) {
-    noise_free_same = noise_free_same && nfa.r.frames[f].activations == nfp.r.frames[f].activations && nfa.r.frames[f].rows == nfp.r.frames[f].rows;
+    noise_free_same = noise_free_same && nfa.r.frames[f].activations == nfp.r.frames[f].activations &&
+                      nfa.r.frames[f].rows == nfp.r.frames[f].rows;
     for (std::size_t i = 0; i < nfa.r.frames[f].diff_V.size(); ++i) {
       const double x = nfa.r.frames[f].diff_V[i], y = nfp.r.frames[f].diff_V[i];
       worst_rel = std::max(worst_rel, std::fabs(x - y) / std::fabs(y));
@@ -109,12 +114,21 @@ json bench_aggregation_demod(bool quick) {
   j["noise_free_identical"] = noise_free_same;
   j["noise_free_worst_relative_D"] = worst_rel;
   j["check_samples_per_path"] = frames * 200;
-  j["diff"] = json{{"mean_aggregated_V", c.mean_a}, {"mean_per_period_V", c.mean_b}, {"var_aggregated_V2", c.var_a},
-                   {"var_per_period_V2", c.var_b},  {"mean_z", c.mean_z},          {"var_z", c.var_z},
-                   {"ks_p", c.ks_p},                {"indistinguishable", c.indistinguishable()}};
-  j["configuration"] = "preset physics, uniform 3 pA beam over 0.1 nA background; timed: N = 10000 periods, 1 frame; checks: N = 20, 4 x 50 pixels";
-  j["test"] = "D of every pixel and frame (N = 20): |mean diff| < 5 SE, |variance diff| < 5 SE, two-sample KS p >= 0.001, different seeds; "
-              "noise-free: same cycles, activations and rows, D within 1e-12 relative";
+  j["diff"] = json{{"mean_aggregated_V", c.mean_a},
+                   {"mean_per_period_V", c.mean_b},
+                   {"var_aggregated_V2", c.var_a},
+                   {"var_per_period_V2", c.var_b},
+                   {"mean_z", c.mean_z},
+                   {"var_z", c.var_z},
+                   {"ks_p", c.ks_p},
+                   {"indistinguishable", c.indistinguishable()}};
+  j["configuration"] =
+      "preset physics, uniform 3 pA beam over 0.1 nA background; timed: N = 10000 periods, 1 frame; checks: N = 20, 4 "
+      "x 50 pixels";
+  j["test"] =
+      "D of every pixel and frame (N = 20): |mean diff| < 5 SE, |variance diff| < 5 SE, two-sample KS p >= 0.001, "
+      "different seeds; "
+      "noise-free: same cycles, activations and rows, D within 1e-12 relative";
   j["statistically_identical"] = c.indistinguishable() && noise_free_same && cycles_equal;
   return j;
 }

@@ -15,7 +15,7 @@ namespace lk = rangesim::systemc::lockin;
 using nlohmann::json;
 
 struct LockinRun {
-  double cpu_s = 0;  // CPU time of the run
+  double cpu_s = 0;            // CPU time of the run
   std::vector<double> tap[2];  // ADC inputs of the LED frames, all pixels
 };
 
@@ -66,7 +66,8 @@ json bench_aggregation_lockin(bool quick) {
     same = same && c.indistinguishable();
   }
   j["samples_per_tap"] = per_clock.tap[0].size();
-  j["test"] = "per tap, ADC input of the LED frames: |mean diff| < 5 SE, |variance diff| < 5 SE, two-sample KS p >= 0.001";
+  j["test"] =
+      "per tap, ADC input of the LED frames: |mean diff| < 5 SE, |variance diff| < 5 SE, two-sample KS p >= 0.001";
   j["statistically_identical"] = same;
   return j;
 }

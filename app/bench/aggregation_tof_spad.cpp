@@ -29,7 +29,8 @@ namespace {
 namespace sp = rangesim::systemc::spad;
 
 // One simulated row of `groups` TDC groups, flat wall at 2 m, 2 Mcounts/s signal, 1 Mcounts/s background.
-sp::TofSpadKernel spad_kernel(const TofSpadConfig& cfg, bool event_skipping, bool aggregate, int groups, std::uint64_t seed) {
+sp::TofSpadKernel spad_kernel(const TofSpadConfig& cfg, bool event_skipping, bool aggregate, int groups,
+                              std::uint64_t seed) {
   sp::TofSpadKernelOptions o;
   o.seed = seed;
   o.event_skipping = event_skipping;
@@ -55,7 +56,8 @@ json bench_aggregation_spad(bool quick) {
   const sp::TofSpadKernel k_clock = spad_kernel(timed, false, false, timed_groups, 31),
                           k_cycle = spad_kernel(timed, true, false, timed_groups, 31),
                           k_agg = spad_kernel(timed, true, true, timed_groups, 31);
-  progress(fmt::format("tof-spad: {} TDC groups x {} laser cycles clock by clock", timed_groups, k_clock.laser_cycles()));
+  progress(
+      fmt::format("tof-spad: {} TDC groups x {} laser cycles clock by clock", timed_groups, k_clock.laser_cycles()));
   double c0 = cpu_now();
   const sp::FrameResult per_clock = spad_frame(k_clock, timed_groups);
   const double per_clock_s = cpu_now() - c0;
@@ -64,7 +66,8 @@ json bench_aggregation_spad(bool quick) {
   const double per_cycle_s = cpu_now() - c0;
   bool clock_equals_cycle = per_clock.pixels.size() == per_cycle.pixels.size();
   for (size_t i = 0; clock_equals_cycle && i < per_clock.pixels.size(); ++i)
-    clock_equals_cycle = per_clock.pixels[i].events == per_cycle.pixels[i].events && per_clock.pixels[i].armed == per_cycle.pixels[i].armed;
+    clock_equals_cycle = per_clock.pixels[i].events == per_cycle.pixels[i].events &&
+                         per_clock.pixels[i].armed == per_cycle.pixels[i].armed;
   // Aggregated frames take microseconds: repeat to a measurable time, keep the fastest per frame.
   progress("tof-spad: the same frame aggregated");
   double best = 1e300;
@@ -72,9 +75,11 @@ json bench_aggregation_spad(bool quick) {
     const int n = 200;
     c0 = cpu_now();
     long long sink = 0;
-    for (int i = 0; i < n; ++i) sink += spad_frame(k_agg, timed_groups, static_cast<std::uint64_t>(i)).groups_aggregated;
+    for (int i = 0; i < n; ++i)
+      sink += spad_frame(k_agg, timed_groups, static_cast<std::uint64_t>(i)).groups_aggregated;
     best = std::min(best, (cpu_now() - c0) / n);
-    if (sink != static_cast<long long>(n) * timed_groups) throw std::runtime_error("tof-spad bench: a group was not aggregated");
+    if (sink != static_cast<long long>(n) * timed_groups)
+      throw std::runtime_error("tof-spad bench: a group was not aggregated");
   }
   // Where the aggregated frame's time goes: the groups' draws alone, the rest is the estimator.
   double groups_best = 1e300;
@@ -84,7 +89,12 @@ json bench_aggregation_spad(bool quick) {
     long long sink = 0;
     for (int i = 0; i < n; ++i)
       for (int gi = 0; gi < timed_groups; ++gi)
-        sink += k_agg.simulate_group(static_cast<std::uint64_t>(i), 0, gi, [](int, int) { return sp::PixelRates{2e6, 1e6, 2 * 2.0 / 299792458.0}; }).starts;
+        sink += k_agg
+                    .simulate_group(static_cast<std::uint64_t>(i), 0, gi,
+                                    [](int, int) {
+                                      return sp::PixelRates{2e6, 1e6, 2 * 2.0 / 299792458.0};
+                                    })
+                    .starts;
     groups_best = std::min(groups_best, (cpu_now() - c0) / n);
     if (sink <= 0) throw std::runtime_error("tof-spad bench: no laser cycles");
   }
@@ -100,9 +110,11 @@ json bench_aggregation_spad(bool quick) {
   j["aggregated_groups_only_cpu_s"] = groups_best;  // the multinomial draws; the rest of the frame is the estimator
   j["aggregated_vs_per_cycle_event_driven"] = per_cycle_s / best;
   j["per_clock_equals_per_cycle"] = clock_equals_cycle;
-  j["configuration"] = "preset with afterpulse 0, dead time 0, jitter 0, TDC range 20 ns, busy 4 ns; integration 1 ms (--quick) or 10 ms timed, "
-                       "1 ms for the check; "
-                       "one row, wall at 2 m, 2 Mcounts/s signal, 1 Mcounts/s background per pixel";
+  j["configuration"] =
+      "preset with afterpulse 0, dead time 0, jitter 0, TDC range 20 ns, busy 4 ns; integration 1 ms (--quick) or 10 "
+      "ms timed, "
+      "1 ms for the check; "
+      "one row, wall at 2 m, 2 Mcounts/s signal, 1 Mcounts/s background per pixel";
   // Stated test on many groups against the per-cycle path (bit-identical to per clock, SpadTick.*).
   progress(fmt::format("tof-spad: {} groups aggregated and per cycle for the statistical check", check_groups));
   const sp::FrameResult a = spad_frame(spad_kernel(cfg, true, true, check_groups, 41), check_groups),
@@ -127,10 +139,16 @@ json bench_aggregation_spad(bool quick) {
   j["check_pixels_per_path"] = a.pixels.size();
   j["bins_worst_z"] = worst_z;
   j["bins_worst_code"] = worst_bin;
-  j["range"] = json{{"mean_aggregated_m", rc.mean_a}, {"mean_per_cycle_m", rc.mean_b}, {"mean_z", rc.mean_z},
-                    {"var_z", rc.var_z}, {"ks_p", rc.ks_p}, {"indistinguishable", rc.indistinguishable()}};
-  j["test"] = "per code, events per pixel: |mean diff| < 5 SE and |variance diff| < 5 SE; range estimate: the same plus two-sample KS "
-              "p >= 0.001; aggregated vs per-cycle on different seeds";
+  j["range"] = json{{"mean_aggregated_m", rc.mean_a},
+                    {"mean_per_cycle_m", rc.mean_b},
+                    {"mean_z", rc.mean_z},
+                    {"var_z", rc.var_z},
+                    {"ks_p", rc.ks_p},
+                    {"indistinguishable", rc.indistinguishable()}};
+  j["test"] =
+      "per code, events per pixel: |mean diff| < 5 SE and |variance diff| < 5 SE; range estimate: the same plus "
+      "two-sample KS "
+      "p >= 0.001; aggregated vs per-cycle on different seeds";
   j["statistically_identical"] = bins_ok && rc.indistinguishable();
   return j;
 }

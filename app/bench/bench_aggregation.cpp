@@ -7,9 +7,15 @@ namespace rangesim::app::bench {
 using nlohmann::json;
 
 json comparison_json(const TwoSampleComparison& c) {
-  return json{{"mean_aggregated_V", c.mean_a}, {"mean_per_clock_V", c.mean_b}, {"var_aggregated_V2", c.var_a},
-              {"var_per_clock_V2", c.var_b},   {"mean_z", c.mean_z},           {"var_z", c.var_z},
-              {"ks_d", c.ks_d},                {"ks_p", c.ks_p},               {"indistinguishable", c.indistinguishable()}};
+  return json{{"mean_aggregated_V", c.mean_a},
+              {"mean_per_clock_V", c.mean_b},
+              {"var_aggregated_V2", c.var_a},
+              {"var_per_clock_V2", c.var_b},
+              {"mean_z", c.mean_z},
+              {"var_z", c.var_z},
+              {"ks_d", c.ks_d},
+              {"ks_p", c.ks_p},
+              {"indistinguishable", c.indistinguishable()}};
 }
 
 }  // namespace rangesim::app::bench

@@ -84,7 +84,8 @@ TouchLimitData touch_limit_data(const Setup& s, long long frames) {
       int n = 0;
       for (int i = px.window_first(r); i <= px.window_last(r); ++i, ++n)
         d.value.push_back(static_cast<float>(
-            A * golden::pixel_swing_V(in.signal_V, golden::spot_profile(s.cfg.spot, i - in.centre_px), in.background_V, dark_V, 1.0)));
+            A * golden::pixel_swing_V(in.signal_V, golden::spot_profile(s.cfg.spot, i - in.centre_px), in.background_V,
+                                      dark_V, 1.0)));
       d.count.push_back(static_cast<std::uint32_t>(n));
       d.threshold.push_back(static_cast<float>(px.threshold_V(r)));
     }
@@ -231,10 +232,11 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
       for (std::size_t i = 0; i < std::min(rtl.streams.size(), model.size()); ++i)
         if (!(rtl.streams[i] == model[i])) {
           const StreamTxn &a = model[i], &b = rtl.streams[i];
-          note(fmt::format("stream {}: model frame {} sampling {} row {} left {} right {} cycles {}..{}; RTL frame {} "
-                           "sampling {} row {} bits {} left {} right {} cycles {}..{}",
-                           i, a.frame, a.sampling, a.row, a.left, a.right, a.first_cycle, a.last_cycle, b.frame, b.sampling,
-                           b.row, b.bits, b.left, b.right, b.first_cycle, b.last_cycle));
+          note(
+              fmt::format("stream {}: model frame {} sampling {} row {} left {} right {} cycles {}..{}; RTL frame {} "
+                          "sampling {} row {} bits {} left {} right {} cycles {}..{}",
+                          i, a.frame, a.sampling, a.row, a.left, a.right, a.first_cycle, a.last_cycle, b.frame,
+                          b.sampling, b.row, b.bits, b.left, b.right, b.first_cycle, b.last_cycle));
         }
       // Centres and frame end against the sparse model run itself (its FrameResults).
       long long centres = 0;
@@ -251,9 +253,15 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
                              m.rows[r].valid, m.rows[r].centre_q, m.rows[r].sum, m.rows[r].count, g.rows[r].valid,
                              g.rows[r].centre_q, g.rows[r].sum, g.rows[r].count));
       }
-      return json{{"cpu_s", rtl.cpu_s},       {"wall_s", rtl.wall_s},       {"elaboration_s", rtl.elaboration_s},
-                  {"cycles", rtl.cycles},     {"streams", model.size()},    {"centres", centres},
-                  {"mismatches", mismatches}, {"first_mismatch", first},    {"sc_errors", rtl.sc_errors},
+      return json{{"cpu_s", rtl.cpu_s},
+                  {"wall_s", rtl.wall_s},
+                  {"elaboration_s", rtl.elaboration_s},
+                  {"cycles", rtl.cycles},
+                  {"streams", model.size()},
+                  {"centres", centres},
+                  {"mismatches", mismatches},
+                  {"first_mismatch", first},
+                  {"sc_errors", rtl.sc_errors},
                   {"assertion_failed", rtl.assertion_failed}};
     });
     if (rj.contains("error")) throw std::runtime_error("bench: RTL run failed: " + rj["error"].get<std::string>());
@@ -274,7 +282,8 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
     mj["centres_compared"] = rj["centres"];
     mj["mismatches"] = rj["mismatches"];
     if (!rj["first_mismatch"].get<std::string>().empty()) mj["first_mismatch"] = rj["first_mismatch"];
-    mj["rtl"] = "rtl/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, searches, centres";
+    mj["rtl"] =
+        "rtl/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, searches, centres";
     out["model_vs_rtl"] = mj;
   }
 #endif

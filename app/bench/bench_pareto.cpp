@@ -33,9 +33,9 @@ std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) :
 }  // namespace
 
 std::string pareto_row_record(const ParetoRow& r) {
-  const nlohmann::json j = {{"sensor", r.sensor}, {"setting", r.setting}, {"harness", r.harness}, {"args", r.args},
-                            {"frames", r.frames},   {"wall_s", r.wall_s},   {"cpu_s", r.cpu_s},     {"error_m", r.error_m},
-                            {"points", r.points},   {"note", r.note}};
+  const nlohmann::json j = {
+      {"sensor", r.sensor}, {"setting", r.setting}, {"harness", r.harness}, {"args", r.args},     {"frames", r.frames},
+      {"wall_s", r.wall_s}, {"cpu_s", r.cpu_s},     {"error_m", r.error_m}, {"points", r.points}, {"note", r.note}};
   return j.dump();  // NaN error -> null
 }
 
@@ -74,7 +74,9 @@ std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir, Sw
     const int code = run_self(argv, text);
     r.wall_s = seconds_since(t0);
     r.cpu_s = children_cpu_now() - c0;
-    if (code != 0) throw std::runtime_error(fmt::format("bench: rangesim simulate {} {} failed with exit code {}", s.sensor, s.setting, code));
+    if (code != 0)
+      throw std::runtime_error(
+          fmt::format("bench: rangesim simulate {} {} failed with exit code {}", s.sensor, s.setting, code));
     const nlohmann::json j = nlohmann::json::parse(text);
     r.frames = j.value("frames", 0LL);
     const auto& e = j["range_error_rms_m"];
@@ -102,16 +104,17 @@ std::string pareto_markdown(const std::vector<ParetoRow>& rows) {
       "| sensor | setting | harness | frames | CPU time (s) | wall time (s) | rms range error (m) | Pareto |\n"
       "|---|---|---|---:|---:|---:|---:|:-:|\n";
   for (const auto& r : rows)
-    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.sensor, r.setting, r.harness, r.frames, num(r.cpu_s), num(r.wall_s),
-                     std::isfinite(r.error_m) ? num(r.error_m) : "none detected", r.pareto ? "yes" : "");
+    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.sensor, r.setting, r.harness, r.frames,
+                     num(r.cpu_s), num(r.wall_s), std::isfinite(r.error_m) ? num(r.error_m) : "none detected",
+                     r.pareto ? "yes" : "");
   return s;
 }
 
 std::string pareto_csv(const std::vector<ParetoRow>& rows) {
   std::string s = "sensor,setting,harness,frames,cpu_s,wall_s,error_rms_m,pareto,note\n";
   for (const auto& r : rows)
-    s += fmt::format("{},\"{}\",{},{},{},{},{},{},\"{}\"\n", r.sensor, r.setting, r.harness, r.frames, num(r.cpu_s), num(r.wall_s), num(r.error_m),
-                     r.pareto ? 1 : 0, r.note);
+    s += fmt::format("{},\"{}\",{},{},{},{},{},{},\"{}\"\n", r.sensor, r.setting, r.harness, r.frames, num(r.cpu_s),
+                     num(r.wall_s), num(r.error_m), r.pareto ? 1 : 0, r.note);
   return s;
 }
 
@@ -119,7 +122,7 @@ nlohmann::json pareto_json(const std::vector<ParetoRow>& rows) {
   nlohmann::json a = nlohmann::json::array();
   for (const auto& r : rows) {
     nlohmann::json j{{"sensor", r.sensor}, {"setting", r.setting}, {"harness", r.harness}, {"frames", r.frames},
-                     {"cpu_s", r.cpu_s}, {"wall_s", r.wall_s}, {"pareto", r.pareto}};
+                     {"cpu_s", r.cpu_s},   {"wall_s", r.wall_s},   {"pareto", r.pareto}};
     j["error_rms_m"] = std::isfinite(r.error_m) ? nlohmann::json(r.error_m) : nlohmann::json(nullptr);
     if (!r.note.empty()) j["note"] = r.note;
     a.push_back(j);

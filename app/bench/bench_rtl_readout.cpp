@@ -20,9 +20,9 @@ namespace rangesim::app::bench {
 
 namespace {
 
-using tb::PortData;
 using tb::port_bit;
 using tb::port_field;
+using tb::PortData;
 
 constexpr int kResetCycles = 3;  // rst high; the RTL's state is random before its first edge
 
@@ -37,7 +37,8 @@ Schedule schedule(const LsConventionalConfig& cfg) {
   const FrameTimingConfig& t = cfg.timing;
   const int N = cfg.multisampling.samplings;
   s.frame_cycles = golden::frame_timing(t, N).frame_cycles;
-  const long long P = t.latch_cycles + t.search_cycles + static_cast<long long>(t.addresses_per_sampling) * t.address_bits;
+  const long long P =
+      t.latch_cycles + t.search_cycles + static_cast<long long>(t.addresses_per_sampling) * t.address_bits;
   for (int k = 1; k <= N; ++k) {
     s.latch_in_frame.push_back(t.reset_cycles + (k - 1) * P);
     s.start_in_frame.push_back(t.reset_cycles + (k - 1) * P + t.latch_cycles - 1);
@@ -63,7 +64,8 @@ class ReadoutTop : public sc_core::sc_module {
   tb::LsReadoutSignals<Vls_conventional_readout> sig;  // the harness's ports (tb/ls_conventional/readout_ports.h)
 
   SC_HAS_PROCESS(ReadoutTop);
-  ReadoutTop(sc_core::sc_module_name name, const LsConventionalConfig& cfg, const ReadoutStimulus& stim, sc_core::sc_time period)
+  ReadoutTop(sc_core::sc_module_name name, const LsConventionalConfig& cfg, const ReadoutStimulus& stim,
+             sc_core::sc_time period)
       : sc_core::sc_module(name), clk("clk", period), frames_(stim.frames), sched_(schedule(cfg)), fields_(cfg) {
     rows_ = cfg.pixel.rows;
     columns_ = cfg.pixel.columns;
@@ -102,7 +104,8 @@ class ReadoutTop : public sc_core::sc_module {
         const auto& words = stim.act[fk * rows_ + static_cast<std::size_t>(r)].words();
         for (std::size_t i = 0; i < words.size(); ++i)
           for (std::uint64_t bits = words[i]; bits != 0; bits &= bits - 1) {
-            const long long b = static_cast<long long>(r) * columns_ + static_cast<long long>(i) * 64 + __builtin_ctzll(bits);
+            const long long b =
+                static_cast<long long>(r) * columns_ + static_cast<long long>(i) * 64 + __builtin_ctzll(bits);
             w[static_cast<std::size_t>(b / 32)] |= 1U << (b % 32);
           }
       }
@@ -155,7 +158,8 @@ class ReadoutTop : public sc_core::sc_module {
     for (int i = 0; !any && i < (rows_ + 31) / 32; ++i) any = av.get_word(i) != 0;
     if (any) {
       const auto& ab = sig.addr_bit.read();
-      const int f = static_cast<int>(port_field(sig.frame.read(), 0, 32)), k = static_cast<int>(port_field(sig.sampling.read(), 0, 8));
+      const int f = static_cast<int>(port_field(sig.frame.read(), 0, 32)),
+                k = static_cast<int>(port_field(sig.sampling.read(), 0, 8));
       for (int r = 0; r < rows_; ++r) {
         Open& s = open_[static_cast<std::size_t>(r)];
         const bool v = port_bit(av, r);
@@ -182,7 +186,7 @@ class ReadoutTop : public sc_core::sc_module {
   int frames_ = 0;
   Schedule sched_;
   int rows_ = 0, columns_ = 0, N_ = 0, B_ = 0;
-  tb::LsReadoutFields fields_;  // RTL field widths: sampling, centre Q.8, sum, count
+  tb::LsReadoutFields fields_;                             // RTL field widths: sampling, centre Q.8, sum, count
   std::vector<PortData<decltype(rtl.cmp_i)>> cmp_values_;  // per (frame, sampling)
   long long cycle_ = -1;  // cycle since reset release of the current cycle (-1: in reset)
   long long cycles_ = 0;
@@ -203,7 +207,8 @@ std::vector<StreamTxn> model_streams(const LsConventionalConfig& cfg, const Read
     for (int s = 1; s <= N; ++s) {
       const long long start = f * sched.frame_cycles + sched.start_in_frame[static_cast<std::size_t>(s - 1)];
       for (int r = 0; r < R; ++r) {
-        const systemc::AddressSearchResult e = k.evaluate(stim.act[(static_cast<std::size_t>(f) * N + (s - 1)) * R + r]);
+        const systemc::AddressSearchResult e =
+            k.evaluate(stim.act[(static_cast<std::size_t>(f) * N + (s - 1)) * R + r]);
         if (!e.found) continue;  // nothing streamed
         out.push_back({f, s, r, 2 * B, e.left, e.right, start + e.done_cycle - 2 * B + 1, start + e.done_cycle});
       }

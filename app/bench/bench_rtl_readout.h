@@ -41,12 +41,12 @@ struct ReadoutStimulus {
 std::vector<StreamTxn> model_streams(const LsConventionalConfig& cfg, const ReadoutStimulus& stim);
 
 struct RtlReadoutResult {
-  std::vector<StreamTxn> streams;                 // ordered by (frame, sampling, row)
-  std::vector<systemc::FrameResult> frames;       // centres at frame_done, end_cycle (no phase counts)
-  long long cycles = 0;          // clock cycles simulated after reset release
-  double wall_s = 0;             // sc_start of the frames (elaboration excluded)
-  double cpu_s = 0;              // CPU time of the same
-  double elaboration_s = 0;      // building the verilated readout and the cmp_i values
+  std::vector<StreamTxn> streams;            // ordered by (frame, sampling, row)
+  std::vector<systemc::FrameResult> frames;  // centres at frame_done, end_cycle (no phase counts)
+  long long cycles = 0;                      // clock cycles simulated after reset release
+  double wall_s = 0;                         // sc_start of the frames (elaboration excluded)
+  double cpu_s = 0;                          // CPU time of the same
+  double elaboration_s = 0;                  // building the verilated readout and the cmp_i values
   long long sc_errors = 0;
   bool assertion_failed = false;  // a Verilog assertion fired
 };

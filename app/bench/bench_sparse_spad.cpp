@@ -22,7 +22,8 @@ constexpr int kColumns = 128, kBeam = 8;  // array width; the beam spot is kBeam
 struct SpadSpot {
   int rows;
   bool lit(int r, int c) const {
-    return r >= (rows - kBeam) / 2 && r < (rows + kBeam) / 2 && c >= (kColumns - kBeam) / 2 && c < (kColumns + kBeam) / 2;
+    return r >= (rows - kBeam) / 2 && r < (rows + kBeam) / 2 && c >= (kColumns - kBeam) / 2 &&
+           c < (kColumns + kBeam) / 2;
   }
   // Wall at 2 m; 2 Mcounts/s signal in the spot, 1 Mcounts/s background everywhere.
   sp::PixelRates operator()(int r, int c) const { return {lit(r, c) ? 2e6 : 0.0, 1e6, 2 * 2.0 / 299792458.0}; }
@@ -54,7 +55,8 @@ json bench_sparse_spad(bool quick) {
   const TofSpadConfig cfg = spad_exact_config();  // where the background class's closed form is exact
   const int rows = quick ? 16 : 64;
   const SpadSpot spot{rows};
-  progress(fmt::format("tof-spad sparse: {} x {} pixels, {} x {} beam spot, dense (every group per cycle)", rows, kColumns, kBeam, kBeam));
+  progress(fmt::format("tof-spad sparse: {} x {} pixels, {} x {} beam spot, dense (every group per cycle)", rows,
+                       kColumns, kBeam, kBeam));
   const Timed dense = run(cfg, rows, false, 51);
   progress("tof-spad sparse: the same frame with background-only groups as one class");
   // The same seed: the lit groups run the same per-cycle path and must come out bit-identical.
@@ -72,11 +74,13 @@ json bench_sparse_spad(bool quick) {
   j["sparse_cpu_s"] = sparse.cpu_s;
   j["groups_background_class"] = sparse.frame.groups_background;
   j["configuration"] = fmt::format(
-      "preset with afterpulse 0, dead time 0, jitter 0, TDC range 20 ns, busy 4 ns, 1 ms integration; {} x {} pixels, wall at 2 m, "
+      "preset with afterpulse 0, dead time 0, jitter 0, TDC range 20 ns, busy 4 ns, 1 ms integration; {} x {} pixels, "
+      "wall at 2 m, "
       "{} x {} beam spot with 2 Mcounts/s signal, 1 Mcounts/s background on every pixel; aggregation off both ways",
       rows, kColumns, kBeam, kBeam);
   // Deterministic parts and lit pixels: identical.
-  const bool cycles_identical = dense.frame.cycles == sparse.frame.cycles && dense.frame.phase_cycles == sparse.frame.phase_cycles;
+  const bool cycles_identical =
+      dense.frame.cycles == sparse.frame.cycles && dense.frame.phase_cycles == sparse.frame.phase_cycles;
   bool lit_identical = dense.frame.pixels.size() == sparse.frame.pixels.size();
   std::vector<const sp::PixelResult*> bg_dense, bg_sparse;
   for (size_t i = 0; lit_identical && i < dense.frame.pixels.size(); ++i) {
@@ -111,11 +115,16 @@ json bench_sparse_spad(bool quick) {
   }
   const TwoSampleComparison tc = compare_samples(ta, tb), rc = compare_samples(ra, rb);
   const double n = static_cast<double>(ta.size()), pa = da / n, pb = db / n, pool = (pa + pb) / 2;
-  const double det_z = pool > 0 && pool < 1 ? (pa - pb) / std::sqrt(pool * (1 - pool) * 2 / n) : (pa == pb ? 0.0 : INFINITY);
+  const double det_z =
+      pool > 0 && pool < 1 ? (pa - pb) / std::sqrt(pool * (1 - pool) * 2 / n) : (pa == pb ? 0.0 : INFINITY);
   const bool bg_ok = worst_z < 5 && tc.indistinguishable() && rc.indistinguishable() && std::fabs(det_z) < 5;
   j["background_pixels"] = ta.size();
   j["background_bins_worst_z"] = worst_z;
-  j["background_total_counts"] = json{{"mean_sparse", tc.mean_a}, {"mean_dense", tc.mean_b}, {"mean_z", tc.mean_z}, {"var_z", tc.var_z}, {"ks_p", tc.ks_p}};
+  j["background_total_counts"] = json{{"mean_sparse", tc.mean_a},
+                                      {"mean_dense", tc.mean_b},
+                                      {"mean_z", tc.mean_z},
+                                      {"var_z", tc.var_z},
+                                      {"ks_p", tc.ks_p}};
   j["background_range"] = json{{"mean_z", rc.mean_z}, {"var_z", rc.var_z}, {"ks_p", rc.ks_p}};
   j["background_detection_fraction"] = json{{"sparse", pa}, {"dense", pb}, {"z", det_z}};
   j["cycles_identical"] = cycles_identical;

@@ -111,8 +111,9 @@ std::string scene_path(const std::string& file) {
   dirs.emplace_back(RANGESIM_SOURCE_SCENE_DIR);
   for (const auto& d : dirs)
     if (fs::is_regular_file(d / file)) return (d / file).string();
-  throw UserError(fmt::format("bench: scene file {} not found in $RANGESIM_SCENE_DIR, <prefix>/share/rangesim/scenes or {}",
-                              file, RANGESIM_SOURCE_SCENE_DIR));
+  throw UserError(
+      fmt::format("bench: scene file {} not found in $RANGESIM_SCENE_DIR, <prefix>/share/rangesim/scenes or {}", file,
+                  RANGESIM_SOURCE_SCENE_DIR));
 }
 
 }  // namespace rangesim::app::bench

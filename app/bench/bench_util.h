@@ -11,9 +11,7 @@
 namespace rangesim::app::bench {
 
 using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+inline double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 // CPU time of this process (user + system), s. The figures are ratios of CPU times: on a shared
 // machine the wall time depends on the other users' load, the CPU time of a single-threaded run
 // does not.

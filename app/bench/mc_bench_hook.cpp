@@ -14,16 +14,11 @@ McBenchHookResult mc_bench_hook(bool quick) {
     const McBenchFigures f = measure_mc_bench(quick);
     r.mc_vs_bare_rng = f.mc_vs_bare_rng;
     r.threads2_vs_1 = f.threads2_vs_1;
-    r.details = {{"mc_variates_per_s", f.mc_variates_per_s},
-                 {"bare_variates_per_s", f.bare_variates_per_s},
-                 {"sweep_1thread_s", f.sweep_1thread_s},
-                 {"sweep_2threads_s", f.sweep_2threads_s},
-                 {"sweep_1thread_cpu_s", f.sweep_1thread_cpu_s},
-                 {"sweep_2threads_cpu_s", f.sweep_2threads_cpu_s},
-                 {"cpu_share_2threads", f.cpu_share_2threads},
-                 {"cpu_2threads_vs_1", f.cpu_2threads_vs_1},
-                 {"load_average_1min", f.load_average_1min},
-                 {"threads_identical", true}};
+    r.details = {{"mc_variates_per_s", f.mc_variates_per_s},     {"bare_variates_per_s", f.bare_variates_per_s},
+                 {"sweep_1thread_s", f.sweep_1thread_s},         {"sweep_2threads_s", f.sweep_2threads_s},
+                 {"sweep_1thread_cpu_s", f.sweep_1thread_cpu_s}, {"sweep_2threads_cpu_s", f.sweep_2threads_cpu_s},
+                 {"cpu_share_2threads", f.cpu_share_2threads},   {"cpu_2threads_vs_1", f.cpu_2threads_vs_1},
+                 {"load_average_1min", f.load_average_1min},     {"threads_identical", true}};
   } catch (const std::exception& e) {
     // measure_mc_bench throws when the 1- and 2-thread sweeps differ: an identity failure.
     r.note = e.what();

@@ -11,8 +11,16 @@ std::vector<ParetoSetting> ls_conventional_pareto_settings(bool quick) {
   return {
       {"ls-conventional", "plane.toml", "kernel, sparse, event skipping", "kernel", {"--kernel-only", "--frames", lf}},
       {"ls-conventional", "plane.toml", "kernel, dense", "kernel", {"--kernel-only", "--no-sparse", "--frames", lf}},
-      {"ls-conventional", "plane.toml", "kernel, per clock", "kernel", {"--kernel-only", "--no-event-skip", "--frames", lf}},
-      {"ls-conventional", "plane.toml", "kernel, noise-free", "kernel", {"--kernel-only", "--noise-free", "--frames", lf}},
+      {"ls-conventional",
+       "plane.toml",
+       "kernel, per clock",
+       "kernel",
+       {"--kernel-only", "--no-event-skip", "--frames", lf}},
+      {"ls-conventional",
+       "plane.toml",
+       "kernel, noise-free",
+       "kernel",
+       {"--kernel-only", "--noise-free", "--frames", lf}},
       {"ls-conventional", "plane.toml", "SystemC module", "systemc", {"--frames", quick ? "10" : "60"}},
   };
 }

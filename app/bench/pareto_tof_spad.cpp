@@ -14,7 +14,8 @@ std::vector<ParetoSetting> tof_spad_pareto_settings(bool quick) {
       {"tof-spad", "tof-spad-spot.toml", "kernel, beam spot, sparse", "kernel", {"--kernel-only"}},
   };
   if (!quick) {
-    s.push_back({"tof-spad", "tof-spad-plane.toml", "kernel, 16 frames", "kernel", {"--kernel-only", "--frames", "16"}});
+    s.push_back(
+        {"tof-spad", "tof-spad-plane.toml", "kernel, 16 frames", "kernel", {"--kernel-only", "--frames", "16"}});
     s.push_back({"tof-spad", "tof-spad-spot.toml", "kernel, beam spot, dense", "kernel", {"--kernel-only", "--dense"}});
   }
   return s;

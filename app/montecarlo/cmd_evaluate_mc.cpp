@@ -34,8 +34,8 @@ constexpr int kExitBudget = 4;  // --max-seconds exceeded; journal kept (kExitIn
 void progress(long long done, long long total, long long trials, double elapsed, double left) {
   static int last_quarter = -1;
   if (isatty(fileno(stderr))) {
-    std::fprintf(stderr, "\revaluate --trials: %lld/%lld points, %lld trials, %.1f s, %s left   %s", done, total, trials,
-                 elapsed, std::isfinite(left) ? fmt::format("~{:.0f} s", left).c_str() : "?",
+    std::fprintf(stderr, "\revaluate --trials: %lld/%lld points, %lld trials, %.1f s, %s left   %s", done, total,
+                 trials, elapsed, std::isfinite(left) ? fmt::format("~{:.0f} s", left).c_str() : "?",
                  done == total && left == 0 ? "\n" : "");
   } else if (int q = static_cast<int>(4 * done / std::max(total, 1LL)); q != last_quarter || left == 0) {
     last_quarter = q;
@@ -68,7 +68,8 @@ std::string resume_command(const EvaluateOptions& o, const std::string& dir) {
 std::string fingerprint(const ParamSet& params, const mc::McSweepOptions& o) {
   std::string f = fmt::format("rangesim evaluate --trials (Monte Carlo 1)\nsensor = {}\n", params.sensor_id());
   for (const auto& [key, v] : params.values())
-    f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text) : fmt::format("{} = {:.17g}\n", key, v.number);
+    f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text)
+                                   : fmt::format("{} = {:.17g}\n", key, v.number);
   f += fmt::format("trials = {}\ntarget_error_m = {:.17g}\nmax_trials = {}\nseed = {}\n", o.trials, o.target_error_m,
                    o.max_trials, o.seed);
   return f;
@@ -77,8 +78,7 @@ std::string fingerprint(const ParamSet& params, const mc::McSweepOptions& o) {
 mc::McSweepOptions sweep_options(const EvaluateOptions& opt) {
   mc::McSweepOptions o;
   o.trials = opt.trials.value_or(100);
-  if (o.trials < 2 || o.trials > 10000000)
-    throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", o.trials));
+  if (o.trials < 2 || o.trials > 10000000) throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", o.trials));
   if (opt.target_error) {
     if (!(std::isfinite(*opt.target_error) && *opt.target_error > 0))
       throw UserError(fmt::format("--target-error {}: allowed a finite error > 0 (metres)", *opt.target_error));
@@ -180,10 +180,11 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
 
   if (!plot_warning.empty()) fmt::print(stderr, "rangesim evaluate: warning: {}\n", plot_warning);
   if (r.points_capped > 0)
-    fmt::print(stderr,
-               "rangesim evaluate: warning: {} of {} points reached --max-trials {} before the 95% CI half-width of the "
-               "accuracy fell to --target-error {:g} m (largest left: {:.3g} m); raise --max-trials for them\n",
-               r.points_capped, points.size(), sopt.max_trials, sopt.target_error_m, r.worst_capped_half_width_m);
+    fmt::print(
+        stderr,
+        "rangesim evaluate: warning: {} of {} points reached --max-trials {} before the 95% CI half-width of the "
+        "accuracy fell to --target-error {:g} m (largest left: {:.3g} m); raise --max-trials for them\n",
+        r.points_capped, points.size(), sopt.max_trials, sopt.target_error_m, r.worst_capped_half_width_m);
   if (opt.json) {
     fmt::print("{}\n", summary.dump(2));
     return 0;

@@ -98,16 +98,18 @@ nlohmann::json mc_summary_json(const McGrid& g) {
 
 std::string mc_summary_text(const McGrid& g) {
   const nlohmann::json j = mc_summary_json(g);
-  std::string t = fmt::format("Monte Carlo ({} trials/point{}): {} points, {} trials\n", g.trials,
-                              g.target_error_m > 0 ? fmt::format(", target CI half-width {:g} m", g.target_error_m) : "",
-                              j["points"].get<long long>(), j["trials_total"].get<long long>());
+  std::string t =
+      fmt::format("Monte Carlo ({} trials/point{}): {} points, {} trials\n", g.trials,
+                  g.target_error_m > 0 ? fmt::format(", target CI half-width {:g} m", g.target_error_m) : "",
+                  j["points"].get<long long>(), j["trials_total"].get<long long>());
   if (j["points"].get<long long>() > 0)
-    t += fmt::format("  accuracy {:.4g} .. {:.4g} m, largest 95% CI half-width {:.3g} m\n"
-                     "  golden accuracy inside the MC 95% CI at {} of {} points\n",
-                     j["accuracy_min_m"].is_null() ? NAN : j["accuracy_min_m"].get<double>(),
-                     j["accuracy_max_m"].is_null() ? NAN : j["accuracy_max_m"].get<double>(),
-                     j["accuracy_ci_half_width_max_m"].is_null() ? NAN : j["accuracy_ci_half_width_max_m"].get<double>(),
-                     j["points_golden_in_ci"].get<long long>(), j["points"].get<long long>());
+    t += fmt::format(
+        "  accuracy {:.4g} .. {:.4g} m, largest 95% CI half-width {:.3g} m\n"
+        "  golden accuracy inside the MC 95% CI at {} of {} points\n",
+        j["accuracy_min_m"].is_null() ? NAN : j["accuracy_min_m"].get<double>(),
+        j["accuracy_max_m"].is_null() ? NAN : j["accuracy_max_m"].get<double>(),
+        j["accuracy_ci_half_width_max_m"].is_null() ? NAN : j["accuracy_ci_half_width_max_m"].get<double>(),
+        j["points_golden_in_ci"].get<long long>(), j["points"].get<long long>());
   return t;
 }
 
@@ -147,7 +149,8 @@ std::string render_mc_plot(OutputDir& out, const McGrid& g) {
   for (const std::string ext : {"png", "svg"}) {
     images.push_back("mc_accuracy." + ext);
     script += "reset\n";
-    script += ext == "png" ? "set terminal pngcairo size 900,600 noenhanced\n" : "set terminal svg size 900,600 noenhanced\n";
+    script +=
+        ext == "png" ? "set terminal pngcairo size 900,600 noenhanced\n" : "set terminal svg size 900,600 noenhanced\n";
     script += fmt::format("set output '{}'\n", out.staged(images.back()));
     script += fmt::format(
         "set title '{}: Monte Carlo accuracy with 95% CI (points) and golden closed form (lines)'\n"
@@ -157,9 +160,10 @@ std::string render_mc_plot(OutputDir& out, const McGrid& g) {
     std::string plot = "plot ";
     for (std::size_t i = 0; i < pick.size(); ++i) {
       const std::string bg = fmt::format("{:.3g} {}", ev.background.values[pick[i]], ev.background.unit);
-      plot += fmt::format("{}'{}' index {} using 1:2:3:4 with yerrorbars lc {} pt 7 ps 0.6 title 'MC bg {}', "
-                          "'{}' index {} using 1:5 with lines lc {} notitle",
-                          i ? ", " : "", data, i, i + 1, bg, data, i, i + 1);
+      plot += fmt::format(
+          "{}'{}' index {} using 1:2:3:4 with yerrorbars lc {} pt 7 ps 0.6 title 'MC bg {}', "
+          "'{}' index {} using 1:5 with lines lc {} notitle",
+          i ? ", " : "", data, i, i + 1, bg, data, i, i + 1);
     }
     script += plot + "\nunset output\n";
   }

@@ -14,9 +14,9 @@
 namespace rangesim::app::mc {
 
 struct McGrid {
-  const golden::EvalResult* ev = nullptr;            // the golden evaluation of the same grid
-  std::vector<std::optional<McPointStats>> stats;    // per grid point (row-major), empty where not run
-  const char* unit = "m";                            // model unit of the statistics
+  const golden::EvalResult* ev = nullptr;          // the golden evaluation of the same grid
+  std::vector<std::optional<McPointStats>> stats;  // per grid point (row-major), empty where not run
+  const char* unit = "m";                          // model unit of the statistics
   double metres_per_unit = 1;
   long long trials = 0, max_trials = 0;
   double target_error_m = 0;

@@ -131,8 +131,10 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
         sh->stats[i] = o.stats;  // distinct element per point: no race
         sh->point_variates[i] = o.variates;
         sh->trials += o.trials;
-        if (o.variates < 0) sh->counted = false;
-        else sh->variates += o.variates;
+        if (o.variates < 0)
+          sh->counted = false;
+        else
+          sh->variates += o.variates;
         ++sh->done;
       }
     } catch (...) {

@@ -30,14 +30,14 @@ struct McSweepPoint {
 };
 
 struct McSweepOptions {
-  long long trials = 100;        // first batch per point
-  double target_error_m = 0;     // 0: no target
-  long long max_trials = 100000; // cap per point (trial budget)
+  long long trials = 100;         // first batch per point
+  double target_error_m = 0;      // 0: no target
+  long long max_trials = 100000;  // cap per point (trial budget)
   int threads = 1;
   std::uint64_t seed = 1;
-  double max_seconds = 0;        // wall-time budget, 0: none; when exceeded the sweep stops like on Ctrl-C
+  double max_seconds = 0;                   // wall-time budget, 0: none; when exceeded the sweep stops like on Ctrl-C
   const std::atomic<bool>* stop = nullptr;  // set asynchronously (SIGINT): finish nothing new
-  std::vector<std::size_t> order;  // visiting order of `points` (empty: as given); tests shuffle it
+  std::vector<std::size_t> order;           // visiting order of `points` (empty: as given); tests shuffle it
   // Progress callback from the calling thread about every `progress_interval_s`:
   // (points done, points total, trials run, seconds elapsed, seconds left estimated).
   void (*progress)(long long, long long, long long, double, double) = nullptr;
@@ -48,16 +48,16 @@ struct McSweepOptions {
 struct McSweepResult {
   std::vector<std::optional<McPointStats>> stats;  // per entry of `points`
   std::vector<long long> point_variates;           // per entry: variates drawn in this process (-1: unknown)
-  bool complete = false;           // every point has its statistics
-  bool stopped = false;            // stop flag seen
-  bool out_of_time = false;        // max_seconds exceeded
-  bool abandoned = false;          // workers did not return within stop_grace_s of a stop: the
-                                   // caller must end the process now (std::_Exit); journal is safe
-  std::vector<std::size_t> stuck_points;  // abandoned: entries of `points` whose trials were still running
-  long long trials_run = 0;        // trials run in this process (not from the journal)
-  long long variates = 0;          // random variates drawn in this process (-1: not counted)
+  bool complete = false;                           // every point has its statistics
+  bool stopped = false;                            // stop flag seen
+  bool out_of_time = false;                        // max_seconds exceeded
+  bool abandoned = false;                          // workers did not return within stop_grace_s of a stop: the
+                                                   // caller must end the process now (std::_Exit); journal is safe
+  std::vector<std::size_t> stuck_points;           // abandoned: entries of `points` whose trials were still running
+  long long trials_run = 0;                        // trials run in this process (not from the journal)
+  long long variates = 0;                          // random variates drawn in this process (-1: not counted)
   long long points_from_journal = 0;
-  long long points_capped = 0;     // target error not reached within max_trials
+  long long points_capped = 0;  // target error not reached within max_trials
   double worst_capped_half_width_m = 0;
   double wall_s = 0;
 };

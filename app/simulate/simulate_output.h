@@ -3,7 +3,6 @@
 #include <string>
 #include <vector>
 
-
 #include "app/output_dir.h"
 
 namespace rangesim::app {

@@ -78,8 +78,8 @@ std::string write_files(const SimulateOptions& opt, OutputDir& out, const system
 
 // summary.json (with any warnings), the trace, the commit, then the JSON (--json) or the summary
 // and the files written.
-int finish(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace, nlohmann::json& j, const std::string& plot_warning,
-           const systemc::SimulationReport& report) {
+int finish(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace, nlohmann::json& j,
+           const std::string& plot_warning, const systemc::SimulationReport& report) {
   if (!plot_warning.empty()) j["warnings"] = {plot_warning};
   if (trace.enabled()) j["trace"] = opt.trace;
   out.write("summary.json", j.dump(2) + "\n");

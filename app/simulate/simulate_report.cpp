@@ -3,7 +3,6 @@
 #include <cmath>
 #include <fmt/format.h>
 
-
 namespace rangesim::app {
 
 Progress::Progress(std::string unit, long long total, Clock::time_point start, std::FILE* to)
@@ -48,14 +47,18 @@ void print_summary(const systemc::SimulationReport& s, std::FILE* to) {
   fmt::print(to, "  {:<18} {:>10} {:>10}\n\n", s.frame_label, s.frame_cycles, s.golden_frame_cycles);
   fmt::print(to, "  frame time       {:>14.4f} {} measured, {:.4f} {} golden{}\n", s.frame_time_s * scale, unit,
              s.golden_frame_time_s * scale, unit, s.timing_matches ? "" : "  (MISMATCH)");
-  fmt::print(to, "  frame rate       {:>17} measured, {} golden\n", rate_text(s.frame_rate_Hz), rate_text(s.golden_frame_rate_Hz));
-  fmt::print(to, "  range maps       {:>14.4f} /s ({} {}{} each)\n\n", s.range_maps_per_s, s.frames_per_range_map, s.frame_label,
-             s.frames_per_range_map == 1 ? "" : s.frame_label.back() == 's' ? "es" : "s");
+  fmt::print(to, "  frame rate       {:>17} measured, {} golden\n", rate_text(s.frame_rate_Hz),
+             rate_text(s.golden_frame_rate_Hz));
+  fmt::print(to, "  range maps       {:>14.4f} /s ({} {}{} each)\n\n", s.range_maps_per_s, s.frames_per_range_map,
+             s.frame_label,
+             s.frames_per_range_map == 1   ? ""
+             : s.frame_label.back() == 's' ? "es"
+                                           : "s");
   fmt::print(to, "  {}\n", s.points_line);
   if (s.error.detected) {
     const std::string px = s.error_in_px ? fmt::format(" ({:.4f} px)", s.error.rms_px()) : "";
-    fmt::print(to, "  range error      rms {:.3f} mm{}, mean {:+.3f} mm, max |e| {:.3f} mm{}\n", s.error.rms_m() * 1e3, px,
-               s.error.mean_m() * 1e3, s.error.max_abs_m * 1e3, s.error_note.empty() ? "" : " " + s.error_note);
+    fmt::print(to, "  range error      rms {:.3f} mm{}, mean {:+.3f} mm, max |e| {:.3f} mm{}\n", s.error.rms_m() * 1e3,
+               px, s.error.mean_m() * 1e3, s.error.max_abs_m * 1e3, s.error_note.empty() ? "" : " " + s.error_note);
   }
   fmt::print(to, "  wall time        {:.2f} s{}\n\n", s.wall_time_s, s.wall_note.empty() ? "" : ", " + s.wall_note);
 }

@@ -20,12 +20,12 @@ class Progress {
   int reports() const { return reports_; }  // lines printed so far
 
  private:
-  std::string unit_;            // what is counted
-  long long total_;             // count at the end
-  Clock::time_point start_;     // start of the command
-  Clock::time_point last_;      // last line printed
-  std::FILE* to_;               // stream
-  int reports_ = 0;             // lines printed
+  std::string unit_;         // what is counted
+  long long total_;          // count at the end
+  Clock::time_point start_;  // start of the command
+  Clock::time_point last_;   // last line printed
+  std::FILE* to_;            // stream
+  int reports_ = 0;          // lines printed
 };
 
 // The terminal summary of a scene run (the same layout for every sensor; times in a unit that

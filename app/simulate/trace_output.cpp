@@ -62,15 +62,18 @@ bool on_path(const std::string& tool) {
 
 TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path) {
   if (path_.empty()) return;
-  if (kernel_only) throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
+  if (kernel_only)
+    throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
   if (!ends_with(path_, ".vcd") && !ends_with(path_, ".fst"))
     throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd or .fst", path_));
   const fs::path parent = fs::absolute(path_).parent_path();
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
     throw UserError(fmt::format("--trace {}: directory {} does not exist or is not writable", path_, parent.string()));
   if (ends_with(path_, ".fst") && !on_path("vcd2fst"))
-    throw UserError(fmt::format("--trace {}: writing FST needs vcd2fst (Debian package gtkwave, scripts/install-deps.sh); "
-                                "or name the trace .vcd", path_));
+    throw UserError(
+        fmt::format("--trace {}: writing FST needs vcd2fst (Debian package gtkwave, scripts/install-deps.sh); "
+                    "or name the trace .vcd",
+                    path_));
   vcd_base_ = fmt::format("{}.partial-{}", path_, ::getpid());
 }
 

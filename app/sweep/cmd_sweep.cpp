@@ -47,7 +47,8 @@ Shard parse_shard(const std::optional<std::string>& text) {
 std::string fingerprint(const ParamSet& base, const SweepHeader& h, const std::vector<std::vector<std::string>>& vars) {
   std::string f = fmt::format("rangesim sweep 1\nsensor = {}\n", base.sensor_id());
   for (const auto& [key, v] : base.values())
-    f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text) : fmt::format("{} = {:.17g}\n", key, v.number);
+    f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text)
+                                   : fmt::format("{} = {:.17g}\n", key, v.number);
   for (const auto& s : h.settings) f += "set " + s + "\n";
   for (const auto& v : vars) {
     f += "variant";
@@ -99,7 +100,8 @@ int write_outputs(OutputDir& out, const SweepHeader& h, const std::vector<SweepR
     return kExitOk;
   }
   fmt::print("{}\noutputs in {}/: ", sweep_text(h, rows), out.dir());
-  for (std::size_t i = 0; i < written.size(); ++i) fmt::print("{}{}", i ? ", " : "", fs::path(written[i]).filename().string());
+  for (std::size_t i = 0; i < written.size(); ++i)
+    fmt::print("{}{}", i ? ", " : "", fs::path(written[i]).filename().string());
   fmt::print("\n");
   return kExitOk;
 }
@@ -138,8 +140,9 @@ int run_sweep(const SweepOptions& opt) {
   std::unique_ptr<OutputDir> out;  // rank 0 writes; the other ranks only journal their share
   if (world.rank == 0) out = std::make_unique<OutputDir>(dir, "--out");
   const std::string fp = fingerprint(base, h, vars);
-  SweepJournal journal((fs::path(dir) / ".staging-sweep" / fmt::format("sweep.{}-of-{}.journal", shard.k, shard.n)).string(),
-                       fp, opt.resume);
+  SweepJournal journal(
+      (fs::path(dir) / ".staging-sweep" / fmt::format("sweep.{}-of-{}.journal", shard.k, shard.n)).string(), fp,
+      opt.resume);
   if (opt.resume && world.rank == 0) remove_stale_staging(dir);
   SigintGuard sigint;
   SweepProgress progress;
@@ -178,9 +181,12 @@ int run_sweep(const SweepOptions& opt) {
       for (const auto& r : nlohmann::json::parse(part)) rows.push_back(row_from_json(r));
     std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) { return a.index < b.index; });
   } else if (shard.n > 1) {
-    nlohmann::json part = {{"rangesim_sweep_shard", 1},     {"fingerprint_hash", SweepJournal::hash(fp)},
-                           {"shard", shard.k},              {"shards", shard.n},
-                           {"variants_total", vars.size()}, {"header", header_json(h)},
+    nlohmann::json part = {{"rangesim_sweep_shard", 1},
+                           {"fingerprint_hash", SweepJournal::hash(fp)},
+                           {"shard", shard.k},
+                           {"shards", shard.n},
+                           {"variants_total", vars.size()},
+                           {"header", header_json(h)},
                            {"rows", nlohmann::json::array()}};
     for (const auto& r : rows) part["rows"].push_back(row_json(r));
     const std::string name = fmt::format("sweep.shard-{}-of-{}.json", shard.k, shard.n);
@@ -197,7 +203,8 @@ int run_sweep(const SweepOptions& opt) {
 }
 
 int run_merge(const MergeOptions& opt) {
-  if (opt.parts.empty()) throw UserError("merge: give the shard files, e.g. rangesim merge --out DIR part1/sweep.shard-1-of-2.json ...");
+  if (opt.parts.empty())
+    throw UserError("merge: give the shard files, e.g. rangesim merge --out DIR part1/sweep.shard-1-of-2.json ...");
   std::vector<SweepRow> rows;
   std::optional<SweepHeader> h;
   std::uint64_t hash = 0;
@@ -218,17 +225,20 @@ int run_merge(const MergeOptions& opt) {
       h = header_from_json(j.at("header")), hash = j.at("fingerprint_hash"), shards = n, total = j.at("variants_total");
       seen.assign(static_cast<std::size_t>(n), false);
     } else if (j.at("fingerprint_hash").get<std::uint64_t>() != hash || n != shards) {
-      throw UserError(fmt::format("merge: {}: shard of another sweep (preset, --set, --vary or shard count differ from {})",
-                                  path, opt.parts.front()));
+      throw UserError(
+          fmt::format("merge: {}: shard of another sweep (preset, --set, --vary or shard count differ from {})", path,
+                      opt.parts.front()));
     }
-    if (seen[static_cast<std::size_t>(k - 1)]) throw UserError(fmt::format("merge: {}: shard {}/{} given twice", path, k, n));
+    if (seen[static_cast<std::size_t>(k - 1)])
+      throw UserError(fmt::format("merge: {}: shard {}/{} given twice", path, k, n));
     seen[static_cast<std::size_t>(k - 1)] = true;
     for (const auto& r : j.at("rows")) rows.push_back(row_from_json(r));
   }
   std::string missing;
   for (std::size_t k = 0; k < seen.size(); ++k)
     if (!seen[k]) missing += fmt::format("{}{}/{}", missing.empty() ? "" : ", ", k + 1, shards);
-  if (!missing.empty()) throw UserError(fmt::format("merge: shards missing: {}; allowed: all {} shards once", missing, shards));
+  if (!missing.empty())
+    throw UserError(fmt::format("merge: shards missing: {}; allowed: all {} shards once", missing, shards));
   std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) { return a.index < b.index; });
   if (static_cast<long long>(rows.size()) != total)
     throw UserError(fmt::format("merge: the shards hold {} variants, the sweep has {}", rows.size(), total));

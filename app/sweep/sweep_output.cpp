@@ -85,8 +85,14 @@ nlohmann::json sweep_json(const SweepHeader& h, const std::vector<SweepRow>& row
   }
   long long valid = 0;
   for (const auto& r : rows) valid += r.valid ? 1 : 0;
-  return {{"sensor", h.sensor}, {"preset", h.preset},     {"set", h.settings},         {"varied", h.keys},
-          {"zip", h.zip},       {"variants_total", rows.size()}, {"variants_valid", valid}, {"variants", variants},
+  return {{"sensor", h.sensor},
+          {"preset", h.preset},
+          {"set", h.settings},
+          {"varied", h.keys},
+          {"zip", h.zip},
+          {"variants_total", rows.size()},
+          {"variants_valid", valid},
+          {"variants", variants},
           {"pareto_axes", {"range_maps_per_s (higher is better)", h.pareto_accuracy + " (lower is better)"}}};
 }
 
@@ -107,9 +113,9 @@ std::string sweep_text(const SweepHeader& h, const std::vector<SweepRow>& rows) 
       continue;
     }
     const auto mm = [&](const char* f) { return short_num(figure(r, f) * 1e3); };
-    s += fmt::format("  {:>5} {}{:>14} {:>12} {:>12} {:>12} {:>7}\n", r.index, vals, short_num(figure(r, "range_maps_per_s")),
-                     mm("accuracy_min_m"), mm("accuracy_max_m"), short_num(figure(r, "background_range_dB")),
-                     front[i] ? "yes" : "");
+    s += fmt::format("  {:>5} {}{:>14} {:>12} {:>12} {:>12} {:>7}\n", r.index, vals,
+                     short_num(figure(r, "range_maps_per_s")), mm("accuracy_min_m"), mm("accuracy_max_m"),
+                     short_num(figure(r, "background_range_dB")), front[i] ? "yes" : "");
   }
   return s;
 }
@@ -140,13 +146,14 @@ std::string pareto_data(const SweepHeader& h, const std::vector<SweepRow>& rows)
 std::string pareto_script(const std::string& data, const SweepHeader& h, const std::string& ext,
                           const std::string& path) {
   return terminal(ext, path) +
-         fmt::format("set title '{} sweep: range-map rate against accuracy'\nset logscale xy\nset grid\n"
-                     "set xlabel '{} rms range accuracy over the detectable area [mm]'\n"
-                     "set ylabel 'range maps per second'\nset key top right\n"
-                     "plot '{}' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#5b7bd5' title 'variant', "
-                     "'' index 0 using 1:2:3 with labels font ',8' offset 0.8,0.6 notitle, "
-                     "'' index 1 using 1:2 with linespoints pt 6 ps 2 lw 2 lc rgb '#c0392b' title 'Pareto front'\n",
-                     h.sensor, h.pareto_accuracy == "accuracy_max_m" ? "worst" : "best", data);
+         fmt::format(
+             "set title '{} sweep: range-map rate against accuracy'\nset logscale xy\nset grid\n"
+             "set xlabel '{} rms range accuracy over the detectable area [mm]'\n"
+             "set ylabel 'range maps per second'\nset key top right\n"
+             "plot '{}' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#5b7bd5' title 'variant', "
+             "'' index 0 using 1:2:3 with labels font ',8' offset 0.8,0.6 notitle, "
+             "'' index 1 using 1:2 with linespoints pt 6 ps 2 lw 2 lc rgb '#c0392b' title 'Pareto front'\n",
+             h.sensor, h.pareto_accuracy == "accuracy_max_m" ? "worst" : "best", data);
 }
 
 // One plot per numeric varied key: range-map rate (left axis) and worst accuracy (right axis)
@@ -178,20 +185,22 @@ std::string key_data(const SweepHeader& h, const std::vector<SweepRow>& rows, st
 
 // Solid lines: range-map rate (left axis); dashed: accuracy (right axis); one colour per
 // combination of the other keys, named in the legend.
-std::string key_script(const std::string& data, const SweepHeader& h, std::size_t k, const std::vector<std::string>& titles,
-                       const std::string& ext, const std::string& path) {
+std::string key_script(const std::string& data, const SweepHeader& h, std::size_t k,
+                       const std::vector<std::string>& titles, const std::string& ext, const std::string& path) {
   std::string s = terminal(ext, path) +
-                  fmt::format("set title '{} sweep over {} (solid: range maps/s, dashed: accuracy)'\nset grid\n"
-                              "set xlabel '{}'\nset ylabel 'range maps per second'\nset logscale y\n"
-                              "set y2label '{} rms range accuracy [mm]'\nset y2tics\nset ytics nomirror\n"
-                              "set key outside right top vertical\nplot ",
-                              h.sensor, h.keys[k], h.keys[k], h.pareto_accuracy == "accuracy_max_m" ? "worst" : "best");
+                  fmt::format(
+                      "set title '{} sweep over {} (solid: range maps/s, dashed: accuracy)'\nset grid\n"
+                      "set xlabel '{}'\nset ylabel 'range maps per second'\nset logscale y\n"
+                      "set y2label '{} rms range accuracy [mm]'\nset y2tics\nset ytics nomirror\n"
+                      "set key outside right top vertical\nplot ",
+                      h.sensor, h.keys[k], h.keys[k], h.pareto_accuracy == "accuracy_max_m" ? "worst" : "best");
   const std::size_t shown = std::min<std::size_t>(titles.size(), 8);  // beyond 8 lines a legend cannot be read
   for (std::size_t i = 0; i < shown; ++i) {
     const std::string title = titles[i].empty() ? "" : titles[i];
-    s += fmt::format("{}'{}' index {} using 1:2 with linespoints pt 7 lc {} title '{}', '' index {} using 1:3 axes "
-                     "x1y2 with linespoints pt 4 dt 2 lc {} notitle",
-                     i ? ", " : "", data, i, i + 1, title.empty() ? "all variants" : title, i, i + 1);
+    s += fmt::format(
+        "{}'{}' index {} using 1:2 with linespoints pt 7 lc {} title '{}', '' index {} using 1:3 axes "
+        "x1y2 with linespoints pt 4 dt 2 lc {} notitle",
+        i ? ", " : "", data, i, i + 1, title.empty() ? "all variants" : title, i, i + 1);
   }
   return s + "\n";
 }

@@ -9,10 +9,10 @@
 namespace rangesim::app::sweep {
 
 const std::vector<std::string>& figure_names() {
-  static const std::vector<std::string> names = {
-      "frame_access_rate_Hz", "range_maps_per_s",  "signal_range_dB", "background_range_dB", "sbr_min_dB",
-      "sbr_max_dB",           "sbr_ratio_min_dB",  "sbr_ratio_max_dB", "accuracy_min_m",     "accuracy_max_m",
-      "points_detectable",    "points_total"};
+  static const std::vector<std::string> names = {"frame_access_rate_Hz", "range_maps_per_s",  "signal_range_dB",
+                                                 "background_range_dB",  "sbr_min_dB",        "sbr_max_dB",
+                                                 "sbr_ratio_min_dB",     "sbr_ratio_max_dB",  "accuracy_min_m",
+                                                 "accuracy_max_m",       "points_detectable", "points_total"};
   return names;
 }
 

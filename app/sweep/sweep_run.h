@@ -14,8 +14,8 @@ struct SweepRow {
   long long index = 0;                  // variant number, from 0, in --vary order
   std::vector<std::string> assignment;  // "KEY=VALUE" of the varied keys
   bool valid = false;
-  std::string reason;                   // why not valid (the preset checks' message)
-  nlohmann::json figures;               // frame_access_rate_Hz, range_maps_per_s, ranges, SBR', accuracy
+  std::string reason;      // why not valid (the preset checks' message)
+  nlohmann::json figures;  // frame_access_rate_Hz, range_maps_per_s, ranges, SBR', accuracy
 };
 
 // The figures of a row, in column order (sweep.csv, sweep.json), with their units in the names.

@@ -23,7 +23,8 @@ double number(const std::string& text, const std::string& where) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v))
-    throw UserError(fmt::format("{}: '{}' is not a finite number; expected KEY=LO:HI:N[:log] or KEY=v1,v2,...", where, text));
+    throw UserError(
+        fmt::format("{}: '{}' is not a finite number; expected KEY=LO:HI:N[:log] or KEY=v1,v2,...", where, text));
   return v;
 }
 
@@ -64,13 +65,16 @@ VaryAxis parse_vary(const std::string& spec, const ParamSchema& schema) {
   if (fields.size() == 3 || fields.size() == 4) {
     if (!numeric) throw UserError(fmt::format("{}: {} is not a number; give a list v1,v2,...", where, axis.key));
     for (double v : range_values(fields, where)) {
-      const std::string text = p->kind == ParamKind::Integer ? fmt::format("{}", std::llround(v)) : fmt::format("{:.17g}", v);
+      const std::string text =
+          p->kind == ParamKind::Integer ? fmt::format("{}", std::llround(v)) : fmt::format("{:.17g}", v);
       if (axis.values.empty() || axis.values.back() != text) axis.values.push_back(text);
     }
   } else if (fields.size() == 1) {
     for (const auto& v : split(rhs, ','))
-      if (v.empty()) throw UserError(fmt::format("{}: an empty value in the list", where));
-      else axis.values.push_back(v);
+      if (v.empty())
+        throw UserError(fmt::format("{}: an empty value in the list", where));
+      else
+        axis.values.push_back(v);
   } else {
     throw UserError(fmt::format("{}: expected KEY=LO:HI:N[:log] or KEY=v1,v2,...", where));
   }
@@ -95,7 +99,8 @@ std::vector<std::vector<std::string>> variants(const std::vector<VaryAxis>& axes
   long double total = 1;
   for (const auto& a : axes) total *= static_cast<long double>(a.values.size());
   if (total > max_variants)
-    throw UserError(fmt::format("--vary: {:.0Lf} variants; allowed at most {} (fewer values, or --zip)", total, max_variants));
+    throw UserError(
+        fmt::format("--vary: {:.0Lf} variants; allowed at most {} (fewer values, or --zip)", total, max_variants));
   out.push_back({});
   for (const auto& a : axes) {
     std::vector<std::vector<std::string>> next;

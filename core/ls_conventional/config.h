@@ -8,23 +8,23 @@ namespace rangesim {
 
 // Photodiode pixel with source follower (thesis eq. 3.1-3.4).
 struct PixelConfig {
-  double integration_time_s = 50e-6;     // photo-integration time t
-  double pd_capacitance_F = 40e-15;      // well capacity C_pd
-  double source_follower_gain = 1.0;     // A_sf
-  double saturation_voltage_V = 1.741;   // swing at which the pixel saturates
-  double dark_current_A = 1e-15;         // dark current (adds to the photocurrent, with its shot noise)
-  double temperature_K = 300.0;          // for the kTC reset noise
-  double read_noise_V = 0.0;             // per-frame input-referred SF/comparator noise, rms
-  int columns = 375;                     // pixels per row
-  int rows = 365;                        // rows searched in parallel
-  double pitch_m = 11.25e-6;             // pixel pitch
-  double fill_factor = 0.5;              // photosensitive area / pixel area (scene radiometry only)
-  double responsivity_A_per_W = 0.4;     // photodiode responsivity (scene radiometry only)
+  double integration_time_s = 50e-6;    // photo-integration time t
+  double pd_capacitance_F = 40e-15;     // well capacity C_pd
+  double source_follower_gain = 1.0;    // A_sf
+  double saturation_voltage_V = 1.741;  // swing at which the pixel saturates
+  double dark_current_A = 1e-15;        // dark current (adds to the photocurrent, with its shot noise)
+  double temperature_K = 300.0;         // for the kTC reset noise
+  double read_noise_V = 0.0;            // per-frame input-referred SF/comparator noise, rms
+  int columns = 375;                    // pixels per row
+  int rows = 365;                       // rows searched in parallel
+  double pitch_m = 11.25e-6;            // pixel pitch
+  double fill_factor = 0.5;             // photosensitive area / pixel area (scene radiometry only)
+  double responsivity_A_per_W = 0.4;    // photodiode responsivity (scene radiometry only)
 };
 
 // Gaussian sheet-beam profile across a row (eq. 3.6).
 struct SpotConfig {
-  double fwhm_px = 3.0;                  // full width at half maximum
+  double fwhm_px = 3.0;                         // full width at half maximum
   double sigma_per_fwhm = 0.42466090014400953;  // sigma / FWHM
 };
 
@@ -33,10 +33,10 @@ enum class ThresholdMode { Tracking, Fixed };
 // In-pixel comparator, or an N-bit quantiser per sampling (eq. 3.5, 3.7, 3.11).
 struct ComparatorConfig {
   ThresholdMode threshold_mode = ThresholdMode::Tracking;  // V_cmp referred to background or absolute
-  double threshold_above_background_V = 0.01;  // tracking: V_cmp = V_bg + this (Delta V_ADC)
-  double fixed_threshold_V = 0.011;            // fixed: V_cmp
-  int adc_bits = 1;                            // 1 = comparator; N: codes 0..2^N-1 of LSB Delta V_ADC
-  double false_activation_max = 0.01;          // tolerated P(background alone activates a row pixel)
+  double threshold_above_background_V = 0.01;              // tracking: V_cmp = V_bg + this (Delta V_ADC)
+  double fixed_threshold_V = 0.011;                        // fixed: V_cmp
+  int adc_bits = 1;                                        // 1 = comparator; N: codes 0..2^N-1 of LSB Delta V_ADC
+  double false_activation_max = 0.01;                      // tolerated P(background alone activates a row pixel)
 };
 
 // Samplings during one integration, at t_k = k T / N (k = 1..N).
@@ -46,8 +46,8 @@ struct MultiSamplingConfig {
 
 // Row-parallel chained search with bit-streamed column addresses (also the RTL parameters).
 struct AddressSearchConfig {
-  int columns = 375;             // pixels in the searched row
-  int address_bits = 9;          // width of a streamed column address
+  int columns = 375;               // pixels in the searched row
+  int address_bits = 9;            // width of a streamed column address
   int addresses_per_sampling = 2;  // left and right edge of the activated run
 };
 
@@ -68,7 +68,7 @@ struct OpticsConfig {
   double focal_length_m = 10e-3;
   double baseline_m = 73.6e-3;
   double distance_m = 1.1;
-  double f_number = 1.4;       // lens F# (scene radiometry only)
+  double f_number = 1.4;  // lens F# (scene radiometry only)
 };
 
 // Log-spaced evaluation grid over signal x background.

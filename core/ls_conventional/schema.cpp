@@ -17,21 +17,26 @@ const ParamSchema& ls_conventional_schema() {
           {"pixel.saturation_voltage_V", K::Real, "V", 0, 10, true, "pixel swing at saturation V_sat (eq. 3.3)"},
           {"pixel.dark_current_A", K::Real, "A", 0, 1e-9, false, "photodiode dark current"},
           {"pixel.temperature_K", K::Real, "K", 0, 500, true, "temperature for kTC reset noise"},
-          {"pixel.read_noise_V", K::Real, "V", 0, 1, false, "input-referred source-follower/comparator noise, rms, per frame"},
+          {"pixel.read_noise_V", K::Real, "V", 0, 1, false,
+           "input-referred source-follower/comparator noise, rms, per frame"},
           {"pixel.columns", K::Integer, "", 1, 4096, false, "pixels per row (search direction)"},
           {"pixel.rows", K::Integer, "", 1, 4096, false, "rows (searched in parallel)"},
           {"pixel.pitch_m", K::Real, "m", 0, 1e-3, true, "pixel pitch"},
-          {"pixel.fill_factor", K::Real, "", 0, 1, true, "photosensitive area / pixel area (scene radiometry, rangesim simulate)"},
-          {"pixel.responsivity_A_per_W", K::Real, "A_per_W", 0, 2, true, "photodiode responsivity in the beam's band (scene radiometry)"},
+          {"pixel.fill_factor", K::Real, "", 0, 1, true,
+           "photosensitive area / pixel area (scene radiometry, rangesim simulate)"},
+          {"pixel.responsivity_A_per_W", K::Real, "A_per_W", 0, 2, true,
+           "photodiode responsivity in the beam's band (scene radiometry)"},
           // Beam spot on the focal plane (eq. 3.6).
           {"spot.fwhm_px", K::Real, "px", 0, 100, true, "FWHM of the Gaussian sheet-beam profile across a row"},
           {"spot.sigma_per_fwhm", K::Real, "", 0, 1, true, "sigma / FWHM (exact Gaussian 0.4247; thesis writes 0.45)"},
           // Comparator / column ADC (eq. 3.5, 3.7, 3.11).
           {"comparator.threshold_mode", K::Text, "", 0, 0, false, "threshold reference", {"tracking", "fixed"}},
-          {"comparator.threshold_above_background_V", K::Real, "V", 0, 10, true, "tracking mode: V_cmp - V_bg = Delta V_ADC (eq. 3.11)"},
+          {"comparator.threshold_above_background_V", K::Real, "V", 0, 10, true,
+           "tracking mode: V_cmp - V_bg = Delta V_ADC (eq. 3.11)"},
           {"comparator.fixed_threshold_V", K::Real, "V", 0, 10, true, "fixed mode: absolute V_cmp"},
           {"comparator.adc_bits", K::Integer, "", 1, 16, false, "bits per sampling (1 = comparator)"},
-          {"comparator.false_activation_max", K::Real, "", 0, 1, true, "largest tolerated probability that background alone activates a pixel of the row"},
+          {"comparator.false_activation_max", K::Real, "", 0, 1, true,
+           "largest tolerated probability that background alone activates a pixel of the row"},
           // Multi-sampling during integration.
           {"multisampling.samplings", K::Integer, "", 1, 64, false, "samplings per integration"},
           // Frame timing from the clock schedule.
@@ -40,14 +45,18 @@ const ParamSchema& ls_conventional_schema() {
           {"timing.latch_cycles", K::Integer, "", 1, 1e6, false, "comparator latch per sampling"},
           {"timing.search_cycles", K::Integer, "", 1, 1e6, false, "chained search settle per sampling"},
           {"timing.address_bits", K::Integer, "", 1, 32, false, "bits of the bit-streamed column address"},
-          {"timing.addresses_per_sampling", K::Integer, "", 1, 64, false, "addresses streamed per sampling (left and right edge)"},
-          {"timing.output_cycles", K::Integer, "", 0, 1e6, false, "centre output from the row processors per frame access"},
-          {"timing.beam_positions", K::Integer, "", 1, 100000, false, "frame accesses per range map (sheet-beam positions)"},
+          {"timing.addresses_per_sampling", K::Integer, "", 1, 64, false,
+           "addresses streamed per sampling (left and right edge)"},
+          {"timing.output_cycles", K::Integer, "", 0, 1e6, false,
+           "centre output from the row processors per frame access"},
+          {"timing.beam_positions", K::Integer, "", 1, 100000, false,
+           "frame accesses per range map (sheet-beam positions)"},
           // Triangulation geometry (eq. 1.1-1.8).
           {"optics.focal_length_m", K::Real, "m", 0, 10, true, "lens focal length f"},
           {"optics.baseline_m", K::Real, "m", 0, 100, true, "baseline d between beam projector and lens"},
           {"optics.distance_m", K::Real, "m", 0, 1e4, true, "target distance l for the range-accuracy figures"},
-          {"optics.f_number", K::Real, "", 0.5, 64, false, "lens f-number F# (scene radiometry: lens area, camera equation)"},
+          {"optics.f_number", K::Real, "", 0.5, 64, false,
+           "lens f-number F# (scene radiometry: lens area, camera equation)"},
           // Default evaluation grid (thesis Fig. 3.3-3.4).
           {"evaluation.signal_min_V", K::Real, "V", 0, 100, true, "lowest signal voltage V_sig of the grid"},
           {"evaluation.signal_max_V", K::Real, "V", 0, 100, true, "highest signal voltage of the grid"},
@@ -55,19 +64,29 @@ const ParamSchema& ls_conventional_schema() {
           {"evaluation.background_min_V", K::Real, "V", 0, 100, true, "lowest background voltage V_bg of the grid"},
           {"evaluation.background_max_V", K::Real, "V", 0, 100, true, "highest background voltage of the grid"},
           {"evaluation.background_points", K::Integer, "", 1, 10000, false, "log-spaced background points"},
-          {"evaluation.subpixel_points", K::Integer, "", 1, 4096, false, "spot positions across one pixel averaged for accuracy"},
+          {"evaluation.subpixel_points", K::Integer, "", 1, 4096, false,
+           "spot positions across one pixel averaged for accuracy"},
       }};
   return schema;
 }
 
 // The core part of the sensor interface (core/sensor_registry.h).
 const SensorInfo& ls_conventional_sensor_info() {
-  static const SensorInfo info{"ls-conventional", "light-section, row-parallel search, multi-sampling", "[31]", &ls_conventional_schema,
-                               [](const ParamSet& p) { (void)ls_conventional_from_params(p); },
-                               SceneRules{{"plane", "tilted", "step", "depth_map"},
-                                          {"target.reflectance", "target.tilt_x_rad", "target.tilt_y_rad", "target.near_distance_m", "target.step_y_m", "beam.power_W", "beam.reference_distance_m", "beam.column_offset_px", "background.irradiance_W_per_m2", "camera.f_number", "camera.fill_factor", "camera.responsivity_A_per_W"},
-                                          {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m", "background.irradiance_W_per_m2"},
-                                          true, true}};
+  static const SensorInfo info{
+      "ls-conventional",
+      "light-section, row-parallel search, multi-sampling",
+      "[31]",
+      &ls_conventional_schema,
+      [](const ParamSet& p) { (void)ls_conventional_from_params(p); },
+      SceneRules{
+          {"plane", "tilted", "step", "depth_map"},
+          {"target.reflectance", "target.tilt_x_rad", "target.tilt_y_rad", "target.near_distance_m", "target.step_y_m",
+           "beam.power_W", "beam.reference_distance_m", "beam.column_offset_px", "background.irradiance_W_per_m2",
+           "camera.f_number", "camera.fill_factor", "camera.responsivity_A_per_W"},
+          {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m",
+           "background.irradiance_W_per_m2"},
+          true,
+          true}};
   return info;
 }
 

@@ -11,10 +11,10 @@ namespace rangesim {
 
 // Pixel array and the correlation (integration) window of one decision.
 struct DemodPixelConfig {
-  int columns = 120;                 // pixels per row (position-detection direction)
-  int rows = 110;                    // rows read out per frame
-  double pitch_m = 45e-6;            // pixel pitch
-  double integration_time_s = 50e-6; // correlation window T of one decision (= cycles / f0)
+  int columns = 120;                  // pixels per row (position-detection direction)
+  int rows = 110;                     // rows read out per frame
+  double pitch_m = 45e-6;             // pixel pitch
+  double integration_time_s = 50e-6;  // correlation window T of one decision (= cycles / f0)
 };
 
 // Beam modulation and MPY+/MPY- reference (thesis Fig. 2.7).
@@ -26,8 +26,8 @@ struct ModulationConfig {
 
 // Current copier and LPF background subtraction (eq. 2.8-2.10).
 struct SuppressionConfig {
-  double mirror_gain = 1.0;          // alpha
-  double mirror_mismatch = 0.01;     // alpha' / alpha - 1 (the I_pd copy against the I_avg copy)
+  double mirror_gain = 1.0;             // alpha
+  double mirror_mismatch = 0.01;        // alpha' / alpha - 1 (the I_pd copy against the I_avg copy)
   double lpf_time_constant_s = 1.2e-3;  // tau of the LPF forming I_avg
 };
 
@@ -51,8 +51,8 @@ struct CorrelatorConfig {
 
 // Comparator (eq. 2.12).
 struct DemodComparatorConfig {
-  double threshold_V = 0.01;         // V_cmp on V_out+ - V_out-
-  int adc_bits = 1;                  // only 1 bit is modelled (Table 3.2)
+  double threshold_V = 0.01;           // V_cmp on V_out+ - V_out-
+  int adc_bits = 1;                    // only 1 bit is modelled (Table 3.2)
   double false_activation_max = 0.01;  // tolerated P(background alone activates a pixel of the row)
 };
 
@@ -67,7 +67,7 @@ struct DemodNoiseConfig {
 // Position readout clock schedule (frame rate).
 struct DemodReadoutConfig {
   double clock_Hz = 10e6;
-  int row_cycles = 41;               // cycles to read one row and encode its position
+  int row_cycles = 41;  // cycles to read one row and encode its position
   int address_bits = 7;
 };
 
@@ -79,10 +79,10 @@ struct DemodGridConfig {
   double background_min_A = 1e-13;
   double background_max_A = 1e-6;
   int background_points = 141;
-  int subpixel_points = 16;          // spot positions across one pixel for the accuracy average
-  int frames_averaged = 1;           // N_p frames per range value
-  int detections = 1;                // K correlation decisions per frame, their centres averaged
-  double sweep_background_A = 1e-10; // background of the one-dimensional accuracy sweeps
+  int subpixel_points = 16;           // spot positions across one pixel for the accuracy average
+  int frames_averaged = 1;            // N_p frames per range value
+  int detections = 1;                 // K correlation decisions per frame, their centres averaged
+  double sweep_background_A = 1e-10;  // background of the one-dimensional accuracy sweeps
 };
 
 struct LsDemodulationConfig {
@@ -95,8 +95,8 @@ struct LsDemodulationConfig {
   DemodNoiseConfig noise;
   SpotConfig spot;
   DemodReadoutConfig readout;
-  OpticsConfig optics;               // distance_m: where accuracy_m is taken
-  double distance_min_m = 0.8;       // evaluation distance span (Table 3.2)
+  OpticsConfig optics;          // distance_m: where accuracy_m is taken
+  double distance_min_m = 0.8;  // evaluation distance span (Table 3.2)
   double distance_max_m = 1.2;
   DemodGridConfig grid;
 };

@@ -10,30 +10,30 @@ namespace rangesim {
 
 // Photogate pixel with transfer gates TX1/TX2 to FD1/FD2 and drain gates TXD (thesis Fig. 2.8-2.11).
 struct LockinPixelConfig {
-  int columns = 336;                    // pixels per row
-  int rows = 252;                       // rows
-  double pitch_m = 15e-6;               // pixel pitch
-  double fd1_capacitance_F = 10e-15;    // C1: FD1 collects N1 through TX1 (PHASE1)
-  double fd2_capacitance_F = 10e-15;    // C2: FD2 collects N2 through TX2 (PHASE2)
-  double source_follower_gain = 1.0;    // A_sf: ADC input = A_sf x FD swing
-  double saturation_voltage_V = 1.5;    // FD swing at which a tap saturates
-  double offset_voltage_V = 0.02;       // constant offset on each FD present in every frame (eq. 2.25)
-  double charge_separation = 1.0;       // fraction of signal electrons reaching the tap open at generation;
-                                        // the rest (deep electrons) arrive uniformly over the period
-  double drain_efficiency = 1.0;        // fraction of PHASE3 electrons drained; the rest splits over FD1/FD2
+  int columns = 336;                  // pixels per row
+  int rows = 252;                     // rows
+  double pitch_m = 15e-6;             // pixel pitch
+  double fd1_capacitance_F = 10e-15;  // C1: FD1 collects N1 through TX1 (PHASE1)
+  double fd2_capacitance_F = 10e-15;  // C2: FD2 collects N2 through TX2 (PHASE2)
+  double source_follower_gain = 1.0;  // A_sf: ADC input = A_sf x FD swing
+  double saturation_voltage_V = 1.5;  // FD swing at which a tap saturates
+  double offset_voltage_V = 0.02;     // constant offset on each FD present in every frame (eq. 2.25)
+  double charge_separation = 1.0;     // fraction of signal electrons reaching the tap open at generation;
+                                      // the rest (deep electrons) arrive uniformly over the period
+  double drain_efficiency = 1.0;      // fraction of PHASE3 electrons drained; the rest splits over FD1/FD2
 };
 
 // Pulsed LED source (trapezoid of FWHM T0 and linear 0-100% ramps of rise_time / 0.8).
 struct LightPulseConfig {
-  double wavelength_m = 870e-9;         // LED wavelength (documentation only in the golden model)
-  double pulse_width_s = 100e-9;        // T0 = TX1 and TX2 open time
-  double duty_cycle = 0.1;              // repetition period = T0 / duty
-  double rise_time_s = 0.0;             // 10-90 % rise and fall time (0 = rectangular)
+  double wavelength_m = 870e-9;   // LED wavelength (documentation only in the golden model)
+  double pulse_width_s = 100e-9;  // T0 = TX1 and TX2 open time
+  double duty_cycle = 0.1;        // repetition period = T0 / duty
+  double rise_time_s = 0.0;       // 10-90 % rise and fall time (0 = rectangular)
 };
 
 // Lock-in gate timing: PHASE1 (TX1, T0), PHASE2 (TX2, T0), PHASE3 (TXD, rest of the period).
 struct LockinGateConfig {
-  double clock_Hz = 100e6;              // gate-pulse generator clock (edges on its grid)
+  double clock_Hz = 100e6;                 // gate-pulse generator clock (edges on its grid)
   long long accumulations_per_frame = 50;  // N_acc charge-transfer cycles summed on the FDs per frame
 };
 
@@ -45,31 +45,32 @@ struct LockinReadoutConfig {
   double min_snr = 3.0;                 // smallest mean / rms of the ratio's denominator accepted
   bool cds_enabled = false;             // true: FD kTC reset noise cancelled
   bool ambient_subtraction = true;      // true: a frame with the LED off is read and subtracted per tap
-  double offset_calibration_V = 0.0;    // V_offset subtracted from each tap in eq. 2.25 after (optional) ambient subtraction
-  double clock_Hz = 36e6;               // readout clock
+  double offset_calibration_V =
+      0.0;                 // V_offset subtracted from each tap in eq. 2.25 after (optional) ambient subtraction
+  double clock_Hz = 36e6;  // readout clock
   long long adc_conversion_cycles = 4096;  // cycles of one column-parallel conversion
   long long output_cycles_per_row = 672;   // cycles to shift one converted row out
 };
 
 // Noise sources: shot, kTC at reset, read, dark, optional fixed pattern.
 struct LockinNoiseConfig {
-  double temperature_K = 300.0;         // kTC reset noise temperature
-  double dark_current_A = 1e-15;        // dark current into each FD during the accumulation
-  double read_noise_V = 0.7e-3;         // SF + ADC input noise per sample, rms, at the ADC input
-  double fixed_pattern_rms_V = 0.0;     // pixel-to-pixel offset spread, rms (cancelled by ambient subtraction)
+  double temperature_K = 300.0;      // kTC reset noise temperature
+  double dark_current_A = 1e-15;     // dark current into each FD during the accumulation
+  double read_noise_V = 0.7e-3;      // SF + ADC input noise per sample, rms, at the ADC input
+  double fixed_pattern_rms_V = 0.0;  // pixel-to-pixel offset spread, rms (cancelled by ambient subtraction)
 };
 
 // Evaluation grid and reference conditions (thesis Table 4.1, Fig. 4.4-4.6).
 struct LockinEvaluationConfig {
-  double signal_min_A = 1e-11;          // signal photocurrent during the light pulse
+  double signal_min_A = 1e-11;  // signal photocurrent during the light pulse
   double signal_max_A = 1.5e-9;
   int signal_points = 45;
-  double background_min_A = 1e-14;      // background photocurrent (constant)
+  double background_min_A = 1e-14;  // background photocurrent (constant)
   double background_max_A = 1e-8;
   int background_points = 121;
-  long long frames_averaged = 1;        // N_p range images averaged
-  double distance_m = 1.0;              // reference distance of the grid evaluation
-  double distance_min_m = 0.8;          // distance sweep
+  long long frames_averaged = 1;  // N_p range images averaged
+  double distance_m = 1.0;        // reference distance of the grid evaluation
+  double distance_min_m = 0.8;    // distance sweep
   double distance_max_m = 12.0;
   int distance_points = 45;
 };

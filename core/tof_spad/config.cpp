@@ -71,23 +71,26 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   // Cross-key checks.
   const double codes_range_s = c.tdc.lsb_s * std::ldexp(1.0, c.tdc.bits);
   if (c.tdc.full_range_s > codes_range_s * (1 + 1e-9))
-    throw UserError(fmt::format("{}: tdc.full_range_s = {:g} exceeds tdc.lsb_s x 2^tdc.bits = {:g}; allowed: "
-                                "full_range_s <= lsb_s x 2^bits",
-                                p.origin(), c.tdc.full_range_s, codes_range_s));
+    throw UserError(
+        fmt::format("{}: tdc.full_range_s = {:g} exceeds tdc.lsb_s x 2^tdc.bits = {:g}; allowed: "
+                    "full_range_s <= lsb_s x 2^bits",
+                    p.origin(), c.tdc.full_range_s, codes_range_s));
   const double period_s = 1.0 / c.laser.repetition_rate_Hz;
   if (period_s / c.tdc.lsb_s > 1e5)
-    throw UserError(fmt::format("{}: laser period / tdc.lsb_s = {:g} bins per cycle; allowed: <= 1e5 "
-                                "(lower tdc.lsb_s or raise laser.repetition_rate_Hz)",
-                                p.origin(), period_s / c.tdc.lsb_s));
+    throw UserError(
+        fmt::format("{}: laser period / tdc.lsb_s = {:g} bins per cycle; allowed: <= 1e5 "
+                    "(lower tdc.lsb_s or raise laser.repetition_rate_Hz)",
+                    p.origin(), period_s / c.tdc.lsb_s));
   check_order(p, "evaluation.signal_min_Hz", e.signal_min_Hz, "evaluation.signal_max_Hz", e.signal_max_Hz);
   check_order(p, "evaluation.background_min_Hz", e.background_min_Hz, "evaluation.background_max_Hz",
               e.background_max_Hz);
   check_order(p, "evaluation.distance_min_m", e.distance_min_m, "evaluation.distance_max_m", e.distance_max_m);
   const double window_m = 299792458.0 * std::min(period_s, c.tdc.full_range_s) / 2;
   if (e.distance_max_m >= window_m || e.distance_m >= window_m)
-    throw UserError(fmt::format("{}: evaluation.distance_max_m = {:g} / evaluation.distance_m = {:g} must stay below "
-                                "the unambiguous range c min(1 / laser.repetition_rate_Hz, tdc.full_range_s) / 2 = {:g} m",
-                                p.origin(), e.distance_max_m, e.distance_m, window_m));
+    throw UserError(
+        fmt::format("{}: evaluation.distance_max_m = {:g} / evaluation.distance_m = {:g} must stay below "
+                    "the unambiguous range c min(1 / laser.repetition_rate_Hz, tdc.full_range_s) / 2 = {:g} m",
+                    p.origin(), e.distance_max_m, e.distance_m, window_m));
   return c;
 }
 

@@ -30,8 +30,7 @@ ActivationProbability activation_probability(double mu, double t, double s) {
   // Early exits: p <= P(N >= t - cut) + Phi(-9), q <= P(N <= t + cut) + Phi(-9).
   const double n1 = t - cut, n2 = t + cut;
   if (n1 > mu && std::exp(log_chernoff(n1, mu)) + (s > 0 ? 1.2e-19 : 0) < kNegligible) return {0, 1};
-  if (n2 < mu && std::exp(log_chernoff(std::max(n2, 0.0), mu)) + (s > 0 ? 1.2e-19 : 0) < kNegligible)
-    return {1, 0};
+  if (n2 < mu && std::exp(log_chernoff(std::max(n2, 0.0), mu)) + (s > 0 ? 1.2e-19 : 0) < kNegligible) return {1, 0};
 
   const double sd = std::sqrt(mu);
   const double nlo = std::max(0.0, std::floor(mu - 13 * sd - 20));

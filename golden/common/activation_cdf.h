@@ -27,7 +27,6 @@ struct ActivationProbability {
 
 // P(n + R_e >= threshold_e) with n ~ Poisson(mean_e), R_e ~ Normal(0, sigma_e^2); sigma_e = 0 gives
 // the Poisson upper tail P(n >= ceil(threshold_e)).
-ActivationProbability activation_probability(double mean_electrons, double threshold_electrons,
-                                             double sigma_electrons);
+ActivationProbability activation_probability(double mean_electrons, double threshold_electrons, double sigma_electrons);
 
 }  // namespace rangesim::golden

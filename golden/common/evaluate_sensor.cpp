@@ -42,9 +42,13 @@ void register_golden_model(const GoldenModel& model) {
   registry().push_back(model);
 }
 
-EvalResult evaluate_sensor(const ParamSet& params, ProgressFn progress) { return model_of(params).evaluate(params, progress); }
+EvalResult evaluate_sensor(const ParamSet& params, ProgressFn progress) {
+  return model_of(params).evaluate(params, progress);
+}
 
-std::vector<PublishedFigure> published_figures(const ParamSet& params) { return model_of(params).published_figures(params); }
+std::vector<PublishedFigure> published_figures(const ParamSet& params) {
+  return model_of(params).published_figures(params);
+}
 
 FrameTiming frame_timing_for(const ParamSet& params) { return model_of(params).frame_timing(params); }
 

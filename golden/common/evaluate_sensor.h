@@ -16,11 +16,11 @@ namespace rangesim::golden {
 using ProgressFn = void (*)(int done, int total);
 
 struct GoldenModel {
-  std::string sensor;  // preset id (core/sensor_registry.h)
-  EvalResult (*evaluate)(const ParamSet& params, ProgressFn progress);  // the preset's grid (`evaluation.*`)
+  std::string sensor;                                                         // preset id (core/sensor_registry.h)
+  EvalResult (*evaluate)(const ParamSet& params, ProgressFn progress);        // the preset's grid (`evaluation.*`)
   std::vector<PublishedFigure> (*published_figures)(const ParamSet& params);  // with rangesim's values
   FrameTiming (*frame_timing)(const ParamSet& params);  // the clock schedule (`rangesim frame-rate`)
-  const ThesisColumn* table_column = nullptr;  // the sensor's column of thesis Table 5.1, if it has one
+  const ThesisColumn* table_column = nullptr;           // the sensor's column of thesis Table 5.1, if it has one
 };
 
 // The model of a sensor id, nullptr when it has none.

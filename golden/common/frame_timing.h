@@ -8,9 +8,9 @@
 namespace rangesim::golden {
 
 struct TimingPhase {
-  std::string name;     // "reset", "latch", "search", "address_stream", "output"
-  long long cycles;     // clock cycles per frame access spent in this phase
-  double time_s;        // cycles / clock
+  std::string name;  // "reset", "latch", "search", "address_stream", "output"
+  long long cycles;  // clock cycles per frame access spent in this phase
+  double time_s;     // cycles / clock
 };
 
 // For the light-section sensors a "frame" is one frame access (one sheet-beam position) and a
@@ -24,9 +24,8 @@ struct FrameTiming {
   double range_map_time_s = 0;      // beam_positions frame accesses
   double range_maps_per_s = 0;
   int samplings = 0;
-  double clock_Hz = 0;              // clock the cycles count
+  double clock_Hz = 0;  // clock the cycles count
   long long frames_per_range_map = 0;
 };
-
 
 }  // namespace rangesim::golden

@@ -16,40 +16,40 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // (ls-conventional), photocurrent in A (ls-demodulation, tof-lockin) or count rate in Hz
 // (tof-spad).
 struct EvalAxis {
-  std::string quantity;  // "signal" or "background"
-  std::string unit;      // "V", "A" or "Hz"
+  std::string quantity;        // "signal" or "background"
+  std::string unit;            // "V", "A" or "Hz"
   std::vector<double> values;  // ascending
 };
 
 struct EvalPoint {
-  double signal = 0;      // axis units
-  double background = 0;  // axis units
-  std::string detect;     // "detectable" or the reason range cannot be derived (snake_case id)
-  double sbr_total_dB = kNaN;  // SBR' by thesis eq. 3.11 style (signal + background) / background
-  double sbr_ratio_dB = kNaN;  // SBR' by eq. 3.23 / 4.11 style, signal / background
-  double accuracy_m = kNaN;    // rms range error at the sensor's reference distance (detectable points)
+  double signal = 0;            // axis units
+  double background = 0;        // axis units
+  std::string detect;           // "detectable" or the reason range cannot be derived (snake_case id)
+  double sbr_total_dB = kNaN;   // SBR' by thesis eq. 3.11 style (signal + background) / background
+  double sbr_ratio_dB = kNaN;   // SBR' by eq. 3.23 / 4.11 style, signal / background
+  double accuracy_m = kNaN;     // rms range error at the sensor's reference distance (detectable points)
   std::vector<double> metrics;  // one per EvalResult::metric_names; NaN where not defined
 };
 
 // Detectable interval along one axis, at a fixed value of the other.
 struct EvalRange {
-  double lo = kNaN, hi = kNaN;  // edges in axis units
-  double range_dB = 0;          // 20 log10(hi / lo); 0 when nothing is detectable
+  double lo = kNaN, hi = kNaN;      // edges in axis units
+  double range_dB = 0;              // 20 log10(hi / lo); 0 when nothing is detectable
   bool lo_limited_by_grid = false;  // the edge is the grid's end, not a physical limit
   bool hi_limited_by_grid = false;
-  double at = kNaN;             // value of the other axis
+  double at = kNaN;  // value of the other axis
 };
 
 // A one-dimensional sweep (accuracy versus averaging, detections, gain, pulse width, ...),
 // plotted as lines: one series per curve.
 struct EvalSeries {
-  std::string label;         // legend, e.g. "alpha = 10"
-  std::vector<double> x;     // x values
-  std::vector<double> y;     // y values (NaN: not defined at that x)
+  std::string label;      // legend, e.g. "alpha = 10"
+  std::vector<double> x;  // x values
+  std::vector<double> y;  // y values (NaN: not defined at that x)
 };
 struct EvalSweep {
-  std::string id;            // file stem, e.g. "accuracy_vs_frames"
-  std::string title;         // plot title
+  std::string id;     // file stem, e.g. "accuracy_vs_frames"
+  std::string title;  // plot title
   std::string x_label, x_unit;
   std::string y_label, y_unit;
   bool log_x = false, log_y = false;
@@ -68,8 +68,8 @@ struct EvalResult {
 
   // Summary over the grid.
   int points_detectable = 0;
-  EvalRange signal_range;      // detectable signal at the grid's lowest background
-  EvalRange background_range;  // detectable background at the grid's highest signal
+  EvalRange signal_range;                                   // detectable signal at the grid's lowest background
+  EvalRange background_range;                               // detectable background at the grid's highest signal
   double sbr_min_dB = kNaN, sbr_max_dB = kNaN;              // eq. 3.11 style over the detectable area
   double sbr_ratio_min_dB = kNaN, sbr_ratio_max_dB = kNaN;  // eq. 3.23 / 4.11 style
   double accuracy_min_m = kNaN, accuracy_max_m = kNaN;      // over the detectable area

@@ -8,7 +8,18 @@
 namespace rangesim::golden {
 
 // Rows of Table 5.1, in the thesis's order.
-enum class TableRow { Type, IntegrationTime, WellCapacity, AdcTdc, SignalLight, BackgroundLight, SbrMax, SbrMin, AccuracyMax, AccuracyMin };
+enum class TableRow {
+  Type,
+  IntegrationTime,
+  WellCapacity,
+  AdcTdc,
+  SignalLight,
+  BackgroundLight,
+  SbrMax,
+  SbrMin,
+  AccuracyMax,
+  AccuracyMin
+};
 
 struct TableRowInfo {
   TableRow row;

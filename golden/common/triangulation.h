@@ -20,10 +20,10 @@
 namespace rangesim::golden {
 
 struct TriangulatedPoint {
-  double x_m = 0;         // x_p along the baseline, 0 midway between lens and projector
-  double range_m = 0;     // l: distance from the baseline
-  double y_m = 0;         // y_p = l sin theta
-  double z_m = 0;         // z_p = l cos theta
+  double x_m = 0;      // x_p along the baseline, 0 midway between lens and projector
+  double range_m = 0;  // l: distance from the baseline
+  double y_m = 0;      // y_p = l sin theta
+  double z_m = 0;      // z_p = l cos theta
 };
 
 // From the tangents of the two angles (eq. 1.5 and the corrected 1.6).

@@ -2,8 +2,8 @@
 // Centre of the activated pixels of one sampling, and the combination over samplings.
 //
 // The thesis's centroid (eq. 2.6, 3.8, 3.9) divides by sum(x_i); the centroid is
-// sum(V_i x_i) / sum(V_i) (the thesis divides by sum(x_i), a fault). When nothing is activated the sum of weights is zero and
-// the result is an explicit "no detection", never a division by zero.
+// sum(V_i x_i) / sum(V_i) (the thesis divides by sum(x_i), a fault). When nothing is activated the sum of weights is
+// zero and the result is an explicit "no detection", never a division by zero.
 #include <vector>
 
 namespace rangesim::golden {

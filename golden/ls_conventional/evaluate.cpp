@@ -52,7 +52,8 @@ EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress)
                {"below_threshold", "signal + background at the spot peak stays below V_cmp"},
                {"saturated", "V_sig + V_bg > V_sat: activated, accuracy not controlled"},
                {"background_activation", "background alone activates pixels of the row"}};
-  r.metric_names = {"accuracy_px", "quantisation_rms_px", "resolution_px", "worst_error_px", "noise_std_px", "p_detect"};
+  r.metric_names = {"accuracy_px",    "quantisation_rms_px", "resolution_px",
+                    "worst_error_px", "noise_std_px",        "p_detect"};
   r.points.reserve(ev.points.size());
   for (const auto& p : ev.points) {
     EvalPoint q;
@@ -63,8 +64,8 @@ EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress)
     q.sbr_ratio_dB = p.sbr_ratio_dB;
     const bool ok = p.detect == Detect::Detectable;
     q.accuracy_m = ok ? p.accuracy_m : kNaN;
-    q.metrics = ok ? std::vector<double>{p.accuracy_px, p.quantisation_rms_px, p.resolution_px, p.worst_error_px,
-                                         p.noise_std_px, p.p_detect}
+    q.metrics = ok ? std::vector<double>{p.accuracy_px,    p.quantisation_rms_px, p.resolution_px,
+                                         p.worst_error_px, p.noise_std_px,        p.p_detect}
                    : std::vector<double>(r.metric_names.size(), kNaN);
     r.points.push_back(std::move(q));
   }
@@ -84,8 +85,15 @@ EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress)
 
   // Resolution against samplings (thesis 2.1: 0.5 px single, ~0.2 px with four).
   if (s.points_detectable > 0 && s.signal.hi_V > s.signal.lo_V) {
-    EvalSweep sw{"resolution_vs_samplings", "ls-conventional: sub-pixel resolution against samplings",
-                 "samplings", "", "mean step of the centre estimate", "px", false, true, {}};
+    EvalSweep sw{"resolution_vs_samplings",
+                 "ls-conventional: sub-pixel resolution against samplings",
+                 "samplings",
+                 "",
+                 "mean step of the centre estimate",
+                 "px",
+                 false,
+                 true,
+                 {}};
     EvalSeries res{"resolution (mean over detectable signals)", {}, {}};
     for (int n = 1; n <= 8; ++n) {
       res.x.push_back(n);
@@ -101,8 +109,9 @@ std::vector<PublishedFigure> published_figures_ls_conventional(const ParamSet& p
   const LsConventionalConfig cfg = ls_conventional_from_params(params);
   std::vector<PublishedFigure> f;
   const FrameTiming t4 = frame_timing(cfg.timing, 4);
-  f.push_back({"ls-conventional", "frame_access_rate", "frame access rate with four samplings (chip paper, thesis 3.1.1)",
-               394.5e3, "Hz", t4.frame_access_rate_Hz, 1e-3,
+  f.push_back({"ls-conventional", "frame_access_rate",
+               "frame access rate with four samplings (chip paper, thesis 3.1.1)", 394.5e3, "Hz",
+               t4.frame_access_rate_Hz, 1e-3,
                "clock schedule of the preset: 100 cycles at 39.45 MHz (clock calibrated to this figure)"});
   f.push_back({"ls-conventional", "range_maps_per_s", "range maps per second (chip paper, thesis 3.1.1)", 1052.0, "1/s",
                t4.range_maps_per_s, 1e-3, "375 frame accesses per map"});
@@ -110,20 +119,22 @@ std::vector<PublishedFigure> published_figures_ls_conventional(const ParamSet& p
   f.push_back({"ls-conventional", "resolution_1_sampling", "sub-pixel resolution without multi-sampling (thesis 2.1)",
                0.5, "px", mean_resolution_px(cfg, 1, 0.001, lo, 1.5), 0.02,
                "mean step of the estimate over the detectable signals at 0.001 V background"});
-  f.push_back({"ls-conventional", "resolution_4_samplings", "sub-pixel resolution with four samplings (chip paper)", 0.2,
-               "px", mean_resolution_px(cfg, 4, 0.001, lo, 1.5), 0.2,
+  f.push_back({"ls-conventional", "resolution_4_samplings", "sub-pixel resolution with four samplings (chip paper)",
+               0.2, "px", mean_resolution_px(cfg, 4, 0.001, lo, 1.5), 0.2,
                "mean step over the detectable signals at 0.001 V background; 0.17 px: 'about 0.2' within 20%"});
   f.push_back({"ls-conventional", "range_accuracy_600mm", "range accuracy 1.10 mm at 600 mm with 0.2 px (chip paper)",
                1.10e-3, "m", 0.2 * range_per_px_m(cfg.optics, cfg.pixel.pitch_m, 0.6), 0.01,
                "triangulation with f = 10 mm, pitch 11.25 um; baseline calibrated to this figure"});
-  f.push_back({"ls-conventional", "range_accuracy_600mm_single", "2.78 cm (0.5 sub-pixel) at 600 mm without multi-sampling (thesis 3.1.1)",
-               2.78e-2, "m", 0.5 * range_per_px_m(cfg.optics, cfg.pixel.pitch_m, 0.6), 0.01,
-               "not reproduced: with the geometry that gives 1.10 mm for 0.2 px, 0.5 px is 2.75 mm; the thesis's 2.78 cm is "
-               "10x that and inconsistent with its own 0.11 cm for 0.2 px (ratio 25 for 2.5x the step)"});
-  f.push_back({"ls-conventional", "sbr_20_83dB", "SBR' 20.83 dB at 0.01 V signal, 0.001 V background (thesis 3.1.3)", 20.83,
-               "dB", sbr_total_dB(0.01, 0.001), 1e-3, "eq. 3.11, 20 log((V_sig + V_bg) / V_bg)"});
-  f.push_back({"ls-conventional", "sbr_0_06dB", "SBR' 0.06 dB at 1.5 V signal, 0.24 V background (thesis 3.1.3)", 0.06, "dB",
-               sbr_total_dB(1.5, 0.24), 0.5,
+  f.push_back(
+      {"ls-conventional", "range_accuracy_600mm_single",
+       "2.78 cm (0.5 sub-pixel) at 600 mm without multi-sampling (thesis 3.1.1)", 2.78e-2, "m",
+       0.5 * range_per_px_m(cfg.optics, cfg.pixel.pitch_m, 0.6), 0.01,
+       "not reproduced: with the geometry that gives 1.10 mm for 0.2 px, 0.5 px is 2.75 mm; the thesis's 2.78 cm is "
+       "10x that and inconsistent with its own 0.11 cm for 0.2 px (ratio 25 for 2.5x the step)"});
+  f.push_back({"ls-conventional", "sbr_20_83dB", "SBR' 20.83 dB at 0.01 V signal, 0.001 V background (thesis 3.1.3)",
+               20.83, "dB", sbr_total_dB(0.01, 0.001), 1e-3, "eq. 3.11, 20 log((V_sig + V_bg) / V_bg)"});
+  f.push_back({"ls-conventional", "sbr_0_06dB", "SBR' 0.06 dB at 1.5 V signal, 0.24 V background (thesis 3.1.3)", 0.06,
+               "dB", sbr_total_dB(1.5, 0.24), 0.5,
                "not reproduced: eq. 3.11 gives 17.2 dB there and eq. 3.23 15.9 dB; 0.06 dB is a signal 0.7% of the "
                "background, e.g. the weakest detectable signal (0.01 V) under ~1.4 V background"});
   return f;

@@ -126,7 +126,7 @@ DynamicRange signal_dynamic_range(const LsConventionalConfig& cfg, double backgr
   if (background_activates(cfg, background_V)) return {};
   const double A = cfg.pixel.source_follower_gain, dark = dark_voltage_V(cfg.pixel);
   const double lo = comparator_threshold_V(cfg, background_V) / A - background_V - dark;  // reaches theta
-  const double hi = cfg.pixel.saturation_voltage_V - background_V - dark;                  // eq. 3.3
+  const double hi = cfg.pixel.saturation_voltage_V - background_V - dark;                 // eq. 3.3
   return make_range(lo, hi, lo_limit_V, hi_limit_V);
 }
 

@@ -28,8 +28,8 @@ CentreEstimate sampling_estimate(const RowModel& row, double x0_px, int k) {
   double sw = 0, swx = 0;
   for (int i = l; i <= r; ++i) {
     const double d = std::fabs(i - x0_px);
-    const int code = static_cast<int>(
-        std::partition_point(h.begin(), h.end(), [d](double hm) { return hm >= d; }) - h.begin());
+    const int code =
+        static_cast<int>(std::partition_point(h.begin(), h.end(), [d](double hm) { return hm >= d; }) - h.begin());
     sw += code;
     swx += code * static_cast<double>(i);
   }

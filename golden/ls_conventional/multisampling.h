@@ -29,14 +29,14 @@ CentreEstimate direct_estimate(const RowModel& row, double x0_px);
 CentreEstimate sampling_estimate(const RowModel& row, double x0_px, int k);
 
 struct QuantisationError {
-  double rms_px = 0;             // sqrt of the mean e^2 over the detected part of the pixel
-  double resolution_px = 0;      // mean step of xhat as the spot crosses one pixel: 1 px / number of jumps
-                                 // (thesis "sub-pixel resolution": 0.5 px for binary single sampling)
-  double equivalent_step_px = 0; // sqrt(12) rms: step of the uniform quantiser with the same rms error
-  double worst_px = 0;           // sup |e| over the detected part
-  double largest_step_px = 0;    // largest jump of xhat between adjacent segments (thesis "sub-pixel resolution")
-  double detected_fraction = 0;  // part of the pixel where some sampling detects (noise-free)
-  int segments = 0;              // pieces of constant xhat in the pixel
+  double rms_px = 0;              // sqrt of the mean e^2 over the detected part of the pixel
+  double resolution_px = 0;       // mean step of xhat as the spot crosses one pixel: 1 px / number of jumps
+                                  // (thesis "sub-pixel resolution": 0.5 px for binary single sampling)
+  double equivalent_step_px = 0;  // sqrt(12) rms: step of the uniform quantiser with the same rms error
+  double worst_px = 0;            // sup |e| over the detected part
+  double largest_step_px = 0;     // largest jump of xhat between adjacent segments (thesis "sub-pixel resolution")
+  double detected_fraction = 0;   // part of the pixel where some sampling detects (noise-free)
+  int segments = 0;               // pieces of constant xhat in the pixel
 };
 
 // x0 uniform over [c - 0.5, c + 0.5], exact over the breakpoints.

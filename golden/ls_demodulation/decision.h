@@ -29,7 +29,7 @@ const char* to_string(DemodDetect d);
 
 // Mean and noise of D for one pixel.
 struct PixelDecision {
-  CorrelatorOutput out;         // noise-free chain output
+  CorrelatorOutput out;            // noise-free chain output
   double sigma_independent_V = 0;  // rms of the per-decision noise
   double sigma_common_V = 0;       // rms of the frame-common noise
 };
@@ -51,8 +51,8 @@ GaussNodes gauss_nodes(double sigma_V);
 
 struct Classification {
   DemodDetect detect = DemodDetect::BelowThreshold;
-  PixelDecision peak;        // pixel at the spot centre (profile 1)
-  PixelDecision background;  // pixel with background only
+  PixelDecision peak;               // pixel at the spot centre (profile 1)
+  PixelDecision background;         // pixel with background only
   double row_false_activation = 0;  // P(some pixel of the row activates on background alone)
 };
 Classification classify(const LsDemodulationConfig& cfg, double signal_A, double background_A);

@@ -70,10 +70,12 @@ EvalResult evaluate_ls_demodulation(const ParamSet& params, ProgressFn progress)
   r.reasons = {{"detectable", "range can be derived"},
                {"below_threshold", "noise-free V_out+ - V_out- at the spot peak stays below V_cmp"},
                {"saturated", "an integrator swing exceeds V_sat (background alone or with the spot)"},
-               {"background_activation", "background alone reaches V_cmp, or its noise activates more than "
-                                         "comparator.false_activation_max of the rows"}};
-  r.metric_names = {"peak_output_V", "background_output_V", "row_false_activation", "accuracy_px", "bias_rms_px",
-                    "noise_std_px", "worst_error_px", "p_detect", "detected_fraction"};
+               {"background_activation",
+                "background alone reaches V_cmp, or its noise activates more than "
+                "comparator.false_activation_max of the rows"}};
+  r.metric_names = {"peak_output_V",    "background_output_V", "row_false_activation", "accuracy_px",
+                    "bias_rms_px",      "noise_std_px",        "worst_error_px",       "p_detect",
+                    "detected_fraction"};
   const int ns = static_cast<int>(r.signal.values.size()), nb = static_cast<int>(r.background.values.size());
   r.points.assign(static_cast<size_t>(ns) * nb, EvalPoint{});
   parallel_for(

@@ -13,12 +13,12 @@ namespace rangesim::golden {
 struct DemodPoint {
   double signal_A = 0, background_A = 0;
   DemodDetect detect = DemodDetect::BelowThreshold;
-  double sbr_total_dB = 0;   // 20 log10((I_sig + I_bg) / I_bg), eq. 3.11 style
-  double sbr_ratio_dB = 0;   // 20 log10(I_sig / I_bg), eq. 3.23 style
-  double peak_output_V = 0;  // noise-free D at the spot peak
+  double sbr_total_dB = 0;         // 20 log10((I_sig + I_bg) / I_bg), eq. 3.11 style
+  double sbr_ratio_dB = 0;         // 20 log10(I_sig / I_bg), eq. 3.23 style
+  double peak_output_V = 0;        // noise-free D at the spot peak
   double background_output_V = 0;  // noise-free D of a background-only pixel
   double row_false_activation = 0;
-  DemodAccuracy accuracy;    // valid when detectable
+  DemodAccuracy accuracy;  // valid when detectable
 };
 
 // One operating point; accuracy with the preset's detections and frames (or the given ones).

@@ -168,7 +168,8 @@ LogIntegral segment_log_integral(const LsDemodulationConfig& cfg, const Segment&
   const double I = s.photocurrent_A;
   // I_off + I_mod = c0 + c1 e^{-s/tau}: c0 its limit, c1 = -alpha (I_avg - I_pd) the LPF's lag.
   return log_integral(lg.offset_current_A + alpha * eps * I, -alpha * lpf_lag_A(x, s, dc0),
-                      cfg.suppression.lpf_time_constant_s, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
+                      cfg.suppression.lpf_time_constant_s, L, lg.leakage_current_A, lg.offset_current_A,
+                      alpha * eps * I);
 }
 
 double gain_V(const LsDemodulationConfig& cfg) {  // g_m beta s
@@ -241,8 +242,7 @@ double past_shot_var_V2(const LsDemodulationConfig& cfg, double past_mean_A, dou
   return phys::kElementaryCharge_C * past_mean_A * alpha * alpha * G * G * 0.5 * cfg.suppression.lpf_time_constant_s;
 }
 
-std::vector<double> period_noise_kernel(const LsDemodulationConfig& cfg, const std::vector<Segment>& period,
-                                        double x) {
+std::vector<double> period_noise_kernel(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, double x) {
   std::vector<double> k(period.size());
   const double dc0 = period.empty() ? 0 : period.front().dc_A;
   for (size_t j = 0; j < period.size(); ++j) {

@@ -57,13 +57,13 @@ std::vector<Segment> period_segments(const LsDemodulationConfig& cfg, double dc_
 std::vector<Segment> pixel_segments(const LsDemodulationConfig& cfg, double beam_A, double background_A);
 
 struct CorrelatorOutput {
-  double diff_V = 0;          // V_out+ - V_out- at the end of the window (noise-free)
-  double plus_V = 0;          // V_out+ swing (from its reset level)
-  double minus_V = 0;         // V_out- swing
-  double peak_abs_V = 0;      // largest |swing| of either integrator at a segment end
-  double shot_var_V2 = 0;     // shot-noise variance of diff_V
+  double diff_V = 0;            // V_out+ - V_out- at the end of the window (noise-free)
+  double plus_V = 0;            // V_out+ swing (from its reset level)
+  double minus_V = 0;           // V_out- swing
+  double peak_abs_V = 0;        // largest |swing| of either integrator at a segment end
+  double shot_var_V2 = 0;       // shot-noise variance of diff_V
   double clipped_fraction = 0;  // fraction of the window where I_off + I_mod sat on the floor
-  double lpf_end_A = 0;       // I_avg at the end of the window
+  double lpf_end_A = 0;         // I_avg at the end of the window
   // shot_var_V2 split by where the noise enters D (the clock-level kernel draws each part once
   // when it aggregates the window): charge on C1, on C2, and the LPF's memory of before the window.
   double shot_var_plus_V2 = 0;
@@ -132,7 +132,7 @@ class PeriodicShotNoise {
   std::vector<Segment> period_;  // one period
   std::vector<double> k_;        // noise kernel per segment
   double alpha_ = 0, eps_ = 0, tau_ = 0;
-  std::vector<Map> pow2_;        // the one-period map composed 2^i times, i < log2(periods) + 1
+  std::vector<Map> pow2_;  // the one-period map composed 2^i times, i < log2(periods) + 1
 };
 
 // Noise kernel k_j of the linearised chain per segment of one period with the LPF starting at
@@ -146,9 +146,9 @@ double past_shot_var_V2(const LsDemodulationConfig& cfg, double past_mean_A, dou
 // int_0^L ln(max(c0 + c1 e^{-s/tau}, floor) / ref) ds, the same of 1/(c0 + c1 e^{-s/tau}) over
 // the unclipped part, and the clipped time (exposed for tests).
 struct LogIntegral {
-  double ln_s = 0;       // int ln(max(f, floor) / ref) ds
+  double ln_s = 0;         // int ln(max(f, floor) / ref) ds
   double inv_s_per_A = 0;  // int 1{f > floor} / f ds
-  double clipped_s = 0;  // time with f <= floor
+  double clipped_s = 0;    // time with f <= floor
 };
 // c0_minus_ref_A: c0 - ref exactly (c0 = ref + alpha eps I here); NaN: computed as c0 - ref.
 LogIntegral log_integral(double c0_A, double c1_A, double tau_s, double length_s, double floor_A, double ref_A,

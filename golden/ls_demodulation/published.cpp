@@ -48,7 +48,8 @@ std::vector<EvalSweep> demod_sweeps(const LsDemodulationConfig& cfg) {
   // Mirror gain: at the grid's lowest background (threshold-limited, where alpha lowers the weakest
   // signal 10x) and at the sweep background (shot-noise-limited: alpha scales signal and noise alike,
   // and at alpha = 10 the background's noise crosses V_cmp).
-  EvalSweep gain = accuracy_sweep("accuracy_vs_mirror_gain", "ls-demodulation: accuracy against signal, mirror gain alpha (thesis Fig. 3.6)");
+  EvalSweep gain = accuracy_sweep("accuracy_vs_mirror_gain",
+                                  "ls-demodulation: accuracy against signal, mirror gain alpha (thesis Fig. 3.6)");
   for (double b : {cfg.grid.background_min_A, bg})
     for (double a : {1.0, 10.0}) {
       LsDemodulationConfig c = cfg;
@@ -57,13 +58,21 @@ std::vector<EvalSweep> demod_sweeps(const LsDemodulationConfig& cfg) {
     }
   out.push_back(std::move(gain));
 
-  EvalSweep frames = accuracy_sweep("accuracy_vs_frames", "ls-demodulation: accuracy against signal, frames averaged N_p (thesis Fig. 3.8)");
+  EvalSweep frames = accuracy_sweep("accuracy_vs_frames",
+                                    "ls-demodulation: accuracy against signal, frames averaged N_p (thesis Fig. 3.8)");
   for (int n : {1, 10, 25}) frames.series.push_back(accuracy_curve(cfg, fmt::format("N_p = {}", n), K, n, bg));
   out.push_back(std::move(frames));
 
   // Detections: the shot/kTC part averages, the frame-common read noise and the bias do not.
-  EvalSweep det{"accuracy_vs_detections", "ls-demodulation: accuracy against correlation decisions per frame (thesis Fig. 3.9)",
-                "decisions per frame", "", "rms range error", "m", true, true, {}};
+  EvalSweep det{"accuracy_vs_detections",
+                "ls-demodulation: accuracy against correlation decisions per frame (thesis Fig. 3.9)",
+                "decisions per frame",
+                "",
+                "rms range error",
+                "m",
+                true,
+                true,
+                {}};
   const double smin = min_detectable_signal_A(cfg, bg, cfg.grid.signal_min_A, cfg.grid.signal_max_A);
   for (double f : {1.5, 4.0}) {
     for (bool read : {true, false}) {
@@ -80,8 +89,15 @@ std::vector<EvalSweep> demod_sweeps(const LsDemodulationConfig& cfg) {
   }
   out.push_back(std::move(det));
 
-  EvalSweep sel{"selectivity_vs_harmonic", "ls-demodulation: response to background modulated at k f0, relative to k = 1",
-                "harmonic k", "", "relative response", "dB", false, false, {}};
+  EvalSweep sel{"selectivity_vs_harmonic",
+                "ls-demodulation: response to background modulated at k f0, relative to k = 1",
+                "harmonic k",
+                "",
+                "relative response",
+                "dB",
+                false,
+                false,
+                {}};
   LsDemodulationConfig duty = cfg;
   duty.correlator.reference_duty_cycle = duty_for_even_harmonic_dB(-13.0);
   EvalSeries lin{"sinusoid, linearised (preset)", {}, {}}, sq{"square 50%, exact chain (preset)", {}, {}},
@@ -97,9 +113,17 @@ std::vector<EvalSweep> demod_sweeps(const LsDemodulationConfig& cfg) {
   sel.series = {lin, sq, dl};
   out.push_back(std::move(sel));
 
-  EvalSweep step{"step_settling", "ls-demodulation: background step, residual of the subtraction and correlator error",
-                 "time after the step", "s", "relative residual / |error| / V_cmp", "", true, true, {}};
-  EvalSeries res{"I_mod residual / (alpha dI)", {}, {}}, cor{"|correlator error| / V_cmp, step x10 from the sweep background", {}, {}};
+  EvalSweep step{"step_settling",
+                 "ls-demodulation: background step, residual of the subtraction and correlator error",
+                 "time after the step",
+                 "s",
+                 "relative residual / |error| / V_cmp",
+                 "",
+                 true,
+                 true,
+                 {}};
+  EvalSeries res{"I_mod residual / (alpha dI)", {}, {}},
+      cor{"|correlator error| / V_cmp, step x10 from the sweep background", {}, {}};
   for (double t : log_spaced(1e-5, 20 * cfg.suppression.lpf_time_constant_s, 30)) {
     res.x.push_back(t), cor.x.push_back(t);
     res.y.push_back(step_residual_fraction(cfg, t));
@@ -120,27 +144,30 @@ std::vector<PublishedFigure> demod_published_figures(const LsDemodulationConfig&
   // -18 dB SBR in 48 dB background: weakest detectable signal 48 dB above the grid's lowest background.
   const double b48 = g.background_min_A * std::pow(10.0, 48.0 / 20);
   const double s48 = min_detectable_signal_A(cfg, b48, 1e-3 * g.signal_min_A, g.signal_max_A);
-  f.push_back({kId, "sbr_min_48dB_background", "-18 dB SBR in 48 dB background (chip paper, thesis 3.2.1)", -18.0, "dB",
-               20 * std::log10(s48 / b48), 0.1,
-               fmt::format("not reproduced: weakest detectable signal {:.3g} A at background {:.3g} A (48 dB above the "
-                           "grid's 0.001 V-equivalent lowest background), ratio-style SBR'. Our threshold is calibrated "
-                           "to the thesis's 0.01 V (43.5 dB signal span); -18 dB there would need a threshold 3x higher "
-                           "(33.5 dB signal span). The two published spans cannot both hold with one V_cmp",
-                           s48, b48)});
+  f.push_back(
+      {kId, "sbr_min_48dB_background", "-18 dB SBR in 48 dB background (chip paper, thesis 3.2.1)", -18.0, "dB",
+       20 * std::log10(s48 / b48), 0.1,
+       fmt::format("not reproduced: weakest detectable signal {:.3g} A at background {:.3g} A (48 dB above the "
+                   "grid's 0.001 V-equivalent lowest background), ratio-style SBR'. Our threshold is calibrated "
+                   "to the thesis's 0.01 V (43.5 dB signal span); -18 dB there would need a threshold 3x higher "
+                   "(33.5 dB signal span). The two published spans cannot both hold with one V_cmp",
+                   s48, b48)});
 
-  f.push_back({kId, "even_harmonic_suppression", "-13 dB suppression of even harmonics of f0 (chip paper, thesis 3.2.1)",
-               -13.0, "dB", std::fmax(-300.0, harmonic_selectivity_dB(cfg, g.sweep_background_A, 2)), 0.05,
-               fmt::format("not reproduced: with a 50% MPY+ duty the correlation weight has no even Fourier "
-                           "coefficients (C1 != C2 and mirror mismatch only add a DC term), so the model rejects "
-                           "k = 2 ideally (shown as -300 dB). -13 dB is |cos(pi D)| for an MPY+ duty D = {:.4f}; the chip's "
-                           "finite rejection points to such an asymmetry (or MPY timing skew), not modelled by default "
-                           "because it would also leak the background's DC residue into V_out+ - V_out-",
-                           duty_for_even_harmonic_dB(-13.0))});
+  f.push_back(
+      {kId, "even_harmonic_suppression", "-13 dB suppression of even harmonics of f0 (chip paper, thesis 3.2.1)", -13.0,
+       "dB", std::fmax(-300.0, harmonic_selectivity_dB(cfg, g.sweep_background_A, 2)), 0.05,
+       fmt::format("not reproduced: with a 50% MPY+ duty the correlation weight has no even Fourier "
+                   "coefficients (C1 != C2 and mirror mismatch only add a DC term), so the model rejects "
+                   "k = 2 ideally (shown as -300 dB). -13 dB is |cos(pi D)| for an MPY+ duty D = {:.4f}; the chip's "
+                   "finite rejection points to such an asymmetry (or MPY timing skew), not modelled by default "
+                   "because it would also leak the background's DC residue into V_out+ - V_out-",
+                   duty_for_even_harmonic_dB(-13.0))});
   {
     LsDemodulationConfig d = cfg;
     d.correlator.reference_duty_cycle = duty_for_even_harmonic_dB(-13.0);
-    f.push_back({kId, "even_harmonic_suppression_duty", "-13 dB even-harmonic suppression with the explaining MPY+ duty",
-                 -13.0, "dB", harmonic_selectivity_dB(d, g.sweep_background_A, 2), 1e-3,
+    f.push_back({kId, "even_harmonic_suppression_duty",
+                 "-13 dB even-harmonic suppression with the explaining MPY+ duty", -13.0, "dB",
+                 harmonic_selectivity_dB(d, g.sweep_background_A, 2), 1e-3,
                  fmt::format("MPY+ duty {:.4f} (derived from |cos(pi D)| = 10^(-13/20)); linearised chain at {:.3g} A "
                              "background",
                              d.correlator.reference_duty_cycle, g.sweep_background_A)});
@@ -148,8 +175,8 @@ std::vector<PublishedFigure> demod_published_figures(const LsDemodulationConfig&
 
   const double frame_rate = 1 / demod_frame_time_s(cfg, 1);
   const bool det16 = demod_detectable(cfg, b48 * std::pow(10.0, -16.0 / 20), b48);
-  f.push_back({kId, "frame_rate_2000fps", "2000 fps at -16 dB SBR (chip paper, thesis 3.2.1)", 2000.0, "1/s", frame_rate,
-               0.01,
+  f.push_back({kId, "frame_rate_2000fps", "2000 fps at -16 dB SBR (chip paper, thesis 3.2.1)", 2000.0, "1/s",
+               frame_rate, 0.01,
                fmt::format("one 50 us decision + {} rows x {} cycles at {:g} Hz (row_cycles calibrated); -16 dB SBR at "
                            "{:.3g} A background is {}",
                            cfg.pixel.rows, cfg.readout.row_cycles, cfg.readout.clock_Hz, b48,
@@ -161,13 +188,15 @@ std::vector<PublishedFigure> demod_published_figures(const LsDemodulationConfig&
   const double acc = pn.accuracy.accuracy_px * per_px, worst = pn.accuracy.worst_error_px * per_px;
   const std::string at = fmt::format("signal {:.3g} A, background {:.3g} A, one frame, {:.3g} m, {:.3g} mm/px", sn,
                                      g.sweep_background_A, cfg.optics.distance_m, per_px * 1e3);
-  f.push_back({kId, "std_effective_area", "0.6 mm std in the effective area at 1000-1100 mm (thesis 3.2.1)", 0.6e-3, "m",
-               acc, 0.05, "rms error over spot positions at " + at + "; baseline calibrated to this figure"});
-  f.push_back({kId, "max_error_effective_area", "1.5 mm maximum error at 1000 mm (chip paper, thesis 3.2.1)", 1.5e-3, "m",
-               worst, 0.25,
+  f.push_back({kId, "std_effective_area", "0.6 mm std in the effective area at 1000-1100 mm (thesis 3.2.1)", 0.6e-3,
+               "m", acc, 0.05, "rms error over spot positions at " + at + "; baseline calibrated to this figure"});
+  f.push_back({kId, "max_error_effective_area", "1.5 mm maximum error at 1000 mm (chip paper, thesis 3.2.1)", 1.5e-3,
+               "m", worst, 0.25,
                "max over spot positions of |bias| + 3 std at " + at +
-                   (std::fabs(worst - 1.5e-3) <= 0.25 * 1.5e-3 ? "" : "; differs: our 1-bit edge readout's error "
-                    "spread (bias steps of 0.5 px plus noise) has a larger max/std ratio than the chip's 2.5")});
+                   (std::fabs(worst - 1.5e-3) <= 0.25 * 1.5e-3
+                        ? ""
+                        : "; differs: our 1-bit edge readout's error "
+                          "spread (bias steps of 0.5 px plus noise) has a larger max/std ratio than the chip's 2.5")});
   f.push_back({kId, "std_full_area", "0.89 mm std over the full area (thesis 3.2.1)", 0.89e-3, "m", acc, 0.05,
                "not reproduced: the full area adds lens distortion, calibration and target effects at the image "
                "edges that the model does not hold; ours is the effective-area value"});
@@ -180,8 +209,8 @@ std::vector<PublishedFigure> demod_published_figures(const LsDemodulationConfig&
     const double s = 1.5 * min_detectable_signal_A(cfg, bg, g.signal_min_A, g.signal_max_A);
     const double a1 = evaluate_demod_point(cfg, s, bg, 1, 1).accuracy.accuracy_px;
     const double a25 = evaluate_demod_point(cfg, s, bg, 1, 25).accuracy.accuracy_px;
-    f.push_back({kId, "averaging_exponent", "accuracy improves as 1/sqrt(N_p) with frame averaging (thesis Fig. 3.8)", 0.5,
-                 "1", std::log(a1 / a25) / std::log(25.0), 0.2,
+    f.push_back({kId, "averaging_exponent", "accuracy improves as 1/sqrt(N_p) with frame averaging (thesis Fig. 3.8)",
+                 0.5, "1", std::log(a1 / a25) / std::log(25.0), 0.2,
                  fmt::format("exponent x of N_p^-x from 1 to 25 frames at {:.3g} A signal, {:.3g} A background "
                              "(1.5 x the weakest detectable). The noise part falls exactly as N_p^-1/2; the bias of "
                              "the 1-bit edge readout does not average, so x < 0.5 wherever it matters",
@@ -195,8 +224,8 @@ std::vector<PublishedFigure> demod_published_figures(const LsDemodulationConfig&
                fmt::format("{:.3g}-{:.3g} A at {:.3g} A background; the lower edge is V_cmp (g_m calibrated to the "
                            "thesis's 0.01 V = 7.4 pA), the upper the grid's 1.5 V-equivalent end{}",
                            sr.lo, sr.hi, sr.at, sr.hi_limited_by_grid ? " (grid-limited)" : "")});
-  f.push_back({kId, "background_span", "detectable background span 103.5 dB (thesis 3.2.3, Table 5.1 [27])", 103.5, "dB",
-               br.range_dB, 0.02,
+  f.push_back({kId, "background_span", "detectable background span 103.5 dB (thesis 3.2.3, Table 5.1 [27])", 103.5,
+               "dB", br.range_dB, 0.02,
                fmt::format("not reproduced: {:.3g}-{:.3g} A at {:.3g} A signal. Above ~{:.2g} A the background's "
                            "shot noise through the correlator makes background-only pixels cross V_cmp (row false "
                            "activation > {:g}); the thesis's noise-free evaluation has no such limit",

@@ -50,8 +50,7 @@ EvalRange axis_range(const std::vector<double>& v, const std::vector<bool>& ok, 
 
 // One readout of the whole array: conversion of both FDs of each row, then shifting the row out.
 double readout_time_s(const TofLockinConfig& cfg) {
-  return cfg.pixel.rows *
-         static_cast<double>(cfg.readout.adc_conversion_cycles + cfg.readout.output_cycles_per_row) /
+  return cfg.pixel.rows * static_cast<double>(cfg.readout.adc_conversion_cycles + cfg.readout.output_cycles_per_row) /
          cfg.readout.clock_Hz;
 }
 
@@ -86,9 +85,9 @@ EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
       q.sbr_ratio_dB = 20.0 * std::log10(sig[is] / bg[ib]);
       const bool ok = p.detect == LockinDetect::Detectable;
       q.accuracy_m = ok ? p.accuracy_m : kNaN;
-      q.metrics = ok ? std::vector<double>{p.std_m, p.bias_m, p.v1_V, p.v2_V, p.signal_V, p.n1_e, p.n2_e, p.snr,
-                                           p.std_first_m}
-                     : std::vector<double>(r.metric_names.size(), kNaN);
+      q.metrics =
+          ok ? std::vector<double>{p.std_m, p.bias_m, p.v1_V, p.v2_V, p.signal_V, p.n1_e, p.n2_e, p.snr, p.std_first_m}
+             : std::vector<double>(r.metric_names.size(), kNaN);
       r.points.push_back(std::move(q));
     }
     if (progress) progress(static_cast<int>(ib + 1), static_cast<int>(bg.size()));
@@ -103,8 +102,7 @@ EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
   r.background_range = axis_range(bg, ok_bg, sig.back(), [&](double b) { return detectable(cfg, sig.back(), b); });
   r.distance_m = e.distance_m;
 
-  const double frame_s = cfg.gates.accumulations_per_frame * repetition_period_s(cfg.source) +
-                         readout_time_s(cfg);
+  const double frame_s = cfg.gates.accumulations_per_frame * repetition_period_s(cfg.source) + readout_time_s(cfg);
   const double frames_per_image = cfg.readout.ambient_subtraction ? 2.0 : 1.0;
   r.summary_extra = {{"frames_averaged", static_cast<double>(e.frames_averaged)},
                      {"max_range_m", max_range_m(cfg.source)},

@@ -96,8 +96,8 @@ LockinPoint evaluate_point(const TofLockinConfig& cfg, double signal_A, double b
     return pt;
   }
   // Fixed-pattern offsets differ per tap and pixel; the ambient frame carries the same offsets.
-  pt.fpn_m = cfg.readout.ambient_subtraction ? 0.0
-                                             : fixed_pattern_range_rms_m(K, mu[0], mu[1], cfg.noise.fixed_pattern_rms_V);
+  pt.fpn_m =
+      cfg.readout.ambient_subtraction ? 0.0 : fixed_pattern_range_rms_m(K, mu[0], mu[1], cfg.noise.fixed_pattern_rms_V);
   const double n_p = static_cast<double>(frames < 1 ? 1 : frames);
   pt.accuracy_m = std::sqrt(pt.bias_m * pt.bias_m + pt.fpn_m * pt.fpn_m + m.var_m2 / n_p);
   return pt;

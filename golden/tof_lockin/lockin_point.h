@@ -31,18 +31,18 @@ const char* to_string(LockinDetect d);
 
 struct LockinPoint {
   LockinDetect detect = LockinDetect::Detectable;
-  double distance_m = 0;     // true distance
-  double delay_s = 0;        // T_D
-  double signal_V = 0;       // light-induced V1 + V2 at the ADC input (mean)
-  double v1_V = 0, v2_V = 0; // mean ADC input of each tap in the LED-on frame
-  double n1_e = 0, n2_e = 0; // tap-specific signal electrons
-  double mean_m = 0;         // E[L]
-  double bias_m = 0;         // E[L] - distance
-  double std_m = 0;          // rms noise of one frame
-  double std_first_m = 0;    // first-order part of std_m
-  double fpn_m = 0;          // rms over pixels from fixed-pattern offsets (0 with ambient subtraction)
-  double accuracy_m = 0;     // sqrt(bias^2 + fpn^2 + std^2 / N_p)
-  double snr = 0;            // SNR of the ratio's denominator (validity of the delta method)
+  double distance_m = 0;      // true distance
+  double delay_s = 0;         // T_D
+  double signal_V = 0;        // light-induced V1 + V2 at the ADC input (mean)
+  double v1_V = 0, v2_V = 0;  // mean ADC input of each tap in the LED-on frame
+  double n1_e = 0, n2_e = 0;  // tap-specific signal electrons
+  double mean_m = 0;          // E[L]
+  double bias_m = 0;          // E[L] - distance
+  double std_m = 0;           // rms noise of one frame
+  double std_first_m = 0;     // first-order part of std_m
+  double fpn_m = 0;           // rms over pixels from fixed-pattern offsets (0 with ambient subtraction)
+  double accuracy_m = 0;      // sqrt(bias^2 + fpn^2 + std^2 / N_p)
+  double snr = 0;             // SNR of the ratio's denominator (validity of the delta method)
 };
 
 // Full model at one point; `frames` = N_p range images averaged.

@@ -17,8 +17,15 @@ namespace {
 double or_nan(const LockinPoint& p) { return p.detect == LockinDetect::Detectable ? p.accuracy_m : kNaN; }
 
 EvalSweep delay_sweep(const TofLockinConfig& cfg) {
-  EvalSweep sw{"accuracy_vs_delay", "tof-lockin: range accuracy against delay (thesis 4.1.1: 2.9 / 3.45 / 2.9 cm at 1 / 50 / 100 ns, 0.7 V)",
-               "delay T_D", "ns", "accuracy (rms)", "m", false, false, {}};
+  EvalSweep sw{"accuracy_vs_delay",
+               "tof-lockin: range accuracy against delay (thesis 4.1.1: 2.9 / 3.45 / 2.9 cm at 1 / 50 / 100 ns, 0.7 V)",
+               "delay T_D",
+               "ns",
+               "accuracy (rms)",
+               "m",
+               false,
+               false,
+               {}};
   const double T0 = cfg.source.pulse_width_s;
   for (double v : {0.7, 1.4}) {
     EvalSeries s{fmt::format("{:g} V signal, no background, 1 frame", v), {}, {}};
@@ -34,8 +41,15 @@ EvalSweep delay_sweep(const TofLockinConfig& cfg) {
 }
 
 EvalSweep frames_sweep(const TofLockinConfig& cfg) {
-  EvalSweep sw{"accuracy_vs_frames", "tof-lockin: range accuracy against frames averaged (thesis 4.1.1, Fig. 4.6)",
-               "frames averaged N_p", "", "accuracy (rms)", "m", true, true, {}};
+  EvalSweep sw{"accuracy_vs_frames",
+               "tof-lockin: range accuracy against frames averaged (thesis 4.1.1, Fig. 4.6)",
+               "frames averaged N_p",
+               "",
+               "accuracy (rms)",
+               "m",
+               true,
+               true,
+               {}};
   for (double v : {0.25, 1.3}) {
     EvalSeries s{fmt::format("{:g} V signal at {:g} m", v, cfg.eval.distance_m), {}, {}};
     for (long long n : {1, 2, 5, 10, 25, 50, 100}) {
@@ -48,8 +62,15 @@ EvalSweep frames_sweep(const TofLockinConfig& cfg) {
 }
 
 EvalSweep pulse_width_sweep(const TofLockinConfig& cfg) {
-  EvalSweep sw{"accuracy_vs_pulse_width", "tof-lockin: range accuracy against pulse width (thesis 4.1.1: 0.4 / 1.4 / 2.6 cm)",
-               "pulse width T0", "ns", "accuracy (rms)", "m", false, false, {}};
+  EvalSweep sw{"accuracy_vs_pulse_width",
+               "tof-lockin: range accuracy against pulse width (thesis 4.1.1: 0.4 / 1.4 / 2.6 cm)",
+               "pulse width T0",
+               "ns",
+               "accuracy (rms)",
+               "m",
+               false,
+               false,
+               {}};
   EvalSeries s{fmt::format("0.2 V signal, 10 frames at {:g} m", cfg.eval.distance_m), {}, {}};
   for (int ns = 10; ns <= 100; ns += 5) {
     s.x.push_back(ns);
@@ -60,8 +81,15 @@ EvalSweep pulse_width_sweep(const TofLockinConfig& cfg) {
 }
 
 EvalSweep signal_sweep(const TofLockinConfig& cfg, const std::vector<double>& sig, const std::vector<double>& bg) {
-  EvalSweep sw{"accuracy_vs_signal", "tof-lockin: range accuracy against signal at several backgrounds (thesis Fig. 4.5)",
-               "signal photocurrent", "A", "accuracy (rms)", "m", true, true, {}};
+  EvalSweep sw{"accuracy_vs_signal",
+               "tof-lockin: range accuracy against signal at several backgrounds (thesis Fig. 4.5)",
+               "signal photocurrent",
+               "A",
+               "accuracy (rms)",
+               "m",
+               true,
+               true,
+               {}};
   // The grid's lowest background and each decade of the grid above it.
   std::vector<double> levels{bg.front()};
   for (double b = std::pow(10.0, std::ceil(std::log10(bg.front())) + 1); b <= bg.back() * 1.000001; b *= 100.0)
@@ -78,14 +106,22 @@ EvalSweep signal_sweep(const TofLockinConfig& cfg, const std::vector<double>& si
 }
 
 EvalSweep distance_sweep(const TofLockinConfig& cfg, const std::vector<double>& sig, const std::vector<double>& bg) {
-  EvalSweep sw{"accuracy_vs_distance", "tof-lockin: range accuracy against distance (Table 4.1: 0.8-12 m)", "distance",
-               "m", "accuracy (rms)", "m", false, true, {}};
+  EvalSweep sw{"accuracy_vs_distance",
+               "tof-lockin: range accuracy against distance (Table 4.1: 0.8-12 m)",
+               "distance",
+               "m",
+               "accuracy (rms)",
+               "m",
+               false,
+               true,
+               {}};
   const int n = std::max(cfg.eval.distance_points, 1);
   for (double i : {sig.back(), std::sqrt(sig.front() * sig.back())}) {
     EvalSeries s{fmt::format("signal {:.3g} A, background {:g} A", i, bg.front()), {}, {}};
     for (int k = 0; k < n; ++k) {
-      const double L = n == 1 ? cfg.eval.distance_min_m
-                              : cfg.eval.distance_min_m + (cfg.eval.distance_max_m - cfg.eval.distance_min_m) * k / (n - 1);
+      const double L =
+          n == 1 ? cfg.eval.distance_min_m
+                 : cfg.eval.distance_min_m + (cfg.eval.distance_max_m - cfg.eval.distance_min_m) * k / (n - 1);
       s.x.push_back(L);
       s.y.push_back(or_nan(evaluate_point(cfg, i, bg.front(), L, cfg.eval.frames_averaged)));
     }

@@ -97,7 +97,8 @@ double window_light_in_period_s(const LightPulseConfig& src, double delay_s, dou
   long long k_lo, k_hi;
   lag_range(src, delay_s, t_a_s, t_b_s, &k_lo, &k_hi);
   double sum = 0.0;
-  for (long long k = k_lo; k < std::min(k_hi, period + 1); ++k) sum += lag_light_s(src, delay_s, t_a_s, t_b_s, k, step_s);
+  for (long long k = k_lo; k < std::min(k_hi, period + 1); ++k)
+    sum += lag_light_s(src, delay_s, t_a_s, t_b_s, k, step_s);
   return sum;
 }
 

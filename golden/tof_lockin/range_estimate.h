@@ -20,11 +20,11 @@
 namespace rangesim::golden {
 
 struct RangeMoments {
-  double mean_m = 0;         // E[L], second order
-  double var_m2 = 0;         // Var[L] of one frame, second order
-  double var_first_m2 = 0;   // first-order part (the usual lock-in formula)
-  double noise_free_m = 0;   // K mu_b / (mu_a + mu_b): L of the mean tap values
-  double snr = 0;            // s / sqrt(v_a + v_b), validity of the expansion (>> 1)
+  double mean_m = 0;        // E[L], second order
+  double var_m2 = 0;        // Var[L] of one frame, second order
+  double var_first_m2 = 0;  // first-order part (the usual lock-in formula)
+  double noise_free_m = 0;  // K mu_b / (mu_a + mu_b): L of the mean tap values
+  double snr = 0;           // s / sqrt(v_a + v_b), validity of the expansion (>> 1)
 };
 
 // K_m = c T0 / 2; a, b: mean and variance of V1 - V_cal and V2 - V_cal. Requires mu_a + mu_b > 0.

@@ -12,8 +12,8 @@
 //   dark:               I_dark T_rep / q into each FD (the wait until readout is not modelled)
 // times N_acc, with one exception: t_k sums the frame's pulse train over the periods
 // (window_light_in_frame_s), so a pulse tail past T_rep counts in the next period's PHASE1 and
-// the last pulse's tail past the accumulation is not collected. Everything but the tap-specific signal is common to both taps. The thesis's
-// V_offset (eq. 2.25) is `offset_voltage_V`, a constant FD offset present in every frame.
+// the last pulse's tail past the accumulation is not collected. Everything but the tap-specific signal is common to
+// both taps. The thesis's V_offset (eq. 2.25) is `offset_voltage_V`, a constant FD offset present in every frame.
 //
 // At the ADC input, V_k = A_sf (q N_k / C_k + V_offset). Noise per sample (one readout of a tap):
 // Poisson shot noise of N_k (A_sf q / C_k)^2 N_k, kTC reset noise A_sf^2 k T / C_k (unless CDS),
@@ -24,10 +24,10 @@ namespace rangesim::golden {
 
 // Mean electrons on each FD after one frame.
 struct FrameCharge {
-  double signal_e[2] = {0, 0};      // tap-specific signal: eta I_s t_k N / q
-  double light_common_e = 0;        // light-induced, equal in both taps (deep electrons, PHASE3 leakage)
-  double background_e = 0;          // background in each tap (windows + PHASE3 leakage)
-  double dark_e = 0;                // dark current in each FD
+  double signal_e[2] = {0, 0};  // tap-specific signal: eta I_s t_k N / q
+  double light_common_e = 0;    // light-induced, equal in both taps (deep electrons, PHASE3 leakage)
+  double background_e = 0;      // background in each tap (windows + PHASE3 leakage)
+  double dark_e = 0;            // dark current in each FD
   double total_e(int k) const { return signal_e[k] + light_common_e + background_e + dark_e; }
   double ambient_e() const { return background_e + dark_e; }  // same frame with the LED off
 };

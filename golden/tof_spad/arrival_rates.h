@@ -27,7 +27,8 @@ Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double backgr
 // going dead) while the TDC is stopped or busy, so at a random time it is live with the
 // non-paralysable probability 1 / (1 + m tau_dead) (the non-paralysable dead-time model, n = m / (1 + m tau)). This
 // stationary factor is the thesis's eq. 2.29-2.30 limit (detections <= 1 / t_dead) done properly;
-// its time correlation with the TDC's blocking is neglected (docs/tof-spad.md). The echo is integrated with erfc only within
+// its time correlation with the TDC's blocking is neglected (docs/tof-spad.md). The echo is integrated with erfc only
+// within
 // +-12 sigma of its centre (beyond, < 1e-32 of it); echoes are assumed inside the period.
 std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a);
 

@@ -13,8 +13,8 @@
 namespace rangesim::golden::spad {
 
 struct EstimatorConfig {
-  int peak_window_bins = 7;       // PW
-  bool coates = true;             // Coates correction before the centroid
+  int peak_window_bins = 7;         // PW
+  bool coates = true;               // Coates correction before the centroid
   bool subtract_background = true;  // subtract the mean per-bin level of the bins outside PW
 };
 
@@ -58,8 +58,9 @@ struct EstimateMoments {
 EstimateMoments estimator_moments(const PileUpHistogram& h, const TdcBins& bins, double cycles, int peak_bin,
                                   const EstimatorConfig& cfg);
 
-// Thompson, Larson and Webb, "Precise nanometer localization analysis for individual fluorescent probes" (Biophys. J., 2002), one dimension: timing sigma of an ideal localisation from
-// N signal photons, IRF sigma s, bin width a and b background counts per bin.
+// Thompson, Larson and Webb, "Precise nanometer localization analysis for individual fluorescent probes" (Biophys. J.,
+// 2002), one dimension: timing sigma of an ideal localisation from N signal photons, IRF sigma s, bin width a and b
+// background counts per bin.
 double thompson_sigma_t_s(double irf_sigma_s, double bin_s, double signal_counts, double background_per_bin);
 
 }  // namespace rangesim::golden::spad

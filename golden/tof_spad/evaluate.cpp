@@ -25,7 +25,7 @@ EvalPoint to_point(const PointResult& p, double signal_Hz, double background_Hz)
   q.accuracy_m = ok ? p.accuracy_m : kNaN;
   const bool has_moments = p.moments.defined;
   q.metrics = {has_moments ? p.bias_m : kNaN, has_moments ? p.std_m : kNaN, p.signal_counts,
-               p.background_counts, p.detections_per_cycle, p.armed_at_echo};
+               p.background_counts,           p.detections_per_cycle,       p.armed_at_echo};
   return q;
 }
 
@@ -37,7 +37,13 @@ EvalSweep coates_sweep(const SpadModel& m, const std::vector<double>& background
   EvalSweep sw{"accuracy_vs_background_coates",
                "tof-spad: accuracy against background at " + std::to_string(static_cast<long>(e.sweep_signal_Hz)) +
                    " counts/s signal, with and without Coates correction",
-               "background count rate", "Hz", "rms range error", "m", true, true, {}};
+               "background count rate",
+               "Hz",
+               "rms range error",
+               "m",
+               true,
+               true,
+               {}};
   const std::vector<std::pair<std::string, EstimatorConfig>> variants = {
       {"Coates + background subtraction", {pw, true, true}},
       {"background subtraction, no Coates", {pw, false, true}},
@@ -61,10 +67,15 @@ EvalSweep distance_sweep(const SpadModel& m) {
                "tof-spad: range error against distance at " + std::to_string(static_cast<long>(e.reference_signal_Hz)) +
                    " counts/s signal, " + std::to_string(static_cast<long>(e.reference_background_Hz)) +
                    " counts/s background",
-               "distance", "m", "range error", "m", false, false, {}};
-  const Nonlinearity n =
-      nonlinearity(m, e.reference_signal_Hz, e.reference_background_Hz,
-                   linear_spaced(e.distance_min_m, e.distance_max_m, e.distance_points));
+               "distance",
+               "m",
+               "range error",
+               "m",
+               false,
+               false,
+               {}};
+  const Nonlinearity n = nonlinearity(m, e.reference_signal_Hz, e.reference_background_Hz,
+                                      linear_spaced(e.distance_min_m, e.distance_max_m, e.distance_points));
   EvalSeries rms{"rms error", n.distance_m, {}}, bias{"bias (TDC nonlinearity)", n.distance_m, n.bias_m},
       sd{"standard deviation", n.distance_m, n.std_m};
   for (size_t i = 0; i < n.bias_m.size(); ++i) rms.y.push_back(std::hypot(n.bias_m[i], n.std_m[i]));
@@ -102,8 +113,10 @@ EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress) {
   std::vector<bool> row(sig.size()), col(bg.size());
   for (size_t is = 0; is < sig.size(); ++is) row[is] = r.at(0, is).detect == "detectable";
   for (size_t ib = 0; ib < bg.size(); ++ib) col[ib] = r.at(ib, sig.size() - 1).detect == "detectable";
-  r.signal_range = detectable_range(sig, row, [&](double s) { return detectable(s, bg.front()); }, bg.front());
-  r.background_range = detectable_range(bg, col, [&](double b) { return detectable(sig.back(), b); }, sig.back());
+  r.signal_range = detectable_range(
+      sig, row, [&](double s) { return detectable(s, bg.front()); }, bg.front());
+  r.background_range = detectable_range(
+      bg, col, [&](double b) { return detectable(sig.back(), b); }, sig.back());
 
   const PointResult ref = model.evaluate(e.reference_signal_Hz, e.reference_background_Hz, e.distance_m);
   r.summary_extra = {{"tdc_lsb_s", model.bins().lsb_s},

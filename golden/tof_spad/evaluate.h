@@ -13,8 +13,8 @@ std::vector<PublishedFigure> published_figures(const TofSpadConfig& cfg);
 
 // Metric names of EvalPoint::metrics, in order.
 inline const std::vector<std::string>& metric_names() {
-  static const std::vector<std::string> names = {"bias_m",          "std_m",          "signal_counts",
-                                                 "background_counts", "detections_per_cycle", "armed_at_echo"};
+  static const std::vector<std::string> names = {
+      "bias_m", "std_m", "signal_counts", "background_counts", "detections_per_cycle", "armed_at_echo"};
   return names;
 }
 

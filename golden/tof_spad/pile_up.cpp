@@ -16,7 +16,8 @@ PileUpHistogram expected_histogram(const PileUpInput& in) {
   PileUpHistogram h;
   h.share = in.share;
   h.hazard.resize(static_cast<size_t>(np));
-  for (int i = 0; i < np; ++i) h.hazard[static_cast<size_t>(i)] = -std::expm1(-in.share * in.photons_per_bin[static_cast<size_t>(i)]);
+  for (int i = 0; i < np; ++i)
+    h.hazard[static_cast<size_t>(i)] = -std::expm1(-in.share * in.photons_per_bin[static_cast<size_t>(i)]);
 
   // Where a hit in bin i re-arms the group: the cycle offset k (0 = same cycle, the TDC stays
   // stopped until the next START) and the arming phase v of the k-th cycle.

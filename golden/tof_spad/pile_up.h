@@ -1,7 +1,8 @@
 #pragma once
 // First-photon pile-up with dead time carried across laser cycles: the expected TDC histogram in
-// closed form (the first-photon histogram of a SPAD; Coates, "The correction for photon pile-up in the measurement of radiative lifetimes", 1968), completing thesis eq. 2.32-2.33
-// where it stops ("P_n(t; s(t)) is still under analysing").
+// closed form (the first-photon histogram of a SPAD; Coates, "The correction for photon pile-up in the measurement of
+// radiative lifetimes", 1968), completing thesis eq. 2.32-2.33 where it stops ("P_n(t; s(t)) is still under
+// analysing").
 //
 // Per laser cycle the TDC is stopped by the first detection among the columns that share it.
 // With r_i our pixel's mean detections in bin i and s = 1 + (columns_per_tdc - 1) x
@@ -26,14 +27,14 @@ struct PileUpInput {
 };
 
 struct PileUpHistogram {
-  std::vector<double> event_prob;  // our pixel's P(event in code i) per physical cycle, i < codes
-  std::vector<double> armed_prob;  // P(TDC group armed at the start of phase bin i) per physical cycle
-  std::vector<double> hazard;      // q_i = 1 - exp(-s r_i): group detection probability when armed
-  double share = 1;                // s
-  double cycles_per_live_cycle = 1;  // mean cycles from one armed cycle start to the next (>= 1)
+  std::vector<double> event_prob;     // our pixel's P(event in code i) per physical cycle, i < codes
+  std::vector<double> armed_prob;     // P(TDC group armed at the start of phase bin i) per physical cycle
+  std::vector<double> hazard;         // q_i = 1 - exp(-s r_i): group detection probability when armed
+  double share = 1;                   // s
+  double cycles_per_live_cycle = 1;   // mean cycles from one armed cycle start to the next (>= 1)
   double group_events_per_cycle = 0;  // recorded TDC events per physical cycle (all sharing columns)
   double our_events_per_cycle = 0;    // of which ours
-  int iterations = 0;              // power iterations of the arming-phase chain
+  int iterations = 0;                 // power iterations of the arming-phase chain
   bool converged = false;
 };
 

@@ -14,11 +14,12 @@ SpadModel::SpadModel(const TofSpadConfig& cfg)
       share_(tdc_share(cfg.tdc.columns_per_tdc, cfg.tdc.neighbour_rate_fraction)) {}
 
 std::vector<std::pair<std::string, std::string>> SpadModel::reasons() {
-  return {{"detectable", "range can be derived: enough signal counts, k sigma above the background in the window"},
-          {"too_few_signal_counts", "fewer expected signal counts in the peak window than evaluation.min_signal_counts"},
-          {"background_dominates", "window signal counts below k sqrt(background counts) (evaluation.detection_sigma)"},
-          {"pile_up_saturated", "the TDC is stopped before the echo in nearly every cycle (evaluation.min_armed_fraction)"},
-          {"out_of_tdc_range", "the echo falls outside the TDC's codes"}};
+  return {
+      {"detectable", "range can be derived: enough signal counts, k sigma above the background in the window"},
+      {"too_few_signal_counts", "fewer expected signal counts in the peak window than evaluation.min_signal_counts"},
+      {"background_dominates", "window signal counts below k sqrt(background counts) (evaluation.detection_sigma)"},
+      {"pile_up_saturated", "the TDC is stopped before the echo in nearly every cycle (evaluation.min_armed_fraction)"},
+      {"out_of_tdc_range", "the echo falls outside the TDC's codes"}};
 }
 
 EstimatorConfig SpadModel::estimator() const {
@@ -80,7 +81,8 @@ PointResult SpadModel::evaluate(double signal_Hz, double background_Hz, double d
   for (int i = w.lo; i <= w.hi; ++i) {
     const auto ui = static_cast<size_t>(i);
     window_events += cycles_ * h.event_prob[ui];
-    window_background += cycles_ * h.armed_prob[ui] * -std::expm1(-s * a.live_fraction * a.uniform_rate_Hz * bins_.width_s(i)) / s;
+    window_background +=
+        cycles_ * h.armed_prob[ui] * -std::expm1(-s * a.live_fraction * a.uniform_rate_Hz * bins_.width_s(i)) / s;
   }
   p.signal_counts = std::max(0.0, window_events - window_background);
   p.background_counts = window_background;

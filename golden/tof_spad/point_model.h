@@ -14,16 +14,16 @@
 namespace rangesim::golden::spad {
 
 struct PointResult {
-  std::string detect;              // "detectable" or a reason id (SpadModel::reasons())
-  double bias_m = 0;               // E[L_hat] - L (TDC nonlinearity, truncation, pile-up, ratio bias)
-  double std_m = 0;                // sqrt(Var[L_hat])
-  double accuracy_m = 0;           // sqrt(bias^2 + std^2)
-  double signal_counts = 0;        // expected signal events of our pixel in the peak window
-  double background_counts = 0;    // expected background + dark events in the peak window
-  double detections_per_cycle = 0; // our pixel's recorded TDC events per laser cycle
-  double armed_at_echo = 0;        // fraction of cycles with the TDC still armed at the window start
-  double background_per_bin = 0;   // expected background events per bin at the echo (Thompson's b)
-  double cycles = 0;               // laser cycles in the histogram
+  std::string detect;               // "detectable" or a reason id (SpadModel::reasons())
+  double bias_m = 0;                // E[L_hat] - L (TDC nonlinearity, truncation, pile-up, ratio bias)
+  double std_m = 0;                 // sqrt(Var[L_hat])
+  double accuracy_m = 0;            // sqrt(bias^2 + std^2)
+  double signal_counts = 0;         // expected signal events of our pixel in the peak window
+  double background_counts = 0;     // expected background + dark events in the peak window
+  double detections_per_cycle = 0;  // our pixel's recorded TDC events per laser cycle
+  double armed_at_echo = 0;         // fraction of cycles with the TDC still armed at the window start
+  double background_per_bin = 0;    // expected background events per bin at the echo (Thompson's b)
+  double cycles = 0;                // laser cycles in the histogram
   EstimateMoments moments;
   bool chain_converged = true;
 };

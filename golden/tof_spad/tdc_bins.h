@@ -10,10 +10,10 @@
 namespace rangesim::golden::spad {
 
 struct TdcBins {
-  double lsb_s = 0;     // nominal bin width
-  double period_s = 0;  // laser period: the TDC restarts at every pulse
-  int phase_bins = 0;   // Np: LSB steps covering one period (the last one may be partial)
-  int codes = 0;        // Nc <= Np: codes that can hold an event (later hits overflow: no event)
+  double lsb_s = 0;             // nominal bin width
+  double period_s = 0;          // laser period: the TDC restarts at every pulse
+  int phase_bins = 0;           // Np: LSB steps covering one period (the last one may be partial)
+  int codes = 0;                // Nc <= Np: codes that can hold an event (later hits overflow: no event)
   std::vector<double> edges_s;  // Np + 1 actual edges, edges_s[0] = 0 (START), edges_s[Np] = period
 
   // Time the estimator assigns to code i (it does not know the INL/DNL of its TDC).

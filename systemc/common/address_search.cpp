@@ -2,8 +2,7 @@
 
 namespace rangesim::systemc {
 
-AddressSearch::AddressSearch(sc_core::sc_module_name name, const AddressSearchConfig& config,
-                             int search_cycles)
+AddressSearch::AddressSearch(sc_core::sc_module_name name, const AddressSearchConfig& config, int search_cycles)
     : sc_core::sc_module(name), kernel_(config, search_cycles) {
   SC_METHOD(on_clock);
   sensitive << clk_i.pos();
@@ -21,12 +20,10 @@ void AddressSearch::on_clock() {
   const bool rst = rst_i.read();
   const bool start = start_i.read();
   // Wrong row width is a testbench error, reported (and counted) instead of asserted.
-  if (!rst && start && kernel_.idle() &&
-      act_i.read().columns() != kernel_.config().columns) {
-    SC_REPORT_ERROR("rangesim/address_search",
-                    ("act_i has " + std::to_string(act_i.read().columns()) +
-                     " columns, expected " + std::to_string(kernel_.config().columns))
-                        .c_str());
+  if (!rst && start && kernel_.idle() && act_i.read().columns() != kernel_.config().columns) {
+    SC_REPORT_ERROR("rangesim/address_search", ("act_i has " + std::to_string(act_i.read().columns()) +
+                                                " columns, expected " + std::to_string(kernel_.config().columns))
+                                                   .c_str());
     return;
   }
   kernel_.tick(rst, start, act_i.read());
@@ -42,7 +39,6 @@ void AddressSearch::write_pins() {
   done_o.write(p.done);
 }
 
-void sc_trace(sc_core::sc_trace_file* /*tf*/, const ActivationRow& /*row*/,
-              const std::string& /*name*/) {}
+void sc_trace(sc_core::sc_trace_file* /*tf*/, const ActivationRow& /*row*/, const std::string& /*name*/) {}
 
 }  // namespace rangesim::systemc

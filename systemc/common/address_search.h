@@ -13,15 +13,15 @@ namespace rangesim::systemc {
 
 class AddressSearch : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> clk_i{"clk_i"};                    // rising edge active
-  sc_core::sc_in<bool> rst_i{"rst_i"};                    // synchronous, active high
-  sc_core::sc_in<bool> start_i{"start_i"};                // one-cycle strobe (latch cycle)
-  sc_core::sc_in<ActivationRow> act_i{"act_i"};           // latched when start_i is seen
-  sc_core::sc_out<bool> busy_o{"busy_o"};                 // operation in progress
-  sc_core::sc_out<bool> found_o{"found_o"};               // an activated column exists
-  sc_core::sc_out<bool> addr_valid_o{"addr_valid_o"};     // addr_bit_o carries an address bit
-  sc_core::sc_out<bool> addr_bit_o{"addr_bit_o"};         // left, then right, MSB first
-  sc_core::sc_out<bool> done_o{"done_o"};                 // last cycle of the operation
+  sc_core::sc_in<bool> clk_i{"clk_i"};                 // rising edge active
+  sc_core::sc_in<bool> rst_i{"rst_i"};                 // synchronous, active high
+  sc_core::sc_in<bool> start_i{"start_i"};             // one-cycle strobe (latch cycle)
+  sc_core::sc_in<ActivationRow> act_i{"act_i"};        // latched when start_i is seen
+  sc_core::sc_out<bool> busy_o{"busy_o"};              // operation in progress
+  sc_core::sc_out<bool> found_o{"found_o"};            // an activated column exists
+  sc_core::sc_out<bool> addr_valid_o{"addr_valid_o"};  // addr_bit_o carries an address bit
+  sc_core::sc_out<bool> addr_bit_o{"addr_bit_o"};      // left, then right, MSB first
+  sc_core::sc_out<bool> done_o{"done_o"};              // last cycle of the operation
 
   SC_HAS_PROCESS(AddressSearch);
   // Throws std::invalid_argument (from the kernel) if the parameters are not buildable.
@@ -31,8 +31,8 @@ class AddressSearch : public sc_core::sc_module {
   const AddressSearchKernel& kernel() const { return kernel_; }
 
  private:
-  void on_clock();     // clocked SC_METHOD: one kernel tick per rising edge
-  void write_pins();   // kernel outputs -> ports
+  void on_clock();    // clocked SC_METHOD: one kernel tick per rising edge
+  void write_pins();  // kernel outputs -> ports
 
   AddressSearchKernel kernel_;  // all state and behaviour
 };

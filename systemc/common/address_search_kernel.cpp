@@ -42,9 +42,7 @@ std::string ActivationRow::to_string() const {
   return s;
 }
 
-std::ostream& operator<<(std::ostream& os, const ActivationRow& row) {
-  return os << row.to_string();
-}
+std::ostream& operator<<(std::ostream& os, const ActivationRow& row) { return os << row.to_string(); }
 
 // ---- AddressSearchKernel ----
 
@@ -63,9 +61,8 @@ AddressSearchKernel::AddressSearchKernel(const AddressSearchConfig& config, int 
   require((std::int64_t{1} << config.address_bits) >= config.columns,
           "address_bits = " + std::to_string(config.address_bits) + " cannot address " +
               std::to_string(config.columns) + " columns");
-  require(config.addresses_per_sampling == 2,
-          "addresses_per_sampling must be 2 (left and right edge), got " +
-              std::to_string(config.addresses_per_sampling));
+  require(config.addresses_per_sampling == 2, "addresses_per_sampling must be 2 (left and right edge), got " +
+                                                  std::to_string(config.addresses_per_sampling));
   require(search_cycles >= 1, "search_cycles must be >= 1, got " + std::to_string(search_cycles));
   act_ = ActivationRow(config.columns);
 }

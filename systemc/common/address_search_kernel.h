@@ -35,13 +35,11 @@ class ActivationRow {
   const std::vector<std::uint64_t>& words() const { return words_; }
   std::string to_string() const;  // Verilog order: column columns-1 first
 
-  bool operator==(const ActivationRow& other) const {
-    return columns_ == other.columns_ && words_ == other.words_;
-  }
+  bool operator==(const ActivationRow& other) const { return columns_ == other.columns_ && words_ == other.words_; }
   bool operator!=(const ActivationRow& other) const { return !(*this == other); }
 
  private:
-  int columns_ = 0;                  // row width in pixels
+  int columns_ = 0;                   // row width in pixels
   std::vector<std::uint64_t> words_;  // packed bits; bits beyond columns_ are always 0
 };
 
@@ -55,8 +53,7 @@ struct AddressSearchPins {
   bool addr_bit = false;    // addr_bit_o
   bool done = false;        // done_o
   bool operator==(const AddressSearchPins& o) const {
-    return busy == o.busy && found == o.found && addr_valid == o.addr_valid &&
-           addr_bit == o.addr_bit && done == o.done;
+    return busy == o.busy && found == o.found && addr_valid == o.addr_valid && addr_bit == o.addr_bit && done == o.done;
   }
 };
 

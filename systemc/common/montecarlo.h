@@ -38,8 +38,8 @@ class McPointRunner {
 class McModel {
  public:
   virtual ~McModel() = default;
-  virtual const char* unit() const = 0;           // "px" (light-section) or "m" (time of flight)
-  virtual double metres_per_unit() const = 0;     // triangulation at optics.distance_m, or 1
+  virtual const char* unit() const = 0;        // "px" (light-section) or "m" (time of flight)
+  virtual double metres_per_unit() const = 0;  // triangulation at optics.distance_m, or 1
   virtual std::unique_ptr<McPointRunner> point(double signal, double background, std::uint64_t point_key) const = 0;
 };
 

@@ -73,7 +73,7 @@ class PoissonSampler {
   static constexpr double kInversionBelow = 10;  // PTRS needs mu >= 10
   static constexpr double kPi = 3.14159265358979323846;
   double mu_ = 0;
-  double exp_neg_mu_ = 1;                                  // inversion
+  double exp_neg_mu_ = 1;                           // inversion
   double b_ = 0, a_ = 0, inv_alpha_ = 0, v_r_ = 0;  // PTRS constants (log mu only in the rare exact test)
 };
 

@@ -1,5 +1,6 @@
 #pragma once
-// Counter-based random streams for the clock-level models (keyed by seed, operating point and trial, so a result does not depend on thread count or order).
+// Counter-based random streams for the clock-level models (keyed by seed, operating point and trial, so a result does
+// not depend on thread count or order).
 //
 // Every random draw of a pixel in a frame access comes from its own generator, seeded from a hash
 // of the key (seed, frame, row, column). The key, not the order in which pixels or rows are

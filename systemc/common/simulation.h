@@ -52,7 +52,8 @@ struct RangeErrorStats {
   double sum_sq_px = 0;  // image-position error, light-section sensors
   void add(double error_m, double error_px = 0) {
     ++detected, sum_sq_m += error_m * error_m, sum_m += error_m, sum_sq_px += error_px * error_px;
-    max_abs_m = error_m < 0 ? (-error_m > max_abs_m ? -error_m : max_abs_m) : (error_m > max_abs_m ? error_m : max_abs_m);
+    max_abs_m =
+        error_m < 0 ? (-error_m > max_abs_m ? -error_m : max_abs_m) : (error_m > max_abs_m ? error_m : max_abs_m);
   }
   double rms_m() const;
   double rms_px() const;
@@ -64,8 +65,8 @@ struct RangeErrorStats {
 // The terminal summary's figures (the same layout for every sensor): measured vs golden timing,
 // the points and the range error, and the sensor's own lines.
 struct SimulationReport {
-  std::string headline;   // first line, e.g. "tof-spad on scene 'x' (plane): 3 frames, SystemC, noise seed 1"
-  nlohmann::json phases;  // array of {name, cycles, golden_cycles, time_s}
+  std::string headline;     // first line, e.g. "tof-spad on scene 'x' (plane): 3 frames, SystemC, noise seed 1"
+  nlohmann::json phases;    // array of {name, cycles, golden_cycles, time_s}
   std::string frame_label;  // "frame" or "frame access"
   long long frame_cycles = 0, golden_frame_cycles = 0;
   double frame_time_s = 0, golden_frame_time_s = 0;
@@ -96,8 +97,8 @@ struct RangeMap {
   std::vector<std::vector<double>> range_m;
   // A pixel's validity is carried by its value: a finite range (CSV and plot leave the others empty).
   bool valid(std::size_t row, std::size_t column) const { return std::isfinite(range_m[row][column]); }
-  std::vector<std::string> column_names;  // range_map.csv's columns after "row"
-  int first_row = 0;                      // range_map.csv's label of range_m[0]
+  std::vector<std::string> column_names;        // range_map.csv's columns after "row"
+  int first_row = 0;                            // range_map.csv's label of range_m[0]
   std::string title, x_label, y_label = "row";  // range_map.png
 };
 

@@ -14,10 +14,10 @@ class CentreProcessor : public sc_core::sc_module {
   sc_core::sc_in<bool> clear_i{"clear_i"};            // sequencer reset phase (clears)
   sc_core::sc_in<bool> addr_valid_i{"addr_valid_i"};  // from the row's address search
   sc_core::sc_in<bool> addr_bit_i{"addr_bit_i"};
-  sc_core::sc_out<bool> valid_o{"valid_o"};           // some sampling detected
-  sc_core::sc_out<unsigned> centre_o{"centre_o"};     // Q(address_bits).8 centre
-  sc_core::sc_out<unsigned> sum_o{"sum_o"};           // sum of (left + right)
-  sc_core::sc_out<unsigned> count_o{"count_o"};       // detecting samplings
+  sc_core::sc_out<bool> valid_o{"valid_o"};        // some sampling detected
+  sc_core::sc_out<unsigned> centre_o{"centre_o"};  // Q(address_bits).8 centre
+  sc_core::sc_out<unsigned> sum_o{"sum_o"};        // sum of (left + right)
+  sc_core::sc_out<unsigned> count_o{"count_o"};    // detecting samplings
 
   SC_HAS_PROCESS(CentreProcessor);
   CentreProcessor(sc_core::sc_module_name name, int address_bits);

@@ -47,11 +47,11 @@ class CentreProcessorKernel {
   int address_bits() const { return address_bits_; }
 
  private:
-  int address_bits_;        // B
-  std::uint32_t sum_ = 0;   // accumulated left + right
-  int count_ = 0;           // detecting samplings
-  std::uint64_t shift_ = 0; // bits of the current stream
-  int bits_ = 0;            // how many of them
+  int address_bits_;         // B
+  std::uint32_t sum_ = 0;    // accumulated left + right
+  int count_ = 0;            // detecting samplings
+  std::uint64_t shift_ = 0;  // bits of the current stream
+  int bits_ = 0;             // how many of them
 };
 
 }  // namespace rangesim::systemc

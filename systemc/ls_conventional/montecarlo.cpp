@@ -21,10 +21,9 @@ class Runner : public McPointRunner {
         spot_(spot),
         signal_V_(signal_V),
         background_V_(background_V),
-        kernel_(cfg_, options(key),
-                [this](std::uint64_t frame, systemc::FrameStimulus& s) {
-                  s.rows.assign(1, systemc::RowIllumination{signal_V_, background_V_, x0(frame)});
-                }) {
+        kernel_(cfg_, options(key), [this](std::uint64_t frame, systemc::FrameStimulus& s) {
+          s.rows.assign(1, systemc::RowIllumination{signal_V_, background_V_, x0(frame)});
+        }) {
     kernel_.reset();
   }
 
@@ -76,9 +75,10 @@ class Runner : public McPointRunner {
 LsConventionalMc::LsConventionalMc(LsConventionalConfig cfg, SpotPlacement spot) : cfg_(std::move(cfg)), spot_(spot) {
   // The clock-level pixel array has the in-pixel comparator only (systemc/pixel_array_kernel.h).
   if (cfg_.comparator.adc_bits != 1)
-    throw UserError(fmt::format("--adc-bits {} (comparator.adc_bits): --trials runs the clock-level model, which has "
-                                "the 1-bit in-pixel comparator only; allowed: 1",
-                                cfg_.comparator.adc_bits));
+    throw UserError(
+        fmt::format("--adc-bits {} (comparator.adc_bits): --trials runs the clock-level model, which has "
+                    "the 1-bit in-pixel comparator only; allowed: 1",
+                    cfg_.comparator.adc_bits));
 }
 
 double LsConventionalMc::metres_per_unit() const {
@@ -89,6 +89,8 @@ std::unique_ptr<McPointRunner> LsConventionalMc::point(double signal_V, double b
   return std::make_unique<Runner>(cfg_, signal_V, background_V, key, spot_);
 }
 
-std::unique_ptr<McModel> make_ls_conventional_mc(const ParamSet& params) { return std::make_unique<LsConventionalMc>(ls_conventional_from_params(params)); }
+std::unique_ptr<McModel> make_ls_conventional_mc(const ParamSet& params) {
+  return std::make_unique<LsConventionalMc>(ls_conventional_from_params(params));
+}
 
 }  // namespace rangesim::mc

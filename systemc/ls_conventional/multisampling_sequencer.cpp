@@ -2,7 +2,8 @@
 
 namespace rangesim::systemc {
 
-MultisamplingSequencer::MultisamplingSequencer(sc_core::sc_module_name name, const FrameTimingConfig& timing, int samplings)
+MultisamplingSequencer::MultisamplingSequencer(sc_core::sc_module_name name, const FrameTimingConfig& timing,
+                                               int samplings)
     : sc_core::sc_module(name), kernel_(timing, samplings) {
   SC_METHOD(on_clock);
   sensitive << clk_i.pos();

@@ -10,15 +10,15 @@ namespace rangesim::systemc {
 
 class MultisamplingSequencer : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> clk_i{"clk_i"};                  // rising edge active
-  sc_core::sc_in<bool> rst_i{"rst_i"};                  // synchronous, active high
-  sc_core::sc_out<bool> pix_reset_o{"pix_reset_o"};     // reset phase: pixels reset, centres cleared
-  sc_core::sc_out<bool> latch_o{"latch_o"};             // comparator latch phase
+  sc_core::sc_in<bool> clk_i{"clk_i"};                     // rising edge active
+  sc_core::sc_in<bool> rst_i{"rst_i"};                     // synchronous, active high
+  sc_core::sc_out<bool> pix_reset_o{"pix_reset_o"};        // reset phase: pixels reset, centres cleared
+  sc_core::sc_out<bool> latch_o{"latch_o"};                // comparator latch phase
   sc_core::sc_out<bool> search_start_o{"search_start_o"};  // start strobe of the row searches
-  sc_core::sc_out<bool> frame_done_o{"frame_done_o"};   // last cycle of a frame access
-  sc_core::sc_out<unsigned> phase_o{"phase_o"};         // ReadoutPhase as a number (for waveforms)
-  sc_core::sc_out<unsigned> sampling_o{"sampling_o"};   // k during sampling k, else 0
-  sc_core::sc_out<sc_dt::uint64> frame_o{"frame_o"};    // frame-access counter
+  sc_core::sc_out<bool> frame_done_o{"frame_done_o"};      // last cycle of a frame access
+  sc_core::sc_out<unsigned> phase_o{"phase_o"};            // ReadoutPhase as a number (for waveforms)
+  sc_core::sc_out<unsigned> sampling_o{"sampling_o"};      // k during sampling k, else 0
+  sc_core::sc_out<sc_dt::uint64> frame_o{"frame_o"};       // frame-access counter
 
   SC_HAS_PROCESS(MultisamplingSequencer);
   // Throws std::invalid_argument (from the kernel) for a schedule that cannot run.

@@ -55,9 +55,9 @@ class MultisamplingSequencerKernel {
   const MultisamplingSequencerPins& pins() const { return pins_; }  // of the current cycle (cached)
   MultisamplingSequencerPins pins_at(long long cycle) const;
 
-  long long cycle() const { return cycle_; }                 // cycles since reset release
+  long long cycle() const { return cycle_; }  // cycles since reset release
   long long cycle_in_frame() const { return cycle_ % frame_cycles_; }
-  long long frame_cycles() const { return frame_cycles_; }    // F
+  long long frame_cycles() const { return frame_cycles_; }  // F
   // First cycle after the current one at which any pin changes.
   long long next_event_cycle() const;
   // Jumps to `cycle` (>= cycle()) as if ticked (cycle - cycle()) times without reset.
@@ -67,13 +67,13 @@ class MultisamplingSequencerKernel {
   int samplings() const { return samplings_; }
 
  private:
-  FrameTimingConfig timing_;      // R, L, S, B, A, O
-  int samplings_;                 // N
-  long long period_ = 0;          // P = L + S + A B, one sampling
-  long long frame_cycles_ = 0;    // F
-  std::vector<long long> events_; // cycles within a frame at which pins change (sorted, ends with F)
-  long long cycle_ = 0;           // current cycle since reset release
-  MultisamplingSequencerPins pins_;     // pins_at(cycle_), recomputed only when the cycle moves
+  FrameTimingConfig timing_;         // R, L, S, B, A, O
+  int samplings_;                    // N
+  long long period_ = 0;             // P = L + S + A B, one sampling
+  long long frame_cycles_ = 0;       // F
+  std::vector<long long> events_;    // cycles within a frame at which pins change (sorted, ends with F)
+  long long cycle_ = 0;              // current cycle since reset release
+  MultisamplingSequencerPins pins_;  // pins_at(cycle_), recomputed only when the cycle moves
 };
 
 }  // namespace rangesim::systemc

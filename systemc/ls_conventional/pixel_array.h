@@ -14,9 +14,9 @@ namespace rangesim::systemc {
 
 class PixelArray : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> pix_reset_i{"pix_reset_i"};        // reset phase of a frame access
-  sc_core::sc_in<unsigned> sampling_i{"sampling_i"};      // k >= 1: latch the comparators at t_k
-  sc_core::sc_in<sc_dt::uint64> frame_i{"frame_i"};       // frame access (stimulus and noise key)
+  sc_core::sc_in<bool> pix_reset_i{"pix_reset_i"};                    // reset phase of a frame access
+  sc_core::sc_in<unsigned> sampling_i{"sampling_i"};                  // k >= 1: latch the comparators at t_k
+  sc_core::sc_in<sc_dt::uint64> frame_i{"frame_i"};                   // frame access (stimulus and noise key)
   sc_core::sc_vector<sc_core::sc_out<ActivationRow>> act_o{"act_o"};  // latched activations per row
 
   SC_HAS_PROCESS(PixelArray);

@@ -17,12 +17,13 @@ PixelArrayKernel::PixelArrayKernel(const LsConventionalConfig& config, const Pix
                                    StimulusSource source)
     : config_(config), options_(options), source_(std::move(source)) {
   if (config.comparator.adc_bits != 1)
-    throw std::invalid_argument("PixelArrayKernel: comparator.adc_bits must be 1 (the in-pixel comparator of "
-                                "ls-conventional), got " + std::to_string(config.comparator.adc_bits));
+    throw std::invalid_argument(
+        "PixelArrayKernel: comparator.adc_bits must be 1 (the in-pixel comparator of "
+        "ls-conventional), got " +
+        std::to_string(config.comparator.adc_bits));
   if (config.pixel.rows < 1 || config.pixel.columns < 1)
     throw std::invalid_argument("PixelArrayKernel: rows and columns must be >= 1");
-  if (config.multisampling.samplings < 1)
-    throw std::invalid_argument("PixelArrayKernel: samplings must be >= 1");
+  if (config.multisampling.samplings < 1) throw std::invalid_argument("PixelArrayKernel: samplings must be >= 1");
   if (!source_) throw std::invalid_argument("PixelArrayKernel: no stimulus source");
   rows_.resize(static_cast<std::size_t>(config.pixel.rows));
   act_.assign(static_cast<std::size_t>(config.pixel.rows), ActivationRow(config.pixel.columns));
@@ -65,7 +66,7 @@ double PixelArrayKernel::compute_cut_swing_V(double threshold_V) const {
   if (!options_.noise.any()) return thr_V * (1 - 1e-9);
   const double sigma_V = std::hypot(options_.noise.reset_ktc ? ktc_V_ : 0.0, options_.noise.read ? read_V_ : 0.0);
   if (!options_.noise.shot) return std::max(0.0, thr_V - 9.5 * sigma_V);  // Phi(-9.5) = 1e-21
-  const double room_e = (thr_V - 8.3 * sigma_V) * electrons_per_V_;    // mu + a(mu) must stay below
+  const double room_e = (thr_V - 8.3 * sigma_V) * electrons_per_V_;       // mu + a(mu) must stay below
   auto reach = [](double mu) { return mu + 0.5 * (25 + std::sqrt(625 + 300 * mu)); };
   if (!(reach(0) < room_e)) return 0;
   double lo = 0, hi = room_e;  // reach(lo) < room_e <= reach(hi)
@@ -115,14 +116,14 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
       p.profile = golden::spot_profile(config_.spot, i - in.centre_px);
       p.electrons = 0;
       if (options_.noise.any()) {
-        p.rng = pixel_stream(pixel_stream_key(options_.seed, frame, static_cast<std::uint32_t>(r),
-                                              static_cast<std::uint32_t>(i)));
+        p.rng = pixel_stream(
+            pixel_stream_key(options_.seed, frame, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i)));
         double ktc = 0, read = 0;
         standard_normal_pair(p.rng, ktc, read);  // always drawn
         p.offset_V = options_.noise.reset_ktc ? ktc * ktc_V_ : 0.0;
         p.read_V = options_.noise.read ? read * read_V_ : 0.0;
-        p.mean_step_e = golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, 1.0) *
-                        electrons_per_V_ / N;
+        p.mean_step_e =
+            golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, 1.0) * electrons_per_V_ / N;
         // Every sampling interval has the same mean: one sampler per pixel and frame.
         p.shot = PoissonSampler(p.mean_step_e);
       } else {
@@ -150,7 +151,8 @@ void PixelArrayKernel::sample(int k) {
       bool fires;
       if (!noisy) {
         // The golden expression (golden::direct_estimate), clamped at saturation.
-        const double swing = std::min(golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, t_over_T), vsat);
+        const double swing =
+            std::min(golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, t_over_T), vsat);
         fires = A * swing >= row.threshold_V;
       } else {
         double v;

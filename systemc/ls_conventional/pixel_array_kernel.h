@@ -5,8 +5,8 @@
 // and the activation bits of every row packed 64 per word (ActivationRow) for the row's
 // address search.
 //
-// Noise (shot, kTC at reset, read, dark; docs/simulate.md), sampled here from counter-based streams keyed by (seed, frame, row, column)
-// (systemc/random_stream.h):
+// Noise (shot, kTC at reset, read, dark; docs/simulate.md), sampled here from counter-based streams keyed by (seed,
+// frame, row, column) (systemc/random_stream.h):
 //   - shot noise: the electrons integrated up to t_k are a Poisson process of mean
 //     mu(t_k) = C v(t_k) / q (signal + background + dark current), drawn as increments per sampling;
 //   - kTC reset noise sqrt(kT/C): drawn once at the pixel reset, frozen for the frame access;
@@ -44,16 +44,15 @@ struct PixelNoiseConfig {
 };
 
 struct PixelArrayOptions {
-  PixelNoiseConfig noise;   // which noise sources are sampled
-  std::uint64_t seed = 1;   // key of the random streams
-  bool sparse = true;       // simulate only the pixels that can activate (bounded skip)
+  PixelNoiseConfig noise;  // which noise sources are sampled
+  std::uint64_t seed = 1;  // key of the random streams
+  bool sparse = true;      // simulate only the pixels that can activate (bounded skip)
 };
 
 class PixelArrayKernel {
  public:
   // Throws std::invalid_argument for a configuration it cannot simulate (adc_bits != 1, sizes).
-  PixelArrayKernel(const LsConventionalConfig& config, const PixelArrayOptions& options,
-                   StimulusSource source);
+  PixelArrayKernel(const LsConventionalConfig& config, const PixelArrayOptions& options, StimulusSource source);
 
   // The block's control inputs as the readout sequencer drives them (combinational in the
   // sc_module: re-evaluated whenever they change). pix_reset with a new frame number resets the
@@ -80,13 +79,13 @@ class PixelArrayKernel {
 
  private:
   struct Pixel {
-    pcg32 rng;              // this pixel's stream in this frame access
-    double electrons = 0;   // integrated electrons up to the last sampling (shot noise on)
-    double mean_step_e = 0; // mean electrons per sampling interval, mu(T) / N
-    PoissonSampler shot;    // Poisson sampler of that mean
-    double offset_V = 0;    // kTC reset noise on the photodiode
-    double read_V = 0;      // read noise at the comparator input (input-referred)
-    double profile = 0;     // g(i - x0)
+    pcg32 rng;               // this pixel's stream in this frame access
+    double electrons = 0;    // integrated electrons up to the last sampling (shot noise on)
+    double mean_step_e = 0;  // mean electrons per sampling interval, mu(T) / N
+    PoissonSampler shot;     // Poisson sampler of that mean
+    double offset_V = 0;     // kTC reset noise on the photodiode
+    double read_V = 0;       // read noise at the comparator input (input-referred)
+    double profile = 0;      // g(i - x0)
   };
   struct RowState {
     int first = 0, last = -1;   // simulated window [first, last]
@@ -97,19 +96,19 @@ class PixelArrayKernel {
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
   double compute_cut_swing_V(double threshold_V) const;
 
-  LsConventionalConfig config_;      // sensor
-  PixelArrayOptions options_;        // noise, seed, sparse
-  StimulusSource source_;            // optics: stimulus per frame access
-  FrameStimulus stimulus_;           // the current frame access
-  std::vector<RowState> rows_;       // per row
-  std::vector<ActivationRow> act_;   // latched activations per row
-  std::uint64_t frame_ = 0;          // current frame access
-  bool have_frame_ = false;          // reset_frame ran at least once
-  int sampling_ = 0;                 // last sampling latched (0 after reset)
-  double dark_V_ = 0;                // V_dark = I_dark T / C
-  double electrons_per_V_ = 0;       // C / q
-  double ktc_V_ = 0, read_V_ = 0;    // noise rms
-  long long pixels_simulated_ = 0;   // statistics
+  LsConventionalConfig config_;                    // sensor
+  PixelArrayOptions options_;                      // noise, seed, sparse
+  StimulusSource source_;                          // optics: stimulus per frame access
+  FrameStimulus stimulus_;                         // the current frame access
+  std::vector<RowState> rows_;                     // per row
+  std::vector<ActivationRow> act_;                 // latched activations per row
+  std::uint64_t frame_ = 0;                        // current frame access
+  bool have_frame_ = false;                        // reset_frame ran at least once
+  int sampling_ = 0;                               // last sampling latched (0 after reset)
+  double dark_V_ = 0;                              // V_dark = I_dark T / C
+  double electrons_per_V_ = 0;                     // C / q
+  double ktc_V_ = 0, read_V_ = 0;                  // noise rms
+  long long pixels_simulated_ = 0;                 // statistics
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 

@@ -45,11 +45,11 @@ void RowReadoutArray::on_clock() {
     const AddressSearchPins in = so;
     const bool latch = !rst && start && s.idle();
     const ActivationRow& act = latch ? act_i[r].read() : kNone;  // read only where the search takes it
-    if (latch && act.columns() != s.config().columns)  // a testbench error, reported as in AddressSearch
-      SC_REPORT_ERROR("rangesim/row_readout_array", ("row " + std::to_string(r) + ": act_i has " +
-                                                     std::to_string(act.columns()) + " columns, expected " +
-                                                     std::to_string(s.config().columns))
-                                                        .c_str());
+    if (latch && act.columns() != s.config().columns)            // a testbench error, reported as in AddressSearch
+      SC_REPORT_ERROR("rangesim/row_readout_array",
+                      ("row " + std::to_string(r) + ": act_i has " + std::to_string(act.columns()) +
+                       " columns, expected " + std::to_string(s.config().columns))
+                          .c_str());
     else
       s.tick(rst, start, act);
     const AddressSearchPins p = s.pins();

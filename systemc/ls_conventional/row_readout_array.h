@@ -32,12 +32,12 @@ void sc_trace(sc_core::sc_trace_file* tf, const RowArrayPins& pins, const std::s
 
 class RowReadoutArray : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> clk_i{"clk_i"};      // rising edge active
-  sc_core::sc_in<bool> rst_i{"rst_i"};      // synchronous, active high
-  sc_core::sc_in<bool> start_i{"start_i"};  // search start strobe (sequencer)
-  sc_core::sc_in<bool> clear_i{"clear_i"};  // centre processors clear (sequencer reset phase)
+  sc_core::sc_in<bool> clk_i{"clk_i"};                               // rising edge active
+  sc_core::sc_in<bool> rst_i{"rst_i"};                               // synchronous, active high
+  sc_core::sc_in<bool> start_i{"start_i"};                           // search start strobe (sequencer)
+  sc_core::sc_in<bool> clear_i{"clear_i"};                           // centre processors clear (sequencer reset phase)
   sc_core::sc_vector<sc_core::sc_in<ActivationRow>> act_i{"act_i"};  // per row, read at start_i
-  sc_core::sc_out<RowArrayPins> pins_o{"pins_o"};                     // every row's pins
+  sc_core::sc_out<RowArrayPins> pins_o{"pins_o"};                    // every row's pins
 
   SC_HAS_PROCESS(RowReadoutArray);
   // Throws std::invalid_argument (from the kernels) if the parameters are not buildable.

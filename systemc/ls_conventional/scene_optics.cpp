@@ -20,7 +20,8 @@ SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene)
   // The camera's radiometry: the preset's, unless the scene's [camera] overrides it.
   const double f_number = scene.has("camera.f_number") ? scene.f_number : config.optics.f_number;
   const double fill_factor = scene.has("camera.fill_factor") ? scene.fill_factor : px.fill_factor;
-  const double responsivity = scene.has("camera.responsivity_A_per_W") ? scene.responsivity_A_per_W : px.responsivity_A_per_W;
+  const double responsivity =
+      scene.has("camera.responsivity_A_per_W") ? scene.responsivity_A_per_W : px.responsivity_A_per_W;
   const double lens_area = kPi * std::pow(f / (2 * f_number), 2);
   const double sigma_px = golden::spot_sigma_px(config.spot);
   // rho (P / rows) A_lens / pi -> current at the spot peak -> swing; divided by z^2 later.
@@ -56,9 +57,7 @@ RowTruth SceneOptics::truth(int b, int row) const {
   const double y_e = (row - principal_row_px()) * p;
   double z = 0;
   switch (scene_.shape) {
-    case TargetShape::Plane:
-      z = scene_.distance_m;
-      break;
+    case TargetShape::Plane: z = scene_.distance_m; break;
     case TargetShape::Tilted: {
       // z = l0 + x tx + y ty with x = d/2 - z cot, y = z y_e / f.
       const double tx = std::tan(scene_.tilt_x_rad), ty = std::tan(scene_.tilt_y_rad);
@@ -69,9 +68,7 @@ RowTruth SceneOptics::truth(int b, int row) const {
     case TargetShape::Step:
       z = scene_.near_distance_m * y_e / f > scene_.step_y_m ? scene_.near_distance_m : scene_.distance_m;
       break;
-    case TargetShape::DepthMap:
-      z = depth_map_z(b, row);
-      break;
+    case TargetShape::DepthMap: z = depth_map_z(b, row); break;
   }
   RowTruth t;
   t.background_V = background_V_;

@@ -36,12 +36,12 @@ namespace rangesim::scene {
 
 // What the beam of one position really does on one row.
 struct RowTruth {
-  bool hit = false;        // the beam meets the target in front of the sensor on this row
-  bool visible = false;    // ... and its stripe centre lies on the array, 0 <= centre_px <= columns - 1
-  double centre_px = 0;    // exact image column of the stripe centre
-  double range_m = 0;      // depth z of the lit point
-  double signal_V = 0;     // spot-peak swing at the end of integration
-  double background_V = 0; // background swing at the end of integration
+  bool hit = false;         // the beam meets the target in front of the sensor on this row
+  bool visible = false;     // ... and its stripe centre lies on the array, 0 <= centre_px <= columns - 1
+  double centre_px = 0;     // exact image column of the stripe centre
+  double range_m = 0;       // depth z of the lit point
+  double signal_V = 0;      // spot-peak swing at the end of integration
+  double background_V = 0;  // background swing at the end of integration
 };
 
 class SceneOptics {
@@ -55,7 +55,7 @@ class SceneOptics {
   int columns() const { return config_.pixel.columns; }
   // Beam position of a frame access: frames cycle through the positions.
   int beam_position(std::uint64_t frame) const { return static_cast<int>(frame % beam_positions()); }
-  double beam_angle_rad(int b) const;      // a_p in (0, pi)
+  double beam_angle_rad(int b) const;  // a_p in (0, pi)
   double principal_column_px() const { return 0.5 * (columns() - 1); }
   double principal_row_px() const { return 0.5 * (rows() - 1); }
 
@@ -71,8 +71,8 @@ class SceneOptics {
 
   LsConventionalConfig config_;
   Scene scene_;
-  double signal_per_inv_z2_V_ = 0;  // spot-peak swing times z^2 (V m^2) at reflectance rho
-  double background_V_ = 0;         // background swing
+  double signal_per_inv_z2_V_ = 0;    // spot-peak swing times z^2 (V m^2) at reflectance rho
+  double background_V_ = 0;           // background swing
   std::vector<double> depth_grid_m_;  // depth_map: the map resampled to the pixel grid, row-major
 };
 

@@ -132,7 +132,8 @@ SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const Sens
   SensorRunResult r;
   for (long long f = 0; f < run.frames; ++f) {
     const long long left = budget - k.cycle();
-    if (left <= 0) throw std::runtime_error("simulation cycle budget of " + std::to_string(budget) + " cycles exhausted");
+    if (left <= 0)
+      throw std::runtime_error("simulation cycle budget of " + std::to_string(budget) + " cycles exhausted");
     k.run_frames(1, left);
     if (run.progress) run.progress(f + 1);
   }
@@ -199,15 +200,16 @@ SensorRunResult run_sensor_systemc(const LsConventionalConfig& config, const Sen
   r.frames = bench.dut.results();
   r.cycles = bench.dut.cycles();
   r.ticks = r.cycles;
-  r.simulated_time_s = r.frames.empty() ? 0.0
-                                        : (sc_core::sc_time_stamp() - bench.dut.reset_release_time()).to_seconds();
+  r.simulated_time_s =
+      r.frames.empty() ? 0.0 : (sc_core::sc_time_stamp() - bench.dut.reset_release_time()).to_seconds();
   r.sc_errors = sc_core::sc_report_handler::get_count(sc_core::SC_ERROR) - sc_errors0;
   r.sc_warnings = sc_core::sc_report_handler::get_count(sc_core::SC_WARNING) - sc_warnings0;
   r.pixels_simulated = bench.dut.pixel_array().kernel().pixels_simulated();
   r.wall_time_s = seconds_since(t0);
   if (static_cast<long long>(r.frames.size()) < run.frames)
-    throw std::runtime_error("SystemC simulation: cycle budget of " + std::to_string(budget) + " cycles exhausted after " +
-                             std::to_string(r.frames.size()) + " of " + std::to_string(run.frames) + " frame accesses");
+    throw std::runtime_error("SystemC simulation: cycle budget of " + std::to_string(budget) +
+                             " cycles exhausted after " + std::to_string(r.frames.size()) + " of " +
+                             std::to_string(run.frames) + " frame accesses");
   return r;
 }
 

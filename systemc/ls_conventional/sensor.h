@@ -47,7 +47,7 @@ class LsConventionalSensor : public sc_core::sc_module {
   void trace(sc_core::sc_trace_file* tf, const std::vector<int>& rows) const;
 
   const std::vector<FrameResult>& results() const { return results_; }
-  long long cycles() const { return cycle_; }                        // since reset release
+  long long cycles() const { return cycle_; }                            // since reset release
   sc_core::sc_time reset_release_time() const { return release_time_; }  // time of the last reset edge
   const PixelArray& pixel_array() const { return pixels_; }
 
@@ -70,7 +70,7 @@ class LsConventionalSensor : public sc_core::sc_module {
   // Bookkeeping.
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;
-  long long cycle_ = 0;                 // cycles since reset release
+  long long cycle_ = 0;  // cycles since reset release
   long long stop_after_ = 0;
   std::function<void(long long)> on_frame_;
   sc_core::sc_time release_time_;
@@ -79,23 +79,23 @@ class LsConventionalSensor : public sc_core::sc_module {
 // ---- Running the sensor: bare kernel or SystemC, same options, same results ----
 
 struct SensorRunOptions {
-  long long frames = 1;                 // frame accesses to simulate
-  long long cycle_budget = 0;           // bound on simulated cycles (0: 2 frame accesses per frame + 16)
-  std::string vcd_base;                 // SystemC only: "" = no trace, else writes <vcd_base>.vcd
-  std::vector<int> traced_rows;         // rows whose search and centre pins are traced
+  long long frames = 1;                     // frame accesses to simulate
+  long long cycle_budget = 0;               // bound on simulated cycles (0: 2 frame accesses per frame + 16)
+  std::string vcd_base;                     // SystemC only: "" = no trace, else writes <vcd_base>.vcd
+  std::vector<int> traced_rows;             // rows whose search and centre pins are traced
   std::function<void(long long)> progress;  // after each frame access (frames done so far)
 };
 
 struct SensorRunResult {
-  std::vector<FrameResult> frames;      // one per frame access
-  long long cycles = 0;                 // simulated cycles since reset release
-  double simulated_time_s = 0;          // SystemC: sc_time_stamp() - reset release; kernel: cycles / clock
-  double wall_time_s = 0;               // host time of the run (elaboration included for SystemC)
-  long long sc_errors = 0;              // SC_ERROR reports (SystemC)
-  long long sc_warnings = 0;            // SC_WARNING reports (SystemC)
-  std::vector<std::string> errors;      // kernel protocol violations
-  long long pixels_simulated = 0;       // pixels simulated one by one (sparse windows)
-  long long ticks = 0;                  // clock edges evaluated (kernel; SystemC: = cycles)
+  std::vector<FrameResult> frames;  // one per frame access
+  long long cycles = 0;             // simulated cycles since reset release
+  double simulated_time_s = 0;      // SystemC: sc_time_stamp() - reset release; kernel: cycles / clock
+  double wall_time_s = 0;           // host time of the run (elaboration included for SystemC)
+  long long sc_errors = 0;          // SC_ERROR reports (SystemC)
+  long long sc_warnings = 0;        // SC_WARNING reports (SystemC)
+  std::vector<std::string> errors;  // kernel protocol violations
+  long long pixels_simulated = 0;   // pixels simulated one by one (sparse windows)
+  long long ticks = 0;              // clock edges evaluated (kernel; SystemC: = cycles)
 };
 
 // Bare kernel. Throws std::runtime_error if the cycle budget runs out.

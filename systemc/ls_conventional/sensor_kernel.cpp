@@ -105,8 +105,7 @@ void LsConventionalSensorKernel::step() {
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
     const std::size_t rows = search_.size();
-    for (std::size_t r = 0; r < rows; ++r)
-      centre_[r].accumulate(search_[r].evaluate(pixels_.row(static_cast<int>(r))));
+    for (std::size_t r = 0; r < rows; ++r) centre_[r].accumulate(search_[r].evaluate(pixels_.row(static_cast<int>(r))));
   }
   sequencer_.advance_to(next);
   settle();

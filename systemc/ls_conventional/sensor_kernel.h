@@ -34,10 +34,10 @@ struct SensorKernelOptions {
 
 // Outcome of one frame access.
 struct FrameResult {
-  std::uint64_t frame = 0;                   // frame-access counter (beam position index in a range map)
-  std::vector<CentreProcessorPins> rows;     // centre per row, as output in the frame's last cycle
-  long long end_cycle = 0;                   // cycles since reset release at the end of this frame
-  long long cycles = 0;                      // cycles of this frame access
+  std::uint64_t frame = 0;                               // frame-access counter (beam position index in a range map)
+  std::vector<CentreProcessorPins> rows;                 // centre per row, as output in the frame's last cycle
+  long long end_cycle = 0;                               // cycles since reset release at the end of this frame
+  long long cycles = 0;                                  // cycles of this frame access
   std::array<long long, kReadoutPhases> phase_cycles{};  // by ReadoutPhase
   int rows_detected() const;
   bool operator==(const FrameResult& o) const {
@@ -76,17 +76,17 @@ class LsConventionalSensorKernel {
   const LsConventionalConfig& config() const { return config_; }
 
  private:
-  void settle();                                       // pixel array follows the sequencer's pins
+  void settle();  // pixel array follows the sequencer's pins
   void account(const MultisamplingSequencerPins& p, long long cycles);
-  void finish_frame(const MultisamplingSequencerPins& p);   // in the frame_done cycle
+  void finish_frame(const MultisamplingSequencerPins& p);  // in the frame_done cycle
 
   LsConventionalConfig config_;
   SensorKernelOptions options_;
   MultisamplingSequencerKernel sequencer_;
   PixelArrayKernel pixels_;
-  std::vector<AddressSearchKernel> search_;     // per row
-  std::vector<CentreProcessorKernel> centre_;   // per row
-  std::vector<AddressSearchPins> search_pins_;  // scratch: pins of the ending cycle
+  std::vector<AddressSearchKernel> search_;               // per row
+  std::vector<CentreProcessorKernel> centre_;             // per row
+  std::vector<AddressSearchPins> search_pins_;            // scratch: pins of the ending cycle
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;
   std::vector<std::string> errors_;

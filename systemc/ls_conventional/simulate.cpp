@@ -28,8 +28,9 @@ struct Checked {
 Checked check(const SimulationRequest& req, const ParamSet& params) {
   Checked c{ls_conventional_from_params(params), 0};
   if (c.cfg.comparator.adc_bits != 1)
-    throw UserError(fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
-                                params.origin(), c.cfg.comparator.adc_bits));
+    throw UserError(
+        fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
+                    params.origin(), c.cfg.comparator.adc_bits));
   if (req.scene.empty()) throw UserError("--scene is required: a scene file, e.g. scenes/plane.toml");
   c.frames = req.frames ? *req.frames : c.cfg.timing.beam_positions;
   if (c.frames < 1 || c.frames > 1000000)
@@ -38,8 +39,9 @@ Checked check(const SimulationRequest& req, const ParamSet& params) {
   return c;
 }
 
-SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConfig& cfg, const scene::SceneOptics& optics,
-                          long long frames, const std::string& vcd_base, SimulationHost& host) {
+SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConfig& cfg,
+                          const scene::SceneOptics& optics, long long frames, const std::string& vcd_base,
+                          SimulationHost& host) {
   SensorKernelOptions kopt;
   kopt.event_skipping = !req.tick;
   kopt.pixel.seed = req.seed;
@@ -51,7 +53,8 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
   for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
   run.progress = host.progress("frame access", frames);
   const StimulusSource source = [&optics](std::uint64_t f, FrameStimulus& s) { optics.stimulus(f, s); };
-  SensorRunResult res = req.kernel_only ? run_sensor_kernel(cfg, kopt, source, run) : run_sensor_systemc(cfg, kopt, source, run);
+  SensorRunResult res =
+      req.kernel_only ? run_sensor_kernel(cfg, kopt, source, run) : run_sensor_systemc(cfg, kopt, source, run);
   if (!res.errors.empty() || res.sc_errors > 0)
     throw std::runtime_error(fmt::format("the model reported {} error(s): {}", res.errors.size() + res.sc_errors,
                                          res.errors.empty() ? "see the SystemC messages above" : res.errors.front()));
@@ -68,7 +71,8 @@ struct Reconstruction {
 };
 
 // One row of one frame access: the range, its error against the truth, its points.csv line.
-void add_point(Reconstruction& out, const scene::SceneOptics& optics, const FrameResult& fr, int b, int r, std::size_t f) {
+void add_point(Reconstruction& out, const scene::SceneOptics& optics, const FrameResult& fr, int b, int r,
+               std::size_t f) {
   const scene::RowTruth t = optics.truth(b, r);
   const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
   double range = NAN, err_px = NAN, err_m = NAN;
@@ -90,15 +94,19 @@ void add_point(Reconstruction& out, const scene::SceneOptics& optics, const Fram
     ++out.false_detections;
   }
   if (t.visible || p.valid)
-    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
-                              t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
-                              p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
+    out.points +=
+        fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
+                    t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
+                    p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
 }
 
-Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics, int rows, const golden::FrameTiming& gt) {
+Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics, int rows,
+                           const golden::FrameTiming& gt) {
   Reconstruction out;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
-  out.points = "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
+  out.points =
+      "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_"
+      "m\n";
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   for (std::size_t f = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
@@ -186,8 +194,8 @@ SimulationReport report(const Run& run) {
   r.frame_label = "frame access";
   set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), cfg.timing.beam_positions,
              rec.timing_matches);
-  r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected, rec.missed,
-                              rec.false_detections);
+  r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected,
+                              rec.missed, rec.false_detections);
   r.error = rec.err, r.error_in_px = true;
   r.wall_time_s = wall_s;
   r.wall_note = fmt::format("{:.3g} simulated cycles/s", res.cycles / res.wall_time_s);
@@ -199,7 +207,8 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   const Checked c = check(req, params);
   const std::string vcd_base = host.open_trace();
   if (req.tick && !req.kernel_only)
-    throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
+    throw UserError(
+        "--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
   const scene::Scene sc = scene::load_scene(req.scene);
   const scene::SceneOptics optics(c.cfg, sc);
   host.open_output(sc.name);

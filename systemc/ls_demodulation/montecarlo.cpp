@@ -66,6 +66,8 @@ std::unique_ptr<McPointRunner> LsDemodulationMc::point(double signal_A, double b
   return std::make_unique<Runner>(cfg_, signal_A, background_A, key, spot_);
 }
 
-std::unique_ptr<McModel> make_ls_demodulation_mc(const ParamSet& params) { return std::make_unique<LsDemodulationMc>(ls_demodulation_from_params(params)); }
+std::unique_ptr<McModel> make_ls_demodulation_mc(const ParamSet& params) {
+  return std::make_unique<LsDemodulationMc>(ls_demodulation_from_params(params));
+}
 
 }  // namespace rangesim::mc

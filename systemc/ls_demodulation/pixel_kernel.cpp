@@ -15,20 +15,24 @@ DemodWindowSchedule demod_window_schedule(const LsDemodulationConfig& cfg) {
   const double pc = cfg.readout.clock_Hz / cfg.modulation.frequency_Hz;
   s.period_cycles = static_cast<int>(std::lround(pc));
   if (s.period_cycles < 2 || std::fabs(pc - s.period_cycles) > 1e-6)
-    throw std::invalid_argument("readout.clock_Hz / modulation.frequency_Hz = " + std::to_string(pc) +
-                                ": the clock-level model needs an integer number (>= 2) of clock cycles per correlation period");
+    throw std::invalid_argument(
+        "readout.clock_Hz / modulation.frequency_Hz = " + std::to_string(pc) +
+        ": the clock-level model needs an integer number (>= 2) of clock cycles per correlation period");
   s.periods = cfg.correlator.cycles;
   const double win = cfg.pixel.integration_time_s * cfg.readout.clock_Hz;
   if (s.periods < 1 || std::fabs(win - s.window_cycles()) > 1.0 + 1e-9)
-    throw std::invalid_argument("pixel.integration_time_s x readout.clock_Hz = " + std::to_string(win) +
-                                " cycles differs from correlator.cycles x clock / f0 = " + std::to_string(s.window_cycles()));
+    throw std::invalid_argument(
+        "pixel.integration_time_s x readout.clock_Hz = " + std::to_string(win) +
+        " cycles differs from correlator.cycles x clock / f0 = " + std::to_string(s.window_cycles()));
   // Segment edges of a pixel that sees the beam (a zero beam has the same cuts).
   for (const auto& seg : golden::pixel_segments(cfg, 1e-12, 0.0)) {
     const double c = seg.duration_s * cfg.readout.clock_Hz;
     const int ci = static_cast<int>(std::lround(c));
     if (ci < 1 || std::fabs(c - ci) > 1e-6)
-      throw std::invalid_argument("modulation.source_duty_cycle / correlator.reference_duty_cycle / modulation.reference_phase_rad: "
-                                  "an MPY or beam edge falls between clock edges (" + std::to_string(c) + " cycles)");
+      throw std::invalid_argument(
+          "modulation.source_duty_cycle / correlator.reference_duty_cycle / modulation.reference_phase_rad: "
+          "an MPY or beam edge falls between clock edges (" +
+          std::to_string(c) + " cycles)");
     s.segment_cycles.push_back(ci);
     s.segment_branch.push_back(seg.branch);
   }
@@ -79,7 +83,8 @@ void DemodPixelKernel::begin_period() {
   if (!noise_) return;
   double G = noise_->g_end(sched_.periods - 1 - period_index_);
   shot_sd_V_.resize(period_.size());
-  for (std::size_t jj = period_.size(); jj-- > 0;) shot_sd_V_[jj] = std::sqrt(std::max(0.0, noise_->segment_var_V2(jj, G)));
+  for (std::size_t jj = period_.size(); jj-- > 0;)
+    shot_sd_V_[jj] = std::sqrt(std::max(0.0, noise_->segment_var_V2(jj, G)));
 }
 
 long long DemodPixelKernel::cycles_to_edge() const {
@@ -111,8 +116,9 @@ void DemodPixelKernel::step(long long cycles) {
   const double alpha = cfg_.suppression.mirror_gain, eps = cfg_.suppression.mirror_mismatch;
   const double tau = cfg_.suppression.lpf_time_constant_s;
   const double I = s.photocurrent_A;
-  const auto li = golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * golden::lpf_lag_A(lpf_offset_A_, s, dc0_A_),
-                                       tau, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
+  const auto li =
+      golden::log_integral(lg.offset_current_A + alpha * eps * I, -alpha * golden::lpf_lag_A(lpf_offset_A_, s, dc0_A_),
+                           tau, L, lg.leakage_current_A, lg.offset_current_A, alpha * eps * I);
   const double gain_V = cfg_.correlator.transconductance_S * lg.gain * lg.slope_V;
   if (s.branch > 0)
     plus_V_ += gain_V / cfg_.correlator.capacitance_plus_F * li.ln_s;
@@ -127,7 +133,10 @@ void DemodPixelKernel::end_segment() {
   const auto& s = period_[seg_index_];
   if (shot_) {
     const double n = standard_normal(*rng_) * shot_sd_V_[seg_index_];
-    if (s.branch > 0) plus_V_ += n; else minus_V_ -= n;  // adds n to D either way
+    if (s.branch > 0)
+      plus_V_ += n;
+    else
+      minus_V_ -= n;  // adds n to D either way
   }
   seg_cycle_ = 0;
   if (++seg_index_ < period_.size()) return;

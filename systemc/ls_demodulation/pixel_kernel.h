@@ -87,22 +87,22 @@ class DemodPixelKernel {
   void begin_period();
   void end_segment();
 
-  LsDemodulationConfig cfg_;      // the pixel's parameters
-  DemodWindowSchedule sched_;     // segment boundaries in cycles
-  std::vector<golden::Segment> period_;  // one correlation period (every period is the same)
-  double dc0_A_ = 0;              // I_dc of the period: the LPF is held as its offset from it
-  bool aggregate_ = false;        // the window in one step
-  golden::CorrelatorOutput window_;  // aggregated: golden's window (swings, variances, LPF end)
+  LsDemodulationConfig cfg_;                        // the pixel's parameters
+  DemodWindowSchedule sched_;                       // segment boundaries in cycles
+  std::vector<golden::Segment> period_;             // one correlation period (every period is the same)
+  double dc0_A_ = 0;                                // I_dc of the period: the LPF is held as its offset from it
+  bool aggregate_ = false;                          // the window in one step
+  golden::CorrelatorOutput window_;                 // aggregated: golden's window (swings, variances, LPF end)
   std::optional<golden::PeriodicShotNoise> noise_;  // per period: the shot-noise recursion
-  std::vector<double> shot_sd_V_; // per period: sd of each segment's shot-noise draw on D
-  pcg32* rng_ = nullptr;          // the pixel's stream during the window
-  bool shot_ = false;             // shot noise on
-  long long period_index_ = 0;    // current period
-  std::size_t seg_index_ = 0;     // current segment within the period
-  long long seg_cycle_ = 0;       // cycles done in the current segment
-  double lpf_offset_A_ = 0;       // I_avg - dc0_A_ now (exact lag under a huge background)
-  double plus_V_ = 0;             // V_out+ swing (C1)
-  double minus_V_ = 0;            // V_out- swing (C2)
+  std::vector<double> shot_sd_V_;                   // per period: sd of each segment's shot-noise draw on D
+  pcg32* rng_ = nullptr;                            // the pixel's stream during the window
+  bool shot_ = false;                               // shot noise on
+  long long period_index_ = 0;                      // current period
+  std::size_t seg_index_ = 0;                       // current segment within the period
+  long long seg_cycle_ = 0;                         // cycles done in the current segment
+  double lpf_offset_A_ = 0;                         // I_avg - dc0_A_ now (exact lag under a huge background)
+  double plus_V_ = 0;                               // V_out+ swing (C1)
+  double minus_V_ = 0;                              // V_out- swing (C2)
 };
 
 }  // namespace rangesim::systemc

@@ -19,19 +19,21 @@ DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig&
   s.shape = shape_name(in.shape);
   s.distance_m = in.distance_m;
   if (in.shape != TargetShape::DepthMap && (s.distance_m < 0.05 || s.distance_m > 100))
-    throw UserError(fmt::format("{}: target.distance_m = {:g}: allowed 0.05 <= value <= 100 m (ls-demodulation)", path, s.distance_m));
+    throw UserError(fmt::format("{}: target.distance_m = {:g}: allowed 0.05 <= value <= 100 m (ls-demodulation)", path,
+                                s.distance_m));
   s.tilt_m_per_row = in.get("target.tilt_m_per_row", 0.0);
   s.signal_A = in.get("beam.signal_A", 0.0);
   s.first_column_px = in.get("beam.first_column_px", 0.0);
   if (s.first_column_px > cfg.pixel.columns - 1.0)
-    throw UserError(fmt::format("{}: beam.first_column_px = {:g}: allowed -1000 <= value <= {} (pixel.columns - 1)", path,
-                                s.first_column_px, cfg.pixel.columns - 1));
+    throw UserError(fmt::format("{}: beam.first_column_px = {:g}: allowed -1000 <= value <= {} (pixel.columns - 1)",
+                                path, s.first_column_px, cfg.pixel.columns - 1));
   s.columns_per_frame = in.get("beam.columns_per_frame", 1.0);
   s.background_A = in.get("background.photocurrent_A", 0.0);
   const double z_last = s.distance_m + s.tilt_m_per_row * (cfg.pixel.rows - 1);
   if (z_last < 0.05)
-    throw UserError(fmt::format("{}: target.tilt_m_per_row = {:g} puts the last row at {:g} m; allowed: every row >= 0.05 m",
-                                path, s.tilt_m_per_row, z_last));
+    throw UserError(
+        fmt::format("{}: target.tilt_m_per_row = {:g} puts the last row at {:g} m; allowed: every row >= 0.05 m", path,
+                    s.tilt_m_per_row, z_last));
   if (in.shape == TargetShape::DepthMap) {
     s.map_columns = cfg.pixel.columns;
     s.depth_map_m = in.depth_map->resample(cfg.pixel.rows, cfg.pixel.columns);
@@ -74,7 +76,8 @@ void DemodOptics::stimulus(std::uint64_t f, systemc::DemodStimulus& s) const {
     const double x0 = centre_px(static_cast<long long>(f), r);
     if (!std::isfinite(x0)) continue;  // no lit point on this row
     for (int c = 0; c < C; ++c)
-      s.beam_A[static_cast<std::size_t>(r) * C + c] = sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
+      s.beam_A[static_cast<std::size_t>(r) * C + c] =
+          sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
   }
 }
 

@@ -14,18 +14,18 @@ namespace rangesim::scene {
 // A light-section scene for ls-demodulation: a plane (optionally tilted row by row), a sheet beam
 // stepping across the columns, a beam-on photocurrent at the spot peak and a uniform background.
 struct DemodScene {
-  std::string file;                // path as given
-  std::string name;                // [scene].name
-  std::string description;         // [scene].description
-  double distance_m = 1.0;         // [target].distance_m: range of row 0
-  double tilt_m_per_row = 0.0;     // [target].tilt_m_per_row: range change per row
-  double signal_A = 1.11e-10;      // [beam].signal_A: beam-on photocurrent at the spot peak
-  double first_column_px = 5.0;    // [beam].first_column_px: spot column of frame 0 at the preset's optics.distance_m
-  double columns_per_frame = 1.0;  // [beam].columns_per_frame: beam step per frame, in pixels
-  double background_A = 1e-7;      // [background].photocurrent_A: per pixel
-  std::string shape = "plane";     // "plane" (tilted row by row) or "depth_map"
-  std::vector<double> depth_map_m; // depth_map: depth of every pixel, row-major
-  int map_columns = 0;             // depth_map: array columns
+  std::string file;                 // path as given
+  std::string name;                 // [scene].name
+  std::string description;          // [scene].description
+  double distance_m = 1.0;          // [target].distance_m: range of row 0
+  double tilt_m_per_row = 0.0;      // [target].tilt_m_per_row: range change per row
+  double signal_A = 1.11e-10;       // [beam].signal_A: beam-on photocurrent at the spot peak
+  double first_column_px = 5.0;     // [beam].first_column_px: spot column of frame 0 at the preset's optics.distance_m
+  double columns_per_frame = 1.0;   // [beam].columns_per_frame: beam step per frame, in pixels
+  double background_A = 1e-7;       // [background].photocurrent_A: per pixel
+  std::string shape = "plane";      // "plane" (tilted row by row) or "depth_map"
+  std::vector<double> depth_map_m;  // depth_map: depth of every pixel, row-major
+  int map_columns = 0;              // depth_map: array columns
 };
 
 // Reads `path` with the scene reader (sensor "ls-demodulation") and checks it against the preset;
@@ -38,7 +38,9 @@ DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig&
 struct DemodOptics {
   const LsDemodulationConfig& cfg;
   const DemodScene& sc;
-  double disparity_px(double z) const { return cfg.optics.focal_length_m * cfg.optics.baseline_m / (cfg.pixel.pitch_m * z); }
+  double disparity_px(double z) const {
+    return cfg.optics.focal_length_m * cfg.optics.baseline_m / (cfg.pixel.pitch_m * z);
+  }
   double beam_column(long long b) const { return sc.first_column_px + sc.columns_per_frame * static_cast<double>(b); }
   // Depth of the lit point on a row. Plane: the row's depth. Depth map: the first column (from
   // the left) where the stripe of the pixel's own depth lands on that pixel (scene/depth_map.h,

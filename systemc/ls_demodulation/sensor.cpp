@@ -49,7 +49,8 @@ void DemodSensor::on_clock() {
   const DemodFrameResult& r = kernel_.result();
   if (r.cycles != kernel_.frame_cycles())
     SC_REPORT_ERROR(name(), ("frame " + std::to_string(r.frame) + " took " + std::to_string(r.cycles) +
-                             " cycles, the schedule says " + std::to_string(kernel_.frame_cycles())).c_str());
+                             " cycles, the schedule says " + std::to_string(kernel_.frame_cycles()))
+                                .c_str());
   results_.push_back(r);
   if (progress_) progress_(static_cast<long long>(results_.size()));
   const auto next = static_cast<std::uint64_t>(results_.size());
@@ -85,7 +86,8 @@ DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKer
   const double period_s = 1.0 / cfg.readout.clock_Hz;
   const long long err0 = static_cast<long long>(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR));
   sc_core::sc_clock clk("demod_clk", sc_core::sc_time(period_s, sc_core::SC_SEC));
-  sc_core::sc_signal<int> phase("phase"), row("row"), det("det"), frame("frame"), decision("decision"), pcycle("phase_cycle");
+  sc_core::sc_signal<int> phase("phase"), row("row"), det("det"), frame("frame"), decision("decision"),
+      pcycle("phase_cycle");
   sc_core::sc_signal<bool> valid("valid"), done("done"), mpy("mpy_plus"), start("search_start"), avalid("addr_valid"),
       abit("addr_bit");
   sc_core::sc_signal<double> centre("centre");

@@ -14,21 +14,21 @@ namespace rangesim::systemc {
 
 class DemodSensor : public sc_core::sc_module {
  public:
-  sc_core::sc_in<bool> clk_i{"clk_i"};          // readout clock
-  sc_core::sc_out<int> phase_o{"phase_o"};      // DemodPhase of the current cycle
-  sc_core::sc_out<int> row_o{"row_o"};          // row being read out
-  sc_core::sc_out<bool> row_valid_o{"row_valid_o"};  // a row's search completed at this edge
-  sc_core::sc_out<int> row_detections_o{"row_detections_o"};  // detections of that row so far
+  sc_core::sc_in<bool> clk_i{"clk_i"};                         // readout clock
+  sc_core::sc_out<int> phase_o{"phase_o"};                     // DemodPhase of the current cycle
+  sc_core::sc_out<int> row_o{"row_o"};                         // row being read out
+  sc_core::sc_out<bool> row_valid_o{"row_valid_o"};            // a row's search completed at this edge
+  sc_core::sc_out<int> row_detections_o{"row_detections_o"};   // detections of that row so far
   sc_core::sc_out<double> row_centre_px_o{"row_centre_px_o"};  // its mean centre (when detections > 0)
-  sc_core::sc_out<bool> frame_done_o{"frame_done_o"};  // the last edge of a frame
+  sc_core::sc_out<bool> frame_done_o{"frame_done_o"};          // the last edge of a frame
   // Waveform pins (--trace): the sequencer's counters, the correlator gate and the row search.
   sc_core::sc_out<int> frame_o{"frame_o"};              // frame index (beam position)
   sc_core::sc_out<int> decision_o{"decision_o"};        // decision index within the frame
   sc_core::sc_out<int> phase_cycle_o{"phase_cycle_o"};  // cycle counter within the phase (row readout: within the row)
   sc_core::sc_out<bool> mpy_plus_o{"mpy_plus_o"};       // correlator gate: MPY+ (C1) integrates; MPY- otherwise
   sc_core::sc_out<bool> search_start_o{"search_start_o"};  // strobe: a row search starts
-  sc_core::sc_out<bool> addr_valid_o{"addr_valid_o"};   // bit-serial address stream: bit valid
-  sc_core::sc_out<bool> addr_bit_o{"addr_bit_o"};       // ... the bit (left address, then right, MSB first)
+  sc_core::sc_out<bool> addr_valid_o{"addr_valid_o"};      // bit-serial address stream: bit valid
+  sc_core::sc_out<bool> addr_bit_o{"addr_bit_o"};          // ... the bit (left address, then right, MSB first)
 
   SC_HAS_PROCESS(DemodSensor);
   // Runs `frames` frames from `source`, then calls sc_stop().
@@ -46,15 +46,15 @@ class DemodSensor : public sc_core::sc_module {
  private:
   void on_clock();
 
-  DemodSensorKernel kernel_;             // all state
-  DemodStimulusSource source_;           // light per frame
-  DemodProgress progress_;               // called after each frame (may be empty)
-  long long frames_;                     // frames to run
+  DemodSensorKernel kernel_;               // all state
+  DemodStimulusSource source_;             // light per frame
+  DemodProgress progress_;                 // called after each frame (may be empty)
+  long long frames_;                       // frames to run
   std::vector<DemodFrameResult> results_;  // finished frames
-  DemodStimulus stim_;                   // stimulus buffer
-  bool event_skipping_;                  // jump edges (advance) or tick every edge
-  sc_core::sc_time period_;              // clock period
-  sc_core::sc_time span_end_;            // end of the last cycle the kernel has simulated
+  DemodStimulus stim_;                     // stimulus buffer
+  bool event_skipping_;                    // jump edges (advance) or tick every edge
+  sc_core::sc_time period_;                // clock period
+  sc_core::sc_time span_end_;              // end of the last cycle the kernel has simulated
 };
 
 // Elaborates a clock and DemodSensor, runs `frames` frames (bounded by a time budget of one frame

@@ -37,10 +37,10 @@ AddressSearchConfig search_config(const LsDemodulationConfig& cfg) {
 int settle_cycles(const LsDemodulationConfig& cfg) {
   const int s = cfg.readout.row_cycles - 1 - 2 * cfg.readout.address_bits;
   if (s < 1)
-    throw std::invalid_argument("readout.row_cycles = " + std::to_string(cfg.readout.row_cycles) +
-                                ": must be at least 2 + 2 x readout.address_bits = " +
-                                std::to_string(2 + 2 * cfg.readout.address_bits) +
-                                " (start, search settle, left and right address)");
+    throw std::invalid_argument(
+        "readout.row_cycles = " + std::to_string(cfg.readout.row_cycles) +
+        ": must be at least 2 + 2 x readout.address_bits = " + std::to_string(2 + 2 * cfg.readout.address_bits) +
+        " (start, search settle, left and right address)");
   return s;
 }
 
@@ -56,7 +56,8 @@ DemodSensorKernel::DemodSensorKernel(const LsDemodulationConfig& cfg, const Demo
       search_(search_config(cfg), settle_cycles(cfg)) {
   if (rows_ < 1 || columns_ < 1) throw std::invalid_argument("pixel.rows / pixel.columns must be >= 1");
   if (cfg.grid.detections < 1) throw std::invalid_argument("evaluation.detections must be >= 1");
-  if (cfg.comparator.adc_bits != 1) throw std::invalid_argument("comparator.adc_bits: only the 1-bit comparator is modelled");
+  if (cfg.comparator.adc_bits != 1)
+    throw std::invalid_argument("comparator.adc_bits: only the 1-bit comparator is modelled");
   pixels_.assign(static_cast<std::size_t>(rows_) * columns_, DemodPixelKernel(cfg_, sched_));
   rngs_.resize(pixels_.size());
   search_.reset();
@@ -87,8 +88,10 @@ void DemodSensorKernel::begin_decision() {
   for (int r = 0; r < rows_; ++r)
     for (int c = 0; c < columns_; ++c) {
       const std::size_t i = static_cast<std::size_t>(r) * columns_ + c;
-      rngs_[i] = pixel_stream(pixel_stream_key(opt_.seed, key_frame, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c)));
-      pixels_[i].reset(stim_.beam_A[i], stim_.background_A[i], rngs_[i], opt_.noise, opt_.event_skipping && opt_.aggregate);
+      rngs_[i] = pixel_stream(
+          pixel_stream_key(opt_.seed, key_frame, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c)));
+      pixels_[i].reset(stim_.beam_A[i], stim_.background_A[i], rngs_[i], opt_.noise,
+                       opt_.event_skipping && opt_.aggregate);
     }
   phase_ = DemodPhase::Integration;
   phase_cycle_ = 0;
@@ -144,7 +147,8 @@ void DemodSensorKernel::tick() {
   switch (phase_) {
     case DemodPhase::Integration:
       if (pixels_.front().aggregated())
-        throw std::logic_error("DemodSensorKernel::tick: the window is aggregated; tick with aggregate or event_skipping off");
+        throw std::logic_error(
+            "DemodSensorKernel::tick: the window is aggregated; tick with aggregate or event_skipping off");
       for (auto& p : pixels_) p.step(1);
       if (++phase_cycle_ == sched_.window_cycles()) phase_ = DemodPhase::Decision, phase_cycle_ = 0;
       break;

@@ -41,11 +41,11 @@ struct DemodStimulus {
 using DemodStimulusSource = std::function<void(std::uint64_t frame, DemodStimulus&)>;
 
 struct DemodKernelOptions {
-  bool event_skipping = true;         // jump to the next edge (false: tick every cycle)
-  bool aggregate = true;              // with event skipping: the N periods of a window in one jump
-  std::uint64_t seed = 1;             // key of the noise streams
-  DemodNoiseSwitches noise;           // sources on/off
-  bool keep_analogue = false;         // keep D of every pixel and decision in the frame result (tests)
+  bool event_skipping = true;  // jump to the next edge (false: tick every cycle)
+  bool aggregate = true;       // with event skipping: the N periods of a window in one jump
+  std::uint64_t seed = 1;      // key of the noise streams
+  DemodNoiseSwitches noise;    // sources on/off
+  bool keep_analogue = false;  // keep D of every pixel and decision in the frame result (tests)
 };
 
 // Readout of one row in one frame.
@@ -65,13 +65,14 @@ const char* to_string(DemodPhase p);
 
 struct DemodFrameResult {
   std::uint64_t frame = 0;
-  long long cycles = 0;                   // cycles of this frame
-  long long end_cycle = 0;                // global cycle count at the frame end
-  std::vector<long long> phase_cycles;    // integration, decision, row_readout (summed over decisions)
-  std::vector<DemodRowResult> rows;       // per row
-  std::vector<ActivationRow> activations; // comparator outputs of the last decision, per row
-  std::vector<double> diff_V;             // D per decision, pixel: [(d * rows + row) * columns + col] (keep_analogue only)
-  std::vector<double> read_offset_V;      // frame-common read noise per decision, row: [d * rows + row] (keep_analogue only)
+  long long cycles = 0;                    // cycles of this frame
+  long long end_cycle = 0;                 // global cycle count at the frame end
+  std::vector<long long> phase_cycles;     // integration, decision, row_readout (summed over decisions)
+  std::vector<DemodRowResult> rows;        // per row
+  std::vector<ActivationRow> activations;  // comparator outputs of the last decision, per row
+  std::vector<double> diff_V;  // D per decision, pixel: [(d * rows + row) * columns + col] (keep_analogue only)
+  std::vector<double>
+      read_offset_V;  // frame-common read noise per decision, row: [d * rows + row] (keep_analogue only)
   int rows_detected() const;
 };
 
@@ -95,19 +96,19 @@ class DemodSensorKernel {
 
   // Pins during the current cycle (what the sc_module drives).
   DemodPhase phase() const { return phase_; }
-  int row() const { return row_; }                 // row being read out
-  bool row_valid() const { return row_strobe_; }   // a row result completed at the last edge
+  int row() const { return row_; }                // row being read out
+  bool row_valid() const { return row_strobe_; }  // a row result completed at the last edge
   const DemodRowResult& last_row() const { return last_row_; }
   // Pins of the row search in the current cycle (the address stream; co-simulation compares
   // them with rtl/ls_demodulation_sequencer.sv cycle by cycle).
   AddressSearchPins search_pins() const { return search_.pins(); }
-  long long cycle() const { return cycle_; }       // edges since construction
+  long long cycle() const { return cycle_; }  // edges since construction
   const DemodFrameResult& result() const { return res_; }
 
   // Read-only views for waveforms (DemodSensor::trace); they do not change the state.
-  int decision() const { return decision_; }        // decision index within the frame
+  int decision() const { return decision_; }              // decision index within the frame
   long long phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
-  bool mpy_plus() const;                            // integration: MPY+ (C1) selected at this cycle
+  bool mpy_plus() const;                                  // integration: MPY+ (C1) selected at this cycle
 
   const LsDemodulationConfig& config() const { return cfg_; }
   const DemodWindowSchedule& schedule() const { return sched_; }
@@ -120,24 +121,24 @@ class DemodSensorKernel {
   void finish_row(const AddressSearchResult& r);
   void enter_row(int row);
 
-  LsDemodulationConfig cfg_;           // sensor parameters
-  DemodKernelOptions opt_;             // harness switches
-  DemodWindowSchedule sched_;          // integration schedule
-  int rows_ = 0, columns_ = 0;         // array size
-  int search_cycles_ = 0;              // chain settle S of the row search
+  LsDemodulationConfig cfg_;              // sensor parameters
+  DemodKernelOptions opt_;                // harness switches
+  DemodWindowSchedule sched_;             // integration schedule
+  int rows_ = 0, columns_ = 0;            // array size
+  int search_cycles_ = 0;                 // chain settle S of the row search
   std::vector<DemodPixelKernel> pixels_;  // row-major
-  std::vector<pcg32> rngs_;            // per pixel stream of the current decision
-  AddressSearchKernel search_;         // the row search (one, time-multiplexed over the rows)
-  DemodStimulus stim_;                 // light of the current frame
-  DemodFrameResult res_;               // result being built
-  DemodPhase phase_ = DemodPhase::Done;  // sequencer state
-  int decision_ = 0;                   // decision index within the frame
-  long long phase_cycle_ = 0;          // cycles done in the current phase / row
-  int row_ = 0;                        // row being read out
-  std::uint64_t bits_ = 0;             // streamed address bits of the row
-  bool row_strobe_ = false;            // a row result completed at the last edge
-  DemodRowResult last_row_;            // the last completed row's result
-  long long cycle_ = 0;                // global edge count
+  std::vector<pcg32> rngs_;               // per pixel stream of the current decision
+  AddressSearchKernel search_;            // the row search (one, time-multiplexed over the rows)
+  DemodStimulus stim_;                    // light of the current frame
+  DemodFrameResult res_;                  // result being built
+  DemodPhase phase_ = DemodPhase::Done;   // sequencer state
+  int decision_ = 0;                      // decision index within the frame
+  long long phase_cycle_ = 0;             // cycles done in the current phase / row
+  int row_ = 0;                           // row being read out
+  std::uint64_t bits_ = 0;                // streamed address bits of the row
+  bool row_strobe_ = false;               // a row result completed at the last edge
+  DemodRowResult last_row_;               // the last completed row's result
+  long long cycle_ = 0;                   // global edge count
 };
 
 // Bounded run of `frames` frames on the bare kernel (cycle budget = frames x frame_cycles).
@@ -146,11 +147,12 @@ struct DemodRunResult {
   long long cycles = 0;
   double simulated_time_s = 0;  // cycles / clock (kernel) or sc_time_stamp (SystemC)
   double wall_time_s = 0;
-  long long sc_errors = 0;      // SystemC harness only
+  long long sc_errors = 0;  // SystemC harness only
 };
 // Called after each finished frame with the number of frames done (progress reports).
 using DemodProgress = std::function<void(long long frames_done)>;
 DemodRunResult run_demod_kernel(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt,
-                                const DemodStimulusSource& source, long long frames, const DemodProgress& progress = {});
+                                const DemodStimulusSource& source, long long frames,
+                                const DemodProgress& progress = {});
 
 }  // namespace rangesim::systemc

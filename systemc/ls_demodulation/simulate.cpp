@@ -22,8 +22,9 @@ using Clock = std::chrono::steady_clock;
 LsDemodulationConfig checked_config(const SimulationRequest& req, const ParamSet& params) {
   LsDemodulationConfig cfg = ls_demodulation_from_params(params);
   if (cfg.comparator.adc_bits != 1)
-    throw UserError(fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
-                                params.origin(), cfg.comparator.adc_bits));
+    throw UserError(
+        fmt::format("{}: comparator.adc_bits = {}: the clock-level model has the 1-bit comparator only; allowed: 1",
+                    params.origin(), cfg.comparator.adc_bits));
   if (req.scene.empty()) throw UserError("--scene is required: a scene file, e.g. scenes/ls-demodulation-plane.toml");
   return cfg;
 }
@@ -73,7 +74,8 @@ struct Reconstruction {
 };
 
 // One row of one frame: the range, its error against the truth, its points.csv line.
-void add_point(Reconstruction& out, const scene::DemodOptics& optics, const DemodFrameResult& fr, int r, std::size_t f) {
+void add_point(Reconstruction& out, const scene::DemodOptics& optics, const DemodFrameResult& fr, int r,
+               std::size_t f) {
   const auto b = static_cast<long long>(fr.frame);
   const auto& rr = fr.rows[static_cast<std::size_t>(r)];
   const bool vis = optics.visible(b, r);
@@ -98,12 +100,13 @@ void add_point(Reconstruction& out, const scene::DemodOptics& optics, const Demo
     ++out.false_det;
   }
   if (vis || rr.valid())
-    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, csv_number(truth_x), csv_number(truth_z),
-                              rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "", csv_number(range),
-                              csv_number(err_px), csv_number(err_m));
+    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, csv_number(truth_x),
+                              csv_number(truth_z), rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "",
+                              csv_number(range), csv_number(err_px), csv_number(err_m));
 }
 
-Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& optics, int rows, const golden::FrameTiming& gt) {
+Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& optics, int rows,
+                           const golden::FrameTiming& gt) {
   Reconstruction out;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
   out.points = "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
@@ -160,9 +163,10 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
       {"target_shape", sc.shape},
       {"harness", req.kernel_only ? "kernel" : "systemc"},
       {"event_skipping", !req.tick},
-      {"aggregation", {{"requested", kopt.aggregate},
-                       {"path", kopt.aggregate ? "aggregated" : "per_period"},
-                       {"periods_per_window", cfg.correlator.cycles}}},
+      {"aggregation",
+       {{"requested", kopt.aggregate},
+        {"path", kopt.aggregate ? "aggregated" : "per_period"},
+        {"periods_per_window", cfg.correlator.cycles}}},
       {"noise", !req.noise_free},
       {"seed", req.seed},
       {"frames", static_cast<long long>(res.frames.size())},
@@ -187,17 +191,18 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
 SimulationReport report(const Run& run) {
   const auto& [req, params, cfg, kopt, sc, res, gt, rec, wall_s] = run;
   SimulationReport r;
-  const char* path = req.tick          ? " (ticking)"
+  const char* path = req.tick         ? " (ticking)"
                      : kopt.aggregate ? " (event skipping, periods aggregated)"
                                       : " (event skipping, period by period)";
-  r.headline = fmt::format("{} on scene '{}' ({}): {} frame{}, {}{}, {}", params.sensor_id(), sc.name, sc.shape,
-                           res.frames.size(), res.frames.size() == 1 ? "" : "s",
-                           req.kernel_only ? "bare kernels" : "SystemC", path,
-                           req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
+  r.headline =
+      fmt::format("{} on scene '{}' ({}): {} frame{}, {}{}, {}", params.sensor_id(), sc.name, sc.shape,
+                  res.frames.size(), res.frames.size() == 1 ? "" : "s", req.kernel_only ? "bare kernels" : "SystemC",
+                  path, req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
   r.frame_label = "frame";
   set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), gt.frames_per_range_map,
              rec.timing_matches);
-  r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected, rec.missed, rec.false_det);
+  r.points_line = fmt::format("points visible {}, detected {}, missed {}, false {}", rec.visible, rec.detected,
+                              rec.missed, rec.false_det);
   r.error = rec.err, r.error_in_px = true;
   r.wall_time_s = wall_s;
   r.wall_note = fmt::format("{:.3g} simulated cycles/s", res.cycles / res.wall_time_s);
@@ -218,7 +223,8 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
 
   SimulationResult out;
   Reconstruction rec = reconstruct(res, optics, cfg.pixel.rows, gt);
-  const Run run{req, params, cfg, kopt, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
+  const Run run{
+      req, params, cfg, kopt, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
   out.points_csv = std::move(rec.points);

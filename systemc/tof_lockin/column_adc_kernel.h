@@ -6,18 +6,18 @@ namespace rangesim::systemc::lockin {
 
 // ---------------------------------------------------------------- column ADC
 class ColumnAdcKernel {
-public:
-  explicit ColumnAdcKernel(const TofLockinConfig &cfg);
-  long long code(double v) const; // floor(v / LSB) clipped to 0 .. 2^bits - 1
+ public:
+  explicit ColumnAdcKernel(const TofLockinConfig& cfg);
+  long long code(double v) const;  // floor(v / LSB) clipped to 0 .. 2^bits - 1
   double value_V(long long c) const { return static_cast<double>(c) * lsb_; }
   double lsb_V() const { return lsb_; }
   long long top_code() const { return codes_ - 1; }
   long long conversion_cycles() const { return conv_; }
 
-private:
-  double lsb_;      // full scale / 2^bits
-  long long codes_; // 2^bits
-  long long conv_;  // cycles of one conversion
+ private:
+  double lsb_;       // full scale / 2^bits
+  long long codes_;  // 2^bits
+  long long conv_;   // cycles of one conversion
 };
 
 }  // namespace rangesim::systemc::lockin

@@ -14,23 +14,16 @@
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/common/random_stream.h"
 
-
 namespace rangesim::systemc::lockin {
 
-const char *phase_name(LockinPhase p) {
+const char* phase_name(LockinPhase p) {
   switch (p) {
-  case LockinPhase::Phase1:
-    return "phase1";
-  case LockinPhase::Phase2:
-    return "phase2";
-  case LockinPhase::Phase3:
-    return "phase3";
-  case LockinPhase::AdcConversion:
-    return "adc_conversion";
-  case LockinPhase::Output:
-    return "output";
-  case LockinPhase::Idle:
-    return "idle";
+    case LockinPhase::Phase1: return "phase1";
+    case LockinPhase::Phase2: return "phase2";
+    case LockinPhase::Phase3: return "phase3";
+    case LockinPhase::AdcConversion: return "adc_conversion";
+    case LockinPhase::Output: return "output";
+    case LockinPhase::Idle: return "idle";
   }
   return "?";
 }

@@ -16,27 +16,18 @@
 namespace rangesim::systemc::lockin {
 
 // Phases of a frame in schedule order (0 = idle / done).
-enum class LockinPhase : int {
-  Idle = 0,
-  Phase1 = 1,
-  Phase2 = 2,
-  Phase3 = 3,
-  AdcConversion = 4,
-  Output = 5
-};
-const char *phase_name(LockinPhase p);
-inline constexpr int kPhaseCount = 5; // Phase1 .. Output
+enum class LockinPhase : int { Idle = 0, Phase1 = 1, Phase2 = 2, Phase3 = 3, AdcConversion = 4, Output = 5 };
+const char* phase_name(LockinPhase p);
+inline constexpr int kPhaseCount = 5;  // Phase1 .. Output
 
 // Fidelity knobs.
 struct LockinSimOptions {
-  bool noise = true; // shot, kTC, read noise on (dark charge is always present
-                     // as its mean)
-  bool event_skipping =
-      true; // advance to the next gate edge / conversion end instead of ticking
-  bool aggregate =
-      false; // with event_skipping: one event per accumulation phase (N_acc
-             // identical periods summed; Poisson of the total mean, exact)
-  std::uint64_t seed = 1; // key of the noise streams
+  bool noise = true;           // shot, kTC, read noise on (dark charge is always present
+                               // as its mean)
+  bool event_skipping = true;  // advance to the next gate edge / conversion end instead of ticking
+  bool aggregate = false;      // with event_skipping: one event per accumulation phase (N_acc
+                               // identical periods summed; Poisson of the total mean, exact)
+  std::uint64_t seed = 1;      // key of the noise streams
   // 0: pulse/gate overlaps in closed form (exact). > 0: the pulse shape integrated numerically
   // at this step (golden::pulse_area_between_s): error falls and cost rises as it shrinks.
   double time_step_s = 0;
@@ -44,9 +35,9 @@ struct LockinSimOptions {
 
 // Per-pixel stimulus from the scene.
 struct LockinPixelStimulus {
-  double signal_A = 0;     // signal photocurrent during the received pulse
-  double background_A = 0; // constant background photocurrent
-  double delay_s = 0;      // round-trip delay T_D = 2 L / c
+  double signal_A = 0;      // signal photocurrent during the received pulse
+  double background_A = 0;  // constant background photocurrent
+  double delay_s = 0;       // round-trip delay T_D = 2 L / c
 };
 
 }  // namespace rangesim::systemc::lockin

@@ -14,60 +14,51 @@
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/common/random_stream.h"
 
-
 namespace rangesim::systemc::lockin {
 
 // ---------------------------------------------------------------- gate timing
 // generator
 
-LockinGateGeneratorKernel::LockinGateGeneratorKernel(const TofLockinConfig &cfg) {
+LockinGateGeneratorKernel::LockinGateGeneratorKernel(const TofLockinConfig& cfg) {
   const double fg = cfg.gates.clock_Hz;
   const double t0 = cfg.source.pulse_width_s * fg;
   const double period = cfg.source.pulse_width_s / cfg.source.duty_cycle * fg;
   t0_ = std::llround(t0);
   period_ = std::llround(period);
   n_acc_ = cfg.gates.accumulations_per_frame;
-  if (t0_ < 1 ||
-      std::fabs(t0 - static_cast<double>(t0_)) > 1e-6 * std::max(1.0, t0))
-    throw UserError(fmt::format("source.pulse_width_s = {:g} is {:g} cycles of "
-                                "gates.clock_Hz = {:g}; allowed: a whole "
-                                "number >= 1 of gate-clock cycles",
-                                cfg.source.pulse_width_s, t0, fg));
-  if (period_ < 2 * t0_ || std::fabs(period - static_cast<double>(period_)) >
-                               1e-6 * std::max(1.0, period))
-    throw UserError(fmt::format(
-        "source.pulse_width_s / source.duty_cycle = {:g} s is {:g} cycles of "
-        "gates.clock_Hz = "
-        "{:g}; allowed for the clock-level model: a whole number of gate-clock "
-        "cycles >= 2 T0",
-        cfg.source.pulse_width_s / cfg.source.duty_cycle, period, fg));
-  acc_ = n_acc_; // idle until start()
+  if (t0_ < 1 || std::fabs(t0 - static_cast<double>(t0_)) > 1e-6 * std::max(1.0, t0))
+    throw UserError(
+        fmt::format("source.pulse_width_s = {:g} is {:g} cycles of "
+                    "gates.clock_Hz = {:g}; allowed: a whole "
+                    "number >= 1 of gate-clock cycles",
+                    cfg.source.pulse_width_s, t0, fg));
+  if (period_ < 2 * t0_ || std::fabs(period - static_cast<double>(period_)) > 1e-6 * std::max(1.0, period))
+    throw UserError(
+        fmt::format("source.pulse_width_s / source.duty_cycle = {:g} s is {:g} cycles of "
+                    "gates.clock_Hz = "
+                    "{:g}; allowed for the clock-level model: a whole number of gate-clock "
+                    "cycles >= 2 T0",
+                    cfg.source.pulse_width_s / cfg.source.duty_cycle, period, fg));
+  acc_ = n_acc_;  // idle until start()
 }
 
 void LockinGateGeneratorKernel::start() { acc_ = 0, cyc_ = 0; }
 
 LockinPhase LockinGateGeneratorKernel::phase() const {
-  if (done())
-    return LockinPhase::Idle;
-  return cyc_ < t0_       ? LockinPhase::Phase1
-         : cyc_ < 2 * t0_ ? LockinPhase::Phase2
-                          : LockinPhase::Phase3;
+  if (done()) return LockinPhase::Idle;
+  return cyc_ < t0_ ? LockinPhase::Phase1 : cyc_ < 2 * t0_ ? LockinPhase::Phase2 : LockinPhase::Phase3;
 }
 
 long long LockinGateGeneratorKernel::cycles_to_edge() const {
-  if (done())
-    return 0;
-  return cyc_ < t0_       ? t0_ - cyc_
-         : cyc_ < 2 * t0_ ? 2 * t0_ - cyc_
-                          : period_ - cyc_;
+  if (done()) return 0;
+  return cyc_ < t0_ ? t0_ - cyc_ : cyc_ < 2 * t0_ ? 2 * t0_ - cyc_ : period_ - cyc_;
 }
 
 bool LockinGateGeneratorKernel::advance(long long n) {
   assert(n >= 1 && n <= cycles_to_edge());
   cyc_ += n;
   const bool closed = cyc_ == t0_ || cyc_ == 2 * t0_ || cyc_ == period_;
-  if (cyc_ == period_)
-    cyc_ = 0, ++acc_;
+  if (cyc_ == period_) cyc_ = 0, ++acc_;
   return closed;
 }
 

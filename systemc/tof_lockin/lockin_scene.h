@@ -12,36 +12,33 @@ namespace rangesim::systemc::lockin {
 
 struct LockinScene {
   enum class Shape { Plane, Step, DepthMap };
-  std::string file;             // where it was loaded from
-  std::string name;             // [scene] name
-  std::string description;      // [scene] description
-  Shape shape = Shape::Plane;   // target shape
-  double distance_m = 1.0;      // plane distance; step: far part
-  double near_distance_m = 0.5; // step: near part
-  double step_column_fraction =
-      0.5; // step: columns c < fraction x columns are near
-  double signal_photocurrent_A =
-      1e-9; // signal photocurrent at reference_distance_m
-  double reference_distance_m = 1.0;    // distance of signal_photocurrent_A
-  double background_photocurrent_A = 0; // background photocurrent, every pixel
-  int rows = 0, columns = 0;            // simulated window (0 = whole array)
-  std::vector<double> depth_map_m;      // depth map: depth of every pixel of the whole array, row-major
-  int map_columns = 0;                  // depth map: columns of the array it was resampled to
+  std::string file;                      // where it was loaded from
+  std::string name;                      // [scene] name
+  std::string description;               // [scene] description
+  Shape shape = Shape::Plane;            // target shape
+  double distance_m = 1.0;               // plane distance; step: far part
+  double near_distance_m = 0.5;          // step: near part
+  double step_column_fraction = 0.5;     // step: columns c < fraction x columns are near
+  double signal_photocurrent_A = 1e-9;   // signal photocurrent at reference_distance_m
+  double reference_distance_m = 1.0;     // distance of signal_photocurrent_A
+  double background_photocurrent_A = 0;  // background photocurrent, every pixel
+  int rows = 0, columns = 0;             // simulated window (0 = whole array)
+  std::vector<double> depth_map_m;       // depth map: depth of every pixel of the whole array, row-major
+  int map_columns = 0;                   // depth map: columns of the array it was resampled to
 
   // Window actually simulated for an array of cfg's size.
-  int window_rows(const TofLockinConfig &cfg) const {
+  int window_rows(const TofLockinConfig& cfg) const {
     return rows > 0 && rows < cfg.pixel.rows ? rows : cfg.pixel.rows;
   }
-  int window_columns(const TofLockinConfig &cfg) const {
-    return columns > 0 && columns < cfg.pixel.columns ? columns
-                                                      : cfg.pixel.columns;
+  int window_columns(const TofLockinConfig& cfg) const {
+    return columns > 0 && columns < cfg.pixel.columns ? columns : cfg.pixel.columns;
   }
   // Ground-truth distance of pixel (r, c) of an array `columns` wide.
   double distance_at(int r, int c, int array_columns) const;
   // Stimulus of the window, row-major.
-  std::vector<LockinPixelStimulus> stimulus(const TofLockinConfig &cfg) const;
+  std::vector<LockinPixelStimulus> stimulus(const TofLockinConfig& cfg) const;
 };
 
-const char *shape_name(LockinScene::Shape s);
+const char* shape_name(LockinScene::Shape s);
 
-} // namespace rangesim::systemc::lockin
+}  // namespace rangesim::systemc::lockin

@@ -12,7 +12,9 @@ namespace {
 class Runner : public McPointRunner {
  public:
   Runner(const TofLockinConfig& cfg, bool aggregate, double signal_A, double background_A, std::uint64_t key)
-      : cfg_(cfg), aggregate_(aggregate), key_(key),
+      : cfg_(cfg),
+        aggregate_(aggregate),
+        key_(key),
         stim_{signal_A, background_A, golden::round_trip_delay_s(cfg.eval.distance_m)} {
     cfg_.pixel.rows = 1;
   }
@@ -22,8 +24,9 @@ class Runner : public McPointRunner {
     const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
     const long long per_map = cfg_.readout.ambient_subtraction ? 2 : 1;
     // A kernel per trial, its streams keyed by the trial: (trial key, frame, row 0, column 0).
-    TofLockinSensorKernel k(cfg_, LockinSimOptions{true, true, aggregate_, trial_key(key_, static_cast<std::uint64_t>(t))},
-                            1, 1, {stim_}, maps * per_map);
+    TofLockinSensorKernel k(cfg_,
+                            LockinSimOptions{true, true, aggregate_, trial_key(key_, static_cast<std::uint64_t>(t))}, 1,
+                            1, {stim_}, maps * per_map);
     k.run();  // bounded: the frames' schedule has a fixed number of events
     double sum = 0;
     McTrial out;
@@ -52,6 +55,8 @@ std::unique_ptr<McPointRunner> TofLockinMc::point(double signal_A, double backgr
   return std::make_unique<Runner>(cfg_, aggregate_, signal_A, background_A, key);
 }
 
-std::unique_ptr<McModel> make_tof_lockin_mc(const ParamSet& params) { return std::make_unique<TofLockinMc>(tof_lockin_from_params(params)); }
+std::unique_ptr<McModel> make_tof_lockin_mc(const ParamSet& params) {
+  return std::make_unique<TofLockinMc>(tof_lockin_from_params(params));
+}
 
 }  // namespace rangesim::mc

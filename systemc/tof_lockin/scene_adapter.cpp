@@ -12,9 +12,9 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& s, const TofLockinConf
   l.file = s.file;
   l.name = s.name;
   l.description = s.description;
-  l.shape = s.shape == TargetShape::Step ? LockinScene::Shape::Step
-          : s.shape == TargetShape::DepthMap ? LockinScene::Shape::DepthMap
-                                              : LockinScene::Shape::Plane;
+  l.shape = s.shape == TargetShape::Step       ? LockinScene::Shape::Step
+            : s.shape == TargetShape::DepthMap ? LockinScene::Shape::DepthMap
+                                               : LockinScene::Shape::Plane;
   l.distance_m = s.distance_m;
   l.near_distance_m = s.get("target.near_distance_m", l.near_distance_m);
   l.step_column_fraction = s.get("target.step_column_fraction", 0.5);
@@ -25,14 +25,16 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& s, const TofLockinConf
   l.columns = static_cast<int>(s.get("window.columns", 0));
   for (const char* k : {"target.distance_m", "target.near_distance_m"})
     if (s.get(k, 1) > 1000)
-      throw UserError(fmt::format("{}: {} = {:g} is out of range for tof-lockin; allowed: (0, 1000] m", s.file, k, s.get(k, 1)));
+      throw UserError(
+          fmt::format("{}: {} = {:g} is out of range for tof-lockin; allowed: (0, 1000] m", s.file, k, s.get(k, 1)));
   if (s.shape == TargetShape::DepthMap) {
     l.map_columns = cfg.pixel.columns;
     l.depth_map_m = s.depth_map->resample(cfg.pixel.rows, cfg.pixel.columns);
     for (double z : l.depth_map_m)
       if (z > 1000)
-        throw UserError(fmt::format("{}: target.depth_map_file: distance {:g} m is out of range for tof-lockin; allowed: (0, 1000] m",
-                                    s.file, z));
+        throw UserError(fmt::format(
+            "{}: target.depth_map_file: distance {:g} m is out of range for tof-lockin; allowed: (0, 1000] m", s.file,
+            z));
   }
   return l;
 }

@@ -4,21 +4,16 @@
 
 namespace rangesim::systemc::lockin {
 
-TofLockinSensor::TofLockinSensor(sc_core::sc_module_name name,
-                                 const TofLockinConfig &cfg,
-                                 const LockinSimOptions &opt, int sim_rows,
-                                 int sim_columns,
-                                 std::vector<LockinPixelStimulus> stimulus,
+TofLockinSensor::TofLockinSensor(sc_core::sc_module_name name, const TofLockinConfig& cfg, const LockinSimOptions& opt,
+                                 int sim_rows, int sim_columns, std::vector<LockinPixelStimulus> stimulus,
                                  long long frames)
-    : sc_core::sc_module(name),
-      kernel_(cfg, opt, sim_rows, sim_columns, std::move(stimulus), frames) {
+    : sc_core::sc_module(name), kernel_(cfg, opt, sim_rows, sim_columns, std::move(stimulus), frames) {
   SC_THREAD(run);
 }
 
 void TofLockinSensor::drive() {
-  const auto &g = kernel_.gates();
-  const bool acc = kernel_.phase() == LockinPhase::Phase1 ||
-                   kernel_.phase() == LockinPhase::Phase2 ||
+  const auto& g = kernel_.gates();
+  const bool acc = kernel_.phase() == LockinPhase::Phase1 || kernel_.phase() == LockinPhase::Phase2 ||
                    kernel_.phase() == LockinPhase::Phase3;
   tx1_o.write(acc && g.tx1());
   tx2_o.write(acc && g.tx2());
@@ -38,47 +33,35 @@ void TofLockinSensor::run() {
     kernel_.step();
     drive();
     // Absolute target time: no rounding accumulates over the steps.
-    const sc_core::sc_time target =
-        t_start + sc_core::sc_time(kernel_.time_s(), sc_core::SC_SEC);
-    if (target > sc_core::sc_time_stamp())
-      sc_core::wait(target - sc_core::sc_time_stamp());
+    const sc_core::sc_time target = t_start + sc_core::sc_time(kernel_.time_s(), sc_core::SC_SEC);
+    if (target > sc_core::sc_time_stamp()) sc_core::wait(target - sc_core::sc_time_stamp());
   }
   finish_s_ = sc_core::sc_time_stamp().to_seconds();
 }
 
-LockinScRun run_tof_lockin_systemc(TofLockinSensor *&sensor_out,
-                                   const TofLockinConfig &cfg,
-                                   const LockinSimOptions &opt, int sim_rows,
-                                   int sim_columns,
-                                   std::vector<LockinPixelStimulus> stimulus,
-                                   long long frames, double time_limit_s,
-                                   const std::string &vcd_path) {
-  static sc_core::sc_signal<bool> tx1("tx1"), tx2("tx2"), txd("txd"),
-      light("light"), done("done");
+LockinScRun run_tof_lockin_systemc(TofLockinSensor*& sensor_out, const TofLockinConfig& cfg,
+                                   const LockinSimOptions& opt, int sim_rows, int sim_columns,
+                                   std::vector<LockinPixelStimulus> stimulus, long long frames, double time_limit_s,
+                                   const std::string& vcd_path) {
+  static sc_core::sc_signal<bool> tx1("tx1"), tx2("tx2"), txd("txd"), light("light"), done("done");
   static sc_core::sc_signal<int> phase("phase"), frame("frame"), row("row");
-  auto *s = new TofLockinSensor("tof_lockin", cfg, opt, sim_rows, sim_columns,
-                                std::move(stimulus), frames);
-  s->tx1_o(tx1), s->tx2_o(tx2), s->txd_o(txd), s->light_o(light),
-      s->phase_o(phase), s->frame_o(frame), s->row_o(row), s->done_o(done);
+  auto* s = new TofLockinSensor("tof_lockin", cfg, opt, sim_rows, sim_columns, std::move(stimulus), frames);
+  s->tx1_o(tx1), s->tx2_o(tx2), s->txd_o(txd), s->light_o(light), s->phase_o(phase), s->frame_o(frame), s->row_o(row),
+      s->done_o(done);
   sensor_out = s;
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  sc_core::sc_trace_file *tf = nullptr;
+  sc_core::sc_trace_file* tf = nullptr;
   if (!vcd_path.empty()) {
     std::string base = vcd_path;
-    if (base.size() > 4 && base.compare(base.size() - 4, 4, ".vcd") == 0)
-      base.resize(base.size() - 4);
+    if (base.size() > 4 && base.compare(base.size() - 4, 4, ".vcd") == 0) base.resize(base.size() - 4);
     tf = sc_core::sc_create_vcd_trace_file(base.c_str());
     tf->set_time_unit(1, sc_core::SC_NS);
-    sc_core::sc_trace(tf, tx1, "tx1"), sc_core::sc_trace(tf, tx2, "tx2"),
-        sc_core::sc_trace(tf, txd, "txd");
-    sc_core::sc_trace(tf, light, "light"),
-        sc_core::sc_trace(tf, phase, "phase"),
-        sc_core::sc_trace(tf, frame, "frame");
+    sc_core::sc_trace(tf, tx1, "tx1"), sc_core::sc_trace(tf, tx2, "tx2"), sc_core::sc_trace(tf, txd, "txd");
+    sc_core::sc_trace(tf, light, "light"), sc_core::sc_trace(tf, phase, "phase"), sc_core::sc_trace(tf, frame, "frame");
     sc_core::sc_trace(tf, row, "row"), sc_core::sc_trace(tf, done, "done");
   }
   sc_core::sc_start(sc_core::sc_time(time_limit_s, sc_core::SC_SEC));
-  if (tf)
-    sc_core::sc_close_vcd_trace_file(tf);
+  if (tf) sc_core::sc_close_vcd_trace_file(tf);
   LockinScRun r;
   r.finished = s->kernel().done();
   r.end_time_s = s->finish_time_s();
@@ -86,13 +69,12 @@ LockinScRun run_tof_lockin_systemc(TofLockinSensor *&sensor_out,
     // Counted, not thrown out of here (outside a process the default action
     // would throw).
     try {
-      SC_REPORT_ERROR("tof_lockin",
-                      "simulation did not finish within its time limit");
-    } catch (const sc_core::sc_report &) {
+      SC_REPORT_ERROR("tof_lockin", "simulation did not finish within its time limit");
+    } catch (const sc_core::sc_report&) {
     }
   }
   r.sc_errors = sc_core::sc_report_handler::get_count(sc_core::SC_ERROR);
   return r;
 }
 
-} // namespace rangesim::systemc::lockin
+}  // namespace rangesim::systemc::lockin

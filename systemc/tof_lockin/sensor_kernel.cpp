@@ -14,20 +14,23 @@
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/common/random_stream.h"
 
-
 namespace rangesim::systemc::lockin {
 
 // ---------------------------------------------------------------- sensor
 
-TofLockinSensorKernel::TofLockinSensorKernel(
-    const TofLockinConfig &cfg, const LockinSimOptions &opt, int sim_rows,
-    int sim_columns, std::vector<LockinPixelStimulus> stimulus,
-    long long frames)
-    : cfg_(cfg), opt_(opt), rows_(sim_rows), cols_(sim_columns),
-      stim_(std::move(stimulus)), frames_(frames), gates_(cfg), adc_(cfg),
+TofLockinSensorKernel::TofLockinSensorKernel(const TofLockinConfig& cfg, const LockinSimOptions& opt, int sim_rows,
+                                             int sim_columns, std::vector<LockinPixelStimulus> stimulus,
+                                             long long frames)
+    : cfg_(cfg),
+      opt_(opt),
+      rows_(sim_rows),
+      cols_(sim_columns),
+      stim_(std::move(stimulus)),
+      frames_(frames),
+      gates_(cfg),
+      adc_(cfg),
       reset_noise_(LockinPixelKernel::ResetNoise::of(cfg)) {
-  assert(rows_ >= 0 && rows_ <= cfg.pixel.rows && cols_ >= 0 &&
-         cols_ <= cfg.pixel.columns);
+  assert(rows_ >= 0 && rows_ <= cfg.pixel.rows && cols_ >= 0 && cols_ <= cfg.pixel.columns);
   assert(stim_.size() == static_cast<std::size_t>(rows_) * cols_);
   assert(frames_ >= 0);
   pixels_.resize(stim_.size());
@@ -35,9 +38,7 @@ TofLockinSensorKernel::TofLockinSensorKernel(
   inputs_.assign(codes_.size(), 0.0);
 }
 
-bool TofLockinSensorKernel::led_on() const {
-  return !(cfg_.readout.ambient_subtraction && frame_ % 2 == 1);
-}
+bool TofLockinSensorKernel::led_on() const { return !(cfg_.readout.ambient_subtraction && frame_ % 2 == 1); }
 
 double TofLockinSensorKernel::time_s() const {
   return static_cast<double>(gate_cycles_) / cfg_.gates.clock_Hz +
@@ -52,22 +53,20 @@ void TofLockinSensorKernel::begin_frame() {
   records_.push_back(rec);
   for (int r = 0; r < rows_; ++r)
     for (int c = 0; c < cols_; ++c)
-      pixels_[static_cast<std::size_t>(r) * cols_ + c].reset(
-          reset_noise_, opt_, static_cast<std::uint64_t>(frame_),
-          static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(c));
+      pixels_[static_cast<std::size_t>(r) * cols_ + c].reset(reset_noise_, opt_, static_cast<std::uint64_t>(frame_),
+                                                             static_cast<std::uint32_t>(r),
+                                                             static_cast<std::uint32_t>(c));
   gates_.start();
   phase_ = gates_.phase();
   row_ = 0, in_phase_ = 0;
 }
 
 void TofLockinSensorKernel::convert_row(int r) {
-  if (r >= rows_)
-    return; // rows outside the simulated window are converted without pixels
+  if (r >= rows_) return;  // rows outside the simulated window are converted without pixels
   for (int c = 0; c < cols_; ++c) {
     const std::size_t p = static_cast<std::size_t>(r) * cols_ + c;
     for (int k = 0; k < 2; ++k) {
-      const std::size_t i =
-          (static_cast<std::size_t>(frame_) * stim_.size() + p) * 2 + k;
+      const std::size_t i = (static_cast<std::size_t>(frame_) * stim_.size() + p) * 2 + k;
       inputs_[i] = pixels_[p].adc_input_V(cfg_, k);
       codes_[i] = adc_.code(inputs_[i]);
     }
@@ -75,28 +74,23 @@ void TofLockinSensorKernel::convert_row(int r) {
 }
 
 bool TofLockinSensorKernel::step() {
-  if (done())
-    return false;
-  if (phase_ == LockinPhase::Idle)
-    begin_frame();
+  if (done()) return false;
+  if (phase_ == LockinPhase::Idle) begin_frame();
   ++events_;
-  LockinFrameRecord &rec = records_.back();
+  LockinFrameRecord& rec = records_.back();
   const double fg = cfg_.gates.clock_Hz;
-  if (phase_ == LockinPhase::Phase1 || phase_ == LockinPhase::Phase2 ||
-      phase_ == LockinPhase::Phase3) {
+  if (phase_ == LockinPhase::Phase1 || phase_ == LockinPhase::Phase2 || phase_ == LockinPhase::Phase3) {
     const bool on = led_on();
-    if (opt_.event_skipping && opt_.aggregate && gates_.accumulation() == 0 &&
-        gates_.cycle_in_period() == 0) {
+    if (opt_.event_skipping && opt_.aggregate && gates_.accumulation() == 0 && gates_.cycle_in_period() == 0) {
       // A frame's N_acc periods in one event: the total mean of every window
       // over the frame, Poisson of the total (a sum of independent Poisson
       // counts). Periods differ only by the tail of the previous pulse.
       const long long n = gates_.accumulations();
-      std::vector<double> &mean = frame_mean_e_[on ? 1 : 0];
+      std::vector<double>& mean = frame_mean_e_[on ? 1 : 0];
       if (mean.empty()) {
         const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
         const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
-        const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A *
-                            period_s / phys::kElementaryCharge_C;
+        const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
         double t[3][2];
         for (int w = 0; w < 3; ++w)
           t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
@@ -105,14 +99,12 @@ bool TofLockinSensorKernel::step() {
         for (std::size_t p = 0; p < pixels_.size(); ++p) {
           double g[3];
           for (int w = 0; w < 3; ++w)
-            g[w] = LockinPixelKernel::frame_generated_e(
-                cfg_, stim_[p], on, t[w][0], t[w][1], n, opt_.time_step_s);
+            g[w] = LockinPixelKernel::frame_generated_e(cfg_, stim_[p], on, t[w][0], t[w][1], n, opt_.time_step_s);
           mean[2 * p] = g[0] + (leak * g[2] + dark);
           mean[2 * p + 1] = g[1] + (leak * g[2] + dark);
         }
       }
-      for (std::size_t p = 0; p < pixels_.size(); ++p)
-        pixels_[p].aggregate(opt_, &mean[2 * p]);
+      for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate(opt_, &mean[2 * p]);
       rec.cycles[0] += n * gates_.t0_cycles();
       rec.cycles[1] += n * gates_.t0_cycles();
       rec.cycles[2] += n * (gates_.period_cycles() - 2 * gates_.t0_cycles());
@@ -126,19 +118,15 @@ bool TofLockinSensorKernel::step() {
       gate_cycles_ += n;
       rec.cycles[w] += n;
       const bool closed = pos == gates_.window_close(w);
-      const double t_open = static_cast<double>(gates_.window_open(w)) / fg,
-                   t_now = static_cast<double>(pos) / fg;
+      const double t_open = static_cast<double>(gates_.window_open(w)) / fg, t_now = static_cast<double>(pos) / fg;
       const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
       // PHASE3 of zero length (duty 0.5): the drain edge coincides with the TX2
       // closing edge.
-      const bool empty_drain =
-          closed && w == 1 && gates_.period_cycles() == 2 * gates_.t0_cycles();
+      const bool empty_drain = closed && w == 1 && gates_.period_cycles() == 2 * gates_.t0_cycles();
       for (std::size_t p = 0; p < pixels_.size(); ++p) {
         pixels_[p].collect(cfg_, opt_, stim_[p], on, t_open, t_now, period);
-        if (closed)
-          pixels_[p].transfer(cfg_, opt_, w, period_s);
-        if (empty_drain)
-          pixels_[p].transfer(cfg_, opt_, 2, period_s);
+        if (closed) pixels_[p].transfer(cfg_, opt_, w, period_s);
+        if (empty_drain) pixels_[p].transfer(cfg_, opt_, 2, period_s);
       }
     }
     if (gates_.done()) {
@@ -150,8 +138,7 @@ bool TofLockinSensorKernel::step() {
     const long long total = adc_.conversion_cycles();
     const long long n = opt_.event_skipping ? total - in_phase_ : 1;
     in_phase_ += n, readout_cycles_ += n, rec.cycles[3] += n;
-    if (in_phase_ == total)
-      convert_row(row_), phase_ = LockinPhase::Output, in_phase_ = 0;
+    if (in_phase_ == total) convert_row(row_), phase_ = LockinPhase::Output, in_phase_ = 0;
   } else if (phase_ == LockinPhase::Output) {
     const long long total = cfg_.readout.output_cycles_per_row;
     const long long n = opt_.event_skipping ? total - in_phase_ : 1;
@@ -175,23 +162,20 @@ long long TofLockinSensorKernel::range_maps() const {
   return cfg_.readout.ambient_subtraction ? done_frames / 2 : done_frames;
 }
 
-void TofLockinSensorKernel::tap_values(long long m, int r, int c, double *a,
-                                       double *b) const {
+void TofLockinSensorKernel::tap_values(long long m, int r, int c, double* a, double* b) const {
   const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
   double v[2];
   for (int k = 0; k < 2; ++k) {
     v[k] = adc_.value_V(code(f, r, c, k)) - cfg_.readout.offset_calibration_V;
-    if (cfg_.readout.ambient_subtraction)
-      v[k] -= adc_.value_V(code(f + 1, r, c, k));
+    if (cfg_.readout.ambient_subtraction) v[k] -= adc_.value_V(code(f + 1, r, c, k));
   }
   *a = v[0], *b = v[1];
 }
 
 double TofLockinSensorKernel::range_m(long long m, int r, int c) const {
   const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
-  if (code(f, r, c, 0) == adc_.top_code() ||
-      code(f, r, c, 1) == adc_.top_code())
-    return std::numeric_limits<double>::quiet_NaN(); // saturated (clipped code)
+  if (code(f, r, c, 0) == adc_.top_code() || code(f, r, c, 1) == adc_.top_code())
+    return std::numeric_limits<double>::quiet_NaN();  // saturated (clipped code)
   double a, b;
   tap_values(m, r, c, &a, &b);
   const double s = a + b;

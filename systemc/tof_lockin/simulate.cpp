@@ -38,11 +38,11 @@ long long checked_frames(const SimulationRequest& req, const golden::FrameTiming
 // themselves are accepted.
 void check_time_step(const SimulationRequest& req, const TofLockinConfig& cfg) {
   const double T0 = cfg.source.pulse_width_s;
-  if (!(req.time_step_s == 0.0 ||
-        (req.time_step_s >= T0 * 1e-5 * (1 - 1e-9) && req.time_step_s <= T0 * (1 + 1e-9))))
-    throw UserError(fmt::format("--time-step {:g}: allowed 0 (exact, closed form) or {:g} <= S <= {:g} "
-                                "s (source.pulse_width_s T0 / 1e5 .. T0)",
-                                req.time_step_s, T0 * 1e-5, T0));
+  if (!(req.time_step_s == 0.0 || (req.time_step_s >= T0 * 1e-5 * (1 - 1e-9) && req.time_step_s <= T0 * (1 + 1e-9))))
+    throw UserError(
+        fmt::format("--time-step {:g}: allowed 0 (exact, closed form) or {:g} <= S <= {:g} "
+                    "s (source.pulse_width_s T0 / 1e5 .. T0)",
+                    req.time_step_s, T0 * 1e-5, T0));
 }
 
 lk::LockinSimOptions kernel_options(const SimulationRequest& req) {
@@ -65,8 +65,8 @@ struct ModelRun {
 };
 
 ModelRun run_model(const SimulationRequest& req, const TofLockinConfig& cfg, const lk::LockinSimOptions& kopt,
-                   const lk::LockinScene& sc, long long frames, const golden::FrameTiming& gt, const std::string& vcd_base,
-                   SimulationHost& host) {
+                   const lk::LockinScene& sc, long long frames, const golden::FrameTiming& gt,
+                   const std::string& vcd_base, SimulationHost& host) {
   const int R = sc.window_rows(cfg), C = sc.window_columns(cfg);
   const auto t_sim = Clock::now();
   ModelRun m;
@@ -140,7 +140,8 @@ GoldenPoints golden_points(const TofLockinConfig& cfg, const lk::LockinScene& sc
   long long n = 0;
   for (const auto& [d, count] : distances) {
     const double kk = sc.reference_distance_m / d;
-    const golden::LockinPoint pt = golden::evaluate_point(cfg, sc.signal_photocurrent_A * kk * kk, sc.background_photocurrent_A, d, 1);
+    const golden::LockinPoint pt =
+        golden::evaluate_point(cfg, sc.signal_photocurrent_A * kk * kk, sc.background_photocurrent_A, d, 1);
     g.points.push_back({{"distance_m", d},
                         {"pixels", count},
                         {"detect", golden::to_string(pt.detect)},
@@ -163,12 +164,15 @@ struct FrameTiming {
 
 FrameTiming frame_timing(const lk::TofLockinSensorKernel& k, const golden::FrameTiming& gt) {
   FrameTiming t;
-  for (int p = 0; p < lk::kPhaseCount; ++p) t.csv += fmt::format(",{}", lk::phase_name(static_cast<lk::LockinPhase>(p + 1)));
+  for (int p = 0; p < lk::kPhaseCount; ++p)
+    t.csv += fmt::format(",{}", lk::phase_name(static_cast<lk::LockinPhase>(p + 1)));
   t.csv += "\n";
   for (const auto& fr : k.frame_records()) {
     long long total = 0;
-    for (int p = 0; p < lk::kPhaseCount; ++p) total += fr.cycles[p], t.matches = t.matches && fr.cycles[p] == gt.phases[p].cycles;
-    t.csv += fmt::format("{},{},{},{},{}", fr.frame, fr.led_on ? 1 : 0, total, csv_number(fr.start_s), csv_number(fr.end_s));
+    for (int p = 0; p < lk::kPhaseCount; ++p)
+      total += fr.cycles[p], t.matches = t.matches && fr.cycles[p] == gt.phases[p].cycles;
+    t.csv +=
+        fmt::format("{},{},{},{},{}", fr.frame, fr.led_on ? 1 : 0, total, csv_number(fr.start_s), csv_number(fr.end_s));
     for (int p = 0; p < lk::kPhaseCount; ++p) t.csv += fmt::format(",{}", fr.cycles[p]);
     t.csv += "\n";
     t.frame_cycles.push_back(total), t.cycles_total += total;
@@ -176,7 +180,8 @@ FrameTiming frame_timing(const lk::TofLockinSensorKernel& k, const golden::Frame
   return t;
 }
 
-nlohmann::json phases_json(const lk::TofLockinSensorKernel& k, const TofLockinConfig& cfg, const golden::FrameTiming& gt) {
+nlohmann::json phases_json(const lk::TofLockinSensorKernel& k, const TofLockinConfig& cfg,
+                           const golden::FrameTiming& gt) {
   const lk::LockinFrameRecord& first = k.frame_records().front();
   nlohmann::json phases = nlohmann::json::array();
   for (int p = 0; p < lk::kPhaseCount; ++p) {
@@ -256,9 +261,9 @@ SimulationReport report(const Run& run) {
   const auto& [req, params, cfg, kopt, sc, model, gt, rec, golden, timing, frames, wall_s, R, C] = run;
   const long long maps = model.k->range_maps();
   SimulationReport r;
-  r.headline = fmt::format("{} on scene '{}' ({}): {} frame{} ({} range map{}), {} x {} pixels, {}, {}", params.sensor_id(), sc.name,
-                           lk::shape_name(sc.shape), frames, frames == 1 ? "" : "s", maps, maps == 1 ? "" : "s", R, C,
-                           req.kernel_only ? "bare kernels" : "SystemC",
+  r.headline = fmt::format("{} on scene '{}' ({}): {} frame{} ({} range map{}), {} x {} pixels, {}, {}",
+                           params.sensor_id(), sc.name, lk::shape_name(sc.shape), frames, frames == 1 ? "" : "s", maps,
+                           maps == 1 ? "" : "s", R, C, req.kernel_only ? "bare kernels" : "SystemC",
                            req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
   r.frame_label = "frame";
   set_timing(r, gt, phases_json(*model.k, cfg, gt), timing.frame_cycles.front().get<long long>(), run.frame_time_s(),
@@ -274,14 +279,18 @@ SimulationReport report(const Run& run) {
 SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSet& params, SimulationHost& host) {
   const auto t_start = Clock::now();
   const TofLockinConfig cfg = tof_lockin_from_params(params);
-  if (req.scene.empty()) throw UserError("--scene is required: a tof-lockin scene file, e.g. scenes/tof-lockin-plane.toml");
+  if (req.scene.empty())
+    throw UserError("--scene is required: a tof-lockin scene file, e.g. scenes/tof-lockin-plane.toml");
   const golden::FrameTiming gt = golden::frame_timing_tof_lockin(params);
   const long long frames = checked_frames(req, gt);
   const std::string vcd_base = host.open_trace();
-  if (req.tick && !req.kernel_only) throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only");
+  if (req.tick && !req.kernel_only)
+    throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only");
   check_time_step(req, cfg);
   const lk::LockinScene sc = scene::to_lockin_scene(scene::load_scene(req.scene, "tof-lockin"), cfg);
-  { lk::LockinGateGeneratorKernel check(cfg); }  // T_rep on the gate-clock grid, or UserError before anything is written
+  {
+    lk::LockinGateGeneratorKernel check(cfg);
+  }  // T_rep on the gate-clock grid, or UserError before anything is written
   host.open_output(sc.name);
   const int R = sc.window_rows(cfg), C = sc.window_columns(cfg);
   const lk::LockinSimOptions kopt = kernel_options(req);
@@ -291,14 +300,16 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
   Reconstruction rec = reconstruct(*model.k, sc, R, C);
   const GoldenPoints golden = golden_points(cfg, sc, R, C);
   FrameTiming timing = frame_timing(*model.k, gt);
-  const Run run{req, params, cfg, kopt, sc, model, gt, rec, golden, timing, frames,
-                std::chrono::duration<double>(Clock::now() - t_start).count(), R, C};
+  const Run run{req, params, cfg,    kopt,   sc,     model,
+                gt,  rec,    golden, timing, frames, std::chrono::duration<double>(Clock::now() - t_start).count(),
+                R,   C};
   out.report = report(run);
   out.summary = summary(run, out.report);
   out.frames_csv = std::move(timing.csv);
   out.range_map = std::move(rec.map);
   const long long maps = model.k->range_maps();
-  out.range_map.title = fmt::format("{} - {} ({} range map{})", sc.name, params.sensor_id(), maps, maps == 1 ? "" : "s");
+  out.range_map.title =
+      fmt::format("{} - {} ({} range map{})", sc.name, params.sensor_id(), maps, maps == 1 ? "" : "s");
   out.range_map.x_label = "column";
   return out;
 }

@@ -50,6 +50,8 @@ std::unique_ptr<McPointRunner> TofSpadMc::point(double signal_Hz, double backgro
   return std::make_unique<Runner>(cfg_, opt, signal_Hz, background_Hz);
 }
 
-std::unique_ptr<McModel> make_tof_spad_mc(const ParamSet& params) { return std::make_unique<TofSpadMc>(tof_spad_from_params(params)); }
+std::unique_ptr<McModel> make_tof_spad_mc(const ParamSet& params) {
+  return std::make_unique<TofSpadMc>(tof_spad_from_params(params));
+}
 
 }  // namespace rangesim::mc

@@ -26,8 +26,9 @@ long long poisson_by_pieces(pcg32& rng, double mu) {
 }
 }  // namespace
 
-SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, const SpadNoise& n, long long laser_cycles,
-                                 std::uint64_t seed, std::uint64_t frame, std::uint32_t row, std::uint32_t column)
+SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, const SpadNoise& n,
+                                 long long laser_cycles, std::uint64_t seed, std::uint64_t frame, std::uint32_t row,
+                                 std::uint32_t column)
     : period_s_(1.0 / cfg.laser.repetition_rate_Hz),
       laser_cycles_(laser_cycles),
       signal_per_cycle_(r.signal_Hz / cfg.laser.repetition_rate_Hz),
@@ -84,11 +85,13 @@ void SpadPixelKernel::next_signal_cycle() {
     // Far above 1 / dead time: exp(-mu) underflows past mu ~ 745 and the inversion above would
     // return its cap. A sum of Poisson(<= kInversionMaxMean) pieces is Poisson(mu) exactly; a sum
     // of 0 (probability e^-mu) is drawn again.
-    do k = poisson_by_pieces(signal_rng_, mu); while (k == 0);
+    do k = poisson_by_pieces(signal_rng_, mu);
+    while (k == 0);
   }
   // Offsets within the photon's own cycle: the echo (possibly beyond a period) around the round trip.
   const SpadTime t0{signal_cycle_, 0.0};
-  for (long long i = 0; i < k; ++i) signal_buf_.push_back(shifted(t0, round_trip_s_ + pulse_sigma_s_ * standard_normal(signal_rng_)));
+  for (long long i = 0; i < k; ++i)
+    signal_buf_.push_back(shifted(t0, round_trip_s_ + pulse_sigma_s_ * standard_normal(signal_rng_)));
   std::sort(signal_buf_.begin(), signal_buf_.end(), std::greater<SpadTime>());
 }
 
@@ -119,7 +122,10 @@ void SpadPixelKernel::advance() {
       signal_buf_.pop_back();
       if (signal_buf_.empty() && signal_cycle_ >= 0) next_signal_cycle();
     } else if (t == tu && !is_afterpulse) {
-      if (uniform_rate_Hz_ > 0) next_uniform(); else uniform_next_ = SpadTime::never_time();
+      if (uniform_rate_Hz_ > 0)
+        next_uniform();
+      else
+        uniform_next_ = SpadTime::never_time();
     } else {
       afterpulse_q_.pop();
     }

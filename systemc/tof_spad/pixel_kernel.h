@@ -55,7 +55,6 @@ struct SpadTime {
 
 class SpadPixelKernel {
  public:
-
   // `laser_cycles` periods of `cfg.laser` starting at t = 0 (the row's first START).
   SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& rates, const SpadNoise& noise, long long laser_cycles,
                   std::uint64_t seed, std::uint64_t frame, std::uint32_t row, std::uint32_t column);
@@ -79,20 +78,20 @@ class SpadPixelKernel {
   // t + dt_s, normalised into its cycle (never() past any representable cycle).
   SpadTime shifted(SpadTime t, double dt_s) const;
 
-  double period_s_;                   // laser period
-  long long laser_cycles_;            // end of the integration (cycle index past the last)
-  double signal_per_cycle_;           // mean signal photons per laser cycle
-  double uniform_rate_Hz_;            // background + dark (switched)
+  double period_s_;                                       // laser period
+  long long laser_cycles_;                                // end of the integration (cycle index past the last)
+  double signal_per_cycle_;                               // mean signal photons per laser cycle
+  double uniform_rate_Hz_;                                // background + dark (switched)
   double round_trip_s_, pulse_sigma_s_, jitter_sigma_s_;  // echo centre, pulse sigma, jitter rms
   double dead_time_s_, afterpulse_p_, afterpulse_tau_s_;  // SPAD recharge and afterpulsing
   bool jitter_on_, afterpulse_on_;
   pcg32 signal_rng_, uniform_rng_, spad_rng_;  // the three keyed streams
-  long long signal_cycle_ = -1;       // laser cycle of the buffered signal photons
-  std::vector<SpadTime> signal_buf_;  // signal photon times of that cycle, descending (pop_back = earliest)
+  long long signal_cycle_ = -1;                // laser cycle of the buffered signal photons
+  std::vector<SpadTime> signal_buf_;           // signal photon times of that cycle, descending (pop_back = earliest)
   SpadTime uniform_next_ = SpadTime::never_time();  // next uniform (background/dark) arrival
-  bool uniform_started_ = false;      // the first uniform gap is drawn from t = 0
+  bool uniform_started_ = false;                    // the first uniform gap is drawn from t = 0
   std::priority_queue<SpadTime, std::vector<SpadTime>, std::greater<SpadTime>> afterpulse_q_;  // pending afterpulses
-  SpadTime dead_until_ = SpadTime::earliest_time();  // SPAD recharged at this time
+  SpadTime dead_until_ = SpadTime::earliest_time();   // SPAD recharged at this time
   SpadTime next_avalanche_ = SpadTime::never_time();  // output time of the next avalanche
   long long avalanches_ = 0, photons_ = 0, afterpulses_ = 0;
 };

@@ -15,7 +15,8 @@ void check_range(const Scene& s, const std::string& key, double lo, double hi, c
   if (!s.has(key)) return;
   const double v = s.get(key, 0);
   if (v < lo || v > hi)
-    throw UserError(fmt::format("{}: {} = {:g}: allowed {:g} <= value <= {:g}{}", s.file, key, v, lo, hi, unit.empty() ? "" : " " + unit));
+    throw UserError(fmt::format("{}: {} = {:g}: allowed {:g} <= value <= {:g}{}", s.file, key, v, lo, hi,
+                                unit.empty() ? "" : " " + unit));
 }
 
 }  // namespace
@@ -41,8 +42,10 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
     s.depth_map_m = in.depth_map->resample(array_rows, array_columns);
     for (double z : s.depth_map_m)
       if (z < 0.3 || z > max_m)
-        throw UserError(fmt::format("{}: target.depth_map_file: distance {:g} m; allowed 0.3 <= distance <= {:g} m (laser period and "
-                                    "TDC range)", path, z, max_m));
+        throw UserError(fmt::format(
+            "{}: target.depth_map_file: distance {:g} m; allowed 0.3 <= distance <= {:g} m (laser period and "
+            "TDC range)",
+            path, z, max_m));
   }
   s.signal_Hz = in.get("rates.signal_Hz", s.signal_Hz);
   s.reference_distance_m = in.get("rates.reference_distance_m", s.distance_m);
@@ -56,7 +59,8 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
   s.first_row = get_int("window.first_row", (array_rows - s.rows) / 2, 0, array_rows - s.rows);
   s.columns = get_int("window.columns", std::min(16, array_columns), cpt, array_columns);
   if (s.columns % cpt != 0)
-    throw UserError(fmt::format("{}: window.columns = {}: allowed a multiple of tdc.columns_per_tdc = {}", path, s.columns, cpt));
+    throw UserError(
+        fmt::format("{}: window.columns = {}: allowed a multiple of tdc.columns_per_tdc = {}", path, s.columns, cpt));
   s.beam_rows = get_int("beam.rows", array_rows, 1, array_rows);
   s.beam_first_row = get_int("beam.first_row", 0, 0, array_rows - s.beam_rows);
   s.beam_columns = get_int("beam.columns", array_columns, 1, array_columns);
@@ -64,8 +68,9 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
   const int default_first = ((array_columns - s.columns) / 2) / cpt * cpt;
   s.first_column = get_int("window.first_column", default_first, 0, array_columns - s.columns);
   if (s.first_column % cpt != 0)
-    throw UserError(fmt::format("{}: window.first_column = {}: allowed a multiple of tdc.columns_per_tdc = {} (TDC group edge)",
-                                path, s.first_column, cpt));
+    throw UserError(
+        fmt::format("{}: window.first_column = {}: allowed a multiple of tdc.columns_per_tdc = {} (TDC group edge)",
+                    path, s.first_column, cpt));
   return s;
 }
 

@@ -16,17 +16,17 @@ namespace rangesim::scene {
 // A tof-spad scene: a plane or a step (two planes split at a column), SI units.
 struct SpadScene {
   std::string file, name, description, shape;  // shape: "plane" or "step"
-  double distance_m = 2.0;       // plane distance (step: columns < step_column)
-  double step_distance_m = 3.0;  // step: columns >= step_column
+  double distance_m = 2.0;                     // plane distance (step: columns < step_column)
+  double step_distance_m = 3.0;                // step: columns >= step_column
   int step_column = 64;
   double signal_Hz = 1e5;             // PDE-weighted signal count rate per pixel at reference_distance_m
   double reference_distance_m = 2.0;  // signal falls as (reference / distance)^2
   double background_Hz = 1e5;         // ambient count rate per pixel
-  int first_row = 62, rows = 4, first_column = 56, columns = 16;  // default simulated window
+  int first_row = 62, rows = 4, first_column = 56, columns = 16;                   // default simulated window
   int beam_first_row = 0, beam_rows = 0, beam_first_column = 0, beam_columns = 0;  // lit pixels (the echo's footprint)
 
   std::vector<double> depth_map_m;  // depth_map: depth of every pixel of the array, row-major
-  int map_columns = 0;               // depth_map: array columns
+  int map_columns = 0;              // depth_map: array columns
 
   double distance_at(int row, int column) const {
     if (shape == "depth_map") return depth_map_m[static_cast<std::size_t>(row) * map_columns + column];

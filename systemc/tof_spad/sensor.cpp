@@ -71,7 +71,8 @@ void TofSpadSensor::sequencer() {
       f.phase_cycles[1] += std::llround((sc_core::sc_time_stamp() - t0) / period_);
       for (std::size_t gi = 0; gi < groups.size(); ++gi)
         for (int k = 0; k < cpt; ++k)
-          f.pixels.push_back(kernel_.make_pixel(row, (sel_.first_group + static_cast<int>(gi)) * cpt + k, groups[gi], k));
+          f.pixels.push_back(
+              kernel_.make_pixel(row, (sel_.first_group + static_cast<int>(gi)) * cpt + k, groups[gi], k));
       for (std::uint32_t v : row_words) words_.push_back(v);
     }
     phase_o.write(0);
@@ -99,8 +100,8 @@ SystemcRun run_tof_spad_systemc(const TofSpadKernel& kernel, const PixelSelectio
   }
   // Bounded: the expected frame time plus 1%.
   const double cycles_per_frame = static_cast<double>(kernel.rows()) *
-      (static_cast<double>(kernel.laser_cycles()) * kernel.phase_bins() +
-       static_cast<double>(kernel.readout_words_per_row() * kernel.cycles_per_word()));
+                                  (static_cast<double>(kernel.laser_cycles()) * kernel.phase_bins() +
+                                   static_cast<double>(kernel.readout_words_per_row() * kernel.cycles_per_word()));
   sc_core::sc_start(dut.clock_period() * (cycles_per_frame * static_cast<double>(frames) * 1.01 + 10));
   if (tf) sc_core::sc_close_vcd_trace_file(tf);
   if (!dut.done()) SC_REPORT_ERROR("tof_spad", "simulation bound reached before the last frame");

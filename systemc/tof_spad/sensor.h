@@ -14,10 +14,10 @@ namespace rangesim::systemc::spad {
 
 class TofSpadSensor : public sc_core::sc_module {
  public:
-  sc_core::sc_out<int> row_o{"row_o"};                       // row connected to the TDCs
-  sc_core::sc_out<int> phase_o{"phase_o"};                   // 0 idle, 1 laser cycles, 2 histogram readout
-  sc_core::sc_out<bool> word_valid_o{"word_valid_o"};        // a histogram word is on word_o
-  sc_core::sc_out<std::uint32_t> word_o{"word_o"};           // histogram word (event count, saturated)
+  sc_core::sc_out<int> row_o{"row_o"};                 // row connected to the TDCs
+  sc_core::sc_out<int> phase_o{"phase_o"};             // 0 idle, 1 laser cycles, 2 histogram readout
+  sc_core::sc_out<bool> word_valid_o{"word_valid_o"};  // a histogram word is on word_o
+  sc_core::sc_out<std::uint32_t> word_o{"word_o"};     // histogram word (event count, saturated)
 
   SC_HAS_PROCESS(TofSpadSensor);
   TofSpadSensor(sc_core::sc_module_name name, const TofSpadKernel& kernel, const PixelSelection& sel, RateSource rates,

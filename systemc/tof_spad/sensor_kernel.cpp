@@ -20,13 +20,16 @@ TofSpadKernel::TofSpadKernel(const TofSpadConfig& cfg, int rows, int columns, co
   bins_ = model.bins();
   est_ = model.estimator();
   share_ = model.share();
-  const golden::spad::PileUpInput in = model.pile_up_input(std::vector<double>(static_cast<size_t>(bins_.phase_bins), 0.0));
+  const golden::spad::PileUpInput in =
+      model.pile_up_input(std::vector<double>(static_cast<size_t>(bins_.phase_bins), 0.0));
   block_event_bins_ = in.block_event_bins;
   block_overflow_bins_ = in.block_overflow_bins;
   laser_cycles_ = laser_cycles_per_row(cfg);
   cycles_per_word_ = cycles_per_histogram_word(cfg);
-  aggregation_blocker_ = spad_aggregation_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
-  background_blocker_ = spad_background_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
+  aggregation_blocker_ = spad_aggregation_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_,
+                                                  block_overflow_bins_);
+  background_blocker_ =
+      spad_background_blocker(cfg_, opt_.noise, bins_.phase_bins, bins_.codes, block_event_bins_, block_overflow_bins_);
 }
 
 std::optional<GroupHistogram> TofSpadKernel::simulate_group_background(std::uint64_t frame, int row, int group,
@@ -35,16 +38,19 @@ std::optional<GroupHistogram> TofSpadKernel::simulate_group_background(std::uint
   std::vector<PixelRates> px;
   for (int k = 0; k < cpt; ++k) px.push_back(rates(row, group * cpt + k));
   if (!spad_group_background_only(px)) return std::nullopt;
-  const bool no_arrivals = !(opt_.noise.background && px.front().background_Hz > 0) && !(opt_.noise.dark && cfg_.spad.dark_count_rate_Hz > 0);
+  const bool no_arrivals = !(opt_.noise.background && px.front().background_Hz > 0) &&
+                           !(opt_.noise.dark && cfg_.spad.dark_count_rate_Hz > 0);
   if (!background_blocker_.empty() && !no_arrivals) return std::nullopt;
   return background_spad_group(cfg_, opt_.noise, bins_, px, laser_cycles_, opt_.seed, frame, row, group * cpt);
 }
 
-GroupHistogram TofSpadKernel::simulate_group_aggregated(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+GroupHistogram TofSpadKernel::simulate_group_aggregated(std::uint64_t frame, int row, int group,
+                                                        const RateSource& rates) const {
   const int cpt = cfg_.tdc.columns_per_tdc;
   std::vector<PixelRates> px;
   for (int k = 0; k < cpt; ++k) px.push_back(rates(row, group * cpt + k));
-  GroupHistogram g = aggregate_spad_group(cfg_, opt_.noise, bins_, px, laser_cycles_, opt_.seed, frame, row, group * cpt);
+  GroupHistogram g =
+      aggregate_spad_group(cfg_, opt_.noise, bins_, px, laser_cycles_, opt_.seed, frame, row, group * cpt);
   return g;
 }
 
@@ -85,7 +91,10 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
       if (px[static_cast<size_t>(k)].peek() < t) t = px[static_cast<size_t>(k)].peek(), who = k;
     if (who < 0) break;
     px[static_cast<size_t>(who)].pop();
-    if (t.cycle < 0) { tdc.lose(); continue; }  // jittered before the first START
+    if (t.cycle < 0) {
+      tdc.lose();
+      continue;
+    }  // jittered before the first START
     if (t.cycle >= laser_cycles_) break;
     tdc.hit(who, t.cycle, phase_bin(t.offset_s));  // cycle and offset: exact at any integration time
   }
@@ -94,7 +103,8 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
   return g;
 }
 
-GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row, int group,
+                                                    const RateSource& rates) const {
   const int cpt = cfg_.tdc.columns_per_tdc, np = bins_.phase_bins, nc = bins_.codes;
   std::vector<SpadPixelKernel> px;
   px.reserve(static_cast<size_t>(cpt));
@@ -118,7 +128,8 @@ GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row
   auto abs_bin_of = [&](const SpadTime& t) { return t.cycle * np + phase_bin(t.offset_s); };
   SpadTime t;
   // Avalanches jittered before the first START find the TDC not yet running.
-  for (int who = earliest(t); who >= 0 && t.cycle < 0; who = earliest(t)) px[static_cast<size_t>(who)].pop(), ++g.lost_busy;
+  for (int who = earliest(t); who >= 0 && t.cycle < 0; who = earliest(t))
+    px[static_cast<size_t>(who)].pop(), ++g.lost_busy;
   const long long end_bin = laser_cycles_ * np;
   long long armed_from = 0;  // TDC armed in cycles >= armed_from (busy / stopped before)
   for (long long c = 0; c < end_bin; ++c) {
@@ -129,7 +140,10 @@ GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row
       const long long abs_bin = abs_bin_of(t);
       if (abs_bin > c) break;  // a later cycle
       px[static_cast<size_t>(who)].pop();
-      if (abs_bin < armed_from) { ++g.lost_busy; continue; }
+      if (abs_bin < armed_from) {
+        ++g.lost_busy;
+        continue;
+      }
       long long rearm;
       if (phase < nc) {
         ++g.events[static_cast<size_t>(who)][static_cast<size_t>(phase)];
@@ -149,7 +163,8 @@ GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row
   return g;
 }
 
-std::optional<double> TofSpadKernel::estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const {
+std::optional<double> TofSpadKernel::estimate(const std::vector<long long>& events,
+                                              const std::vector<long long>& armed) const {
   golden::spad::HistogramCounts h;
   h.events.assign(events.begin(), events.end());
   h.armed.assign(armed.begin(), armed.end());
@@ -167,7 +182,8 @@ PixelResult TofSpadKernel::make_pixel(int row, int column, const GroupHistogram&
   return p;
 }
 
-void TofSpadKernel::count_group(FrameResult& f, int row, int group, const GroupHistogram& g, const RateSource& rates) const {
+void TofSpadKernel::count_group(FrameResult& f, int row, int group, const GroupHistogram& g,
+                                const RateSource& rates) const {
   f.avalanches += g.avalanches, f.photons += g.photons;
   if (g.background_class) {
     ++f.groups_background;

@@ -18,11 +18,11 @@
 namespace rangesim::systemc::spad {
 
 struct TofSpadKernelOptions {
-  std::uint64_t seed = 1;       // key of the noise streams
-  SpadNoise noise;              // noise switches
-  bool event_skipping = true;   // false: the TDC group is clocked every cycle (simulate_group_ticked)
-  bool aggregate = false;       // true: groups whose laser cycles are independent drawn at once (spad_aggregation.h)
-  bool sparse = false;          // true: background-only groups (no echo) as one class, in closed form where exact
+  std::uint64_t seed = 1;      // key of the noise streams
+  SpadNoise noise;             // noise switches
+  bool event_skipping = true;  // false: the TDC group is clocked every cycle (simulate_group_ticked)
+  bool aggregate = false;      // true: groups whose laser cycles are independent drawn at once (spad_aggregation.h)
+  bool sparse = false;         // true: background-only groups (no echo) as one class, in closed form where exact
 };
 
 // Histogram memory of one TDC group after one row integration.
@@ -44,19 +44,19 @@ struct PixelResult {
   std::vector<long long> events;  // its histogram
   std::vector<long long> armed;   // its TDC's armed cycles per code
   long long avalanches = 0;
-  std::optional<double> time_s;   // estimator output (round trip)
-  double range_m = 0;             // c t / 2 (NaN when nothing detected)
+  std::optional<double> time_s;  // estimator output (round trip)
+  double range_m = 0;            // c t / 2 (NaN when nothing detected)
 };
 
 struct FrameResult {
   long long frame = 0;
-  long long cycles = 0;                     // measured clock cycles of the frame
-  std::vector<long long> phase_cycles;      // laser_cycles, histogram_readout
-  std::vector<PixelResult> pixels;          // simulated pixels, row-major
-  long long avalanches = 0, photons = 0;    // over the simulated pixels
+  long long cycles = 0;                                   // measured clock cycles of the frame
+  std::vector<long long> phase_cycles;                    // laser_cycles, histogram_readout
+  std::vector<PixelResult> pixels;                        // simulated pixels, row-major
+  long long avalanches = 0, photons = 0;                  // over the simulated pixels
   long long groups_aggregated = 0, groups_per_cycle = 0;  // which path ran, per simulated TDC group
-  long long groups_background = 0;          // background-only groups drawn as a class (sparse)
-  long long groups_background_per_cycle = 0;  // background-only groups run per cycle (blocker)
+  long long groups_background = 0;                        // background-only groups drawn as a class (sparse)
+  long long groups_background_per_cycle = 0;              // background-only groups run per cycle (blocker)
 };
 
 // Pixel subset: rows and TDC groups (columns [g cpt, (g+1) cpt)) simulated; the other rows only
@@ -90,7 +90,8 @@ class TofSpadKernel {
   const std::string& background_blocker() const { return background_blocker_; }
   // The sparse path of a background-only group: the class's closed form when exact (blocker empty
   // or no background at all), else nullopt (the caller runs the group per cycle).
-  std::optional<GroupHistogram> simulate_group_background(std::uint64_t frame, int row, int group, const RateSource& rates) const;
+  std::optional<GroupHistogram> simulate_group_background(std::uint64_t frame, int row, int group,
+                                                          const RateSource& rates) const;
   // Estimator of the golden model on one pixel's histogram.
   std::optional<double> estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const;
   PixelResult make_pixel(int row, int column, const GroupHistogram& g, int index) const;
@@ -101,8 +102,8 @@ class TofSpadKernel {
   FrameResult run_frame(std::uint64_t frame, const PixelSelection& sel, const RateSource& rates) const;
 
   // Schedule quantities (the sequencer's counters).
-  long long laser_cycles() const { return laser_cycles_; }       // STARTs per row integration
-  int phase_bins() const { return bins_.phase_bins; }            // clock cycles per laser period
+  long long laser_cycles() const { return laser_cycles_; }  // STARTs per row integration
+  int phase_bins() const { return bins_.phase_bins; }       // clock cycles per laser period
   int codes() const { return bins_.codes; }
   long long readout_words_per_row() const { return static_cast<long long>(cfg_.tdc.columns_per_tdc) * bins_.codes; }
   long long cycles_per_word() const { return cycles_per_word_; }

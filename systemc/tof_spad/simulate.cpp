@@ -69,7 +69,8 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
                                        : sp::run_tof_spad_systemc(kernel, sel, rates, frames, vcd_base);
   sim_wall_s = std::chrono::duration<double>(Clock::now() - t_sim).count();
   if (res.sc_errors > 0)
-    throw std::runtime_error(fmt::format("the model reported {} SystemC error(s): see the messages above", res.sc_errors));
+    throw std::runtime_error(
+        fmt::format("the model reported {} SystemC error(s): see the messages above", res.sc_errors));
   return res;
 }
 
@@ -87,7 +88,8 @@ struct Reconstruction {
 
 void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadScene& sc, const golden::FrameTiming& gt,
                std::vector<std::vector<int>>& cnt) {
-  out.frames_csv += fmt::format("{},{},{},{},{},{}\n", f.frame, f.cycles, f.phase_cycles[0], f.phase_cycles[1], f.avalanches, f.photons);
+  out.frames_csv += fmt::format("{},{},{},{},{},{}\n", f.frame, f.cycles, f.phase_cycles[0], f.phase_cycles[1],
+                                f.avalanches, f.photons);
   out.timing_matches = out.timing_matches && f.cycles == gt.frame_cycles && f.phase_cycles[0] == gt.phases[0].cycles &&
                        f.phase_cycles[1] == gt.phases[1].cycles;
   out.photons += f.photons, out.avalanches += f.avalanches;
@@ -105,11 +107,12 @@ void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadS
     if (p.time_s) {
       ++out.detected;
       if (lit) err = p.range_m - truth, out.err.add(err);
-      const auto r = static_cast<std::size_t>(p.row - sc.first_row), c = static_cast<std::size_t>(p.column - sc.first_column);
+      const auto r = static_cast<std::size_t>(p.row - sc.first_row),
+                 c = static_cast<std::size_t>(p.column - sc.first_column);
       out.map.range_m[r][c] += p.range_m, ++cnt[r][c];  // a sum until every frame is in
     }
-    out.points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth), p.time_s ? 1 : 0,
-                              p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev);
+    out.points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth),
+                              p.time_s ? 1 : 0, p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev);
   }
 }
 
@@ -120,7 +123,8 @@ Reconstruction reconstruct(const sp::SystemcRun& res, const scene::SpadScene& sc
   std::vector<std::vector<int>> cnt(rows, std::vector<int>(columns, 0));
   for (const auto& f : res.frames) add_frame(out, f, sc, gt, cnt);
   for (std::size_t r = 0; r < rows; ++r)
-    for (std::size_t c = 0; c < columns; ++c) out.map.range_m[r][c] = cnt[r][c] ? out.map.range_m[r][c] / cnt[r][c] : NAN;
+    for (std::size_t c = 0; c < columns; ++c)
+      out.map.range_m[r][c] = cnt[r][c] ? out.map.range_m[r][c] / cnt[r][c] : NAN;
   out.map.first_row = sc.first_row;
   for (int c = 0; c < sc.columns; ++c) out.map.column_names.push_back(fmt::format("c{}", sc.first_column + c));
   return out;
@@ -155,7 +159,9 @@ nlohmann::json phases_json(const Run& run) {
 void add_paths(const Run& run, nlohmann::json& j) {
   const Reconstruction& rec = run.rec;
   j["aggregation"] = {{"requested", run.kopt.aggregate},
-                      {"path", rec.groups_agg == 0 ? "per_cycle" : rec.groups_cyc == 0 ? "aggregated" : "mixed"},
+                      {"path", rec.groups_agg == 0   ? "per_cycle"
+                               : rec.groups_cyc == 0 ? "aggregated"
+                                                     : "mixed"},
                       {"groups_aggregated", rec.groups_agg},
                       {"groups_per_cycle", rec.groups_cyc},
                       {"blocker", run.kernel.aggregation_blocker()}};
@@ -209,28 +215,32 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
 // The wall-time line's note: the simulation speed and which laser-cycle paths ran (and why not).
 std::string wall_note(const Run& run) {
   const auto& [req, params, kopt, kernel, sc, res, gt, rec, sim_wall_s, wall_s] = run;
-  std::string note = fmt::format("{:.3g} photons/s simulated; laser cycles: {} group rows aggregated, {} per cycle{}",
-                                 static_cast<double>(rec.photons) / sim_wall_s, rec.groups_agg, rec.groups_cyc,
-                                 kopt.aggregate && !kernel.aggregation_blocker().empty() ? " (" + kernel.aggregation_blocker() + ")" : "");
+  std::string note = fmt::format(
+      "{:.3g} photons/s simulated; laser cycles: {} group rows aggregated, {} per cycle{}",
+      static_cast<double>(rec.photons) / sim_wall_s, rec.groups_agg, rec.groups_cyc,
+      kopt.aggregate && !kernel.aggregation_blocker().empty() ? " (" + kernel.aggregation_blocker() + ")" : "");
   if (rec.groups_bg + rec.groups_bg_cyc > 0)
-    note += fmt::format("; background-only group rows: {} as a class, {} per cycle{}", rec.groups_bg, rec.groups_bg_cyc,
-                        rec.groups_bg_cyc > 0 && !kernel.background_blocker().empty() ? " (" + kernel.background_blocker() + ")" : "");
+    note += fmt::format(
+        "; background-only group rows: {} as a class, {} per cycle{}", rec.groups_bg, rec.groups_bg_cyc,
+        rec.groups_bg_cyc > 0 && !kernel.background_blocker().empty() ? " (" + kernel.background_blocker() + ")" : "");
   return note;
 }
 
 SimulationReport report(const Run& run) {
   const auto& [req, params, kopt, kernel, sc, res, gt, rec, sim_wall_s, wall_s] = run;
   SimulationReport r;
-  r.headline = fmt::format("tof-spad on scene '{}' ({}): {} frame{}, {}, {}, window {} rows x {} columns", sc.name, sc.shape,
-                           res.frames.size(), res.frames.size() == 1 ? "" : "s", req.kernel_only ? "bare kernels" : "SystemC",
-                           req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed), sc.rows, sc.columns);
+  r.headline =
+      fmt::format("tof-spad on scene '{}' ({}): {} frame{}, {}, {}, window {} rows x {} columns", sc.name, sc.shape,
+                  res.frames.size(), res.frames.size() == 1 ? "" : "s", req.kernel_only ? "bare kernels" : "SystemC",
+                  req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed), sc.rows, sc.columns);
   r.frame_label = "frame";
   set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), gt.frames_per_range_map,
              rec.timing_matches);
-  r.points_line = fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), rec.detected);
+  r.points_line =
+      fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), rec.detected);
   if (rec.background_points > 0)
-    r.points_line += fmt::format(" ({} of {} background-only points: spurious, not in the error)", rec.background_detections,
-                                 rec.background_points);
+    r.points_line += fmt::format(" ({} of {} background-only points: spurious, not in the error)",
+                                 rec.background_detections, rec.background_points);
   r.error = rec.err;
   r.wall_time_s = wall_s;
   r.wall_note = wall_note(run);
@@ -252,13 +262,15 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
   const golden::FrameTiming gt = golden::frame_timing_tof_spad(params);
   SimulationResult out;
   Reconstruction rec = reconstruct(res, sc, gt);
-  const Run run{req, params, kopt, kernel, sc, res, gt, rec, sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
+  const Run run{req, params, kopt, kernel,     sc,
+                res, gt,     rec,  sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
   out.points_csv = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
-  out.range_map.title = fmt::format("{} — tof-spad ({} frame{})", sc.name, res.frames.size(), res.frames.size() == 1 ? "" : "s");
+  out.range_map.title =
+      fmt::format("{} — tof-spad ({} frame{})", sc.name, res.frames.size(), res.frames.size() == 1 ? "" : "s");
   out.range_map.x_label = "column in window";
   out.range_map.y_label = "row in window";
   return out;

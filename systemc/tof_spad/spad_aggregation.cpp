@@ -11,7 +11,7 @@
 namespace rangesim::systemc::spad {
 
 namespace {
-constexpr std::uint64_t kAggregateSalt = 0x4147475245474154ULL;  // "AGGREGAT"
+constexpr std::uint64_t kAggregateSalt = 0x4147475245474154ULL;   // "AGGREGAT"
 constexpr std::uint64_t kBackgroundSalt = 0x424b47524f554e44ULL;  // "BKGROUND"
 // Echoes of cycles more than this many periods away reach a cycle with mass erfc(> 2 P / sigma):
 // zero in double precision for any pulse shorter than a period.
@@ -68,7 +68,8 @@ long long poisson_at_least_two(pcg32& rng, double lam) {
 // draw by inversion; many: sequential binomials), each bin's detections to the columns in equal
 // shares (or overflow), and the other arrivals of the detecting cycles: more in the same bin
 // (zero-truncated Poisson - 1) into g.avalanches, the later bins' mean into after_mean.
-void draw_cycles(pcg32& rng, const std::vector<double>& lam, long long cycles, int nc, GroupHistogram& g, double& after_mean) {
+void draw_cycles(pcg32& rng, const std::vector<double>& lam, long long cycles, int nc, GroupHistogram& g,
+                 double& after_mean) {
   const int np = static_cast<int>(lam.size()), cpt = static_cast<int>(g.events.size());
   double lam_total = 0;
   for (double l : lam) lam_total += l;
@@ -80,7 +81,10 @@ void draw_cycles(pcg32& rng, const std::vector<double>& lam, long long cycles, i
       const double li = lam[static_cast<size_t>(i)];
       cum += std::exp(-before) * -std::expm1(-li);
       before += li;
-      if (u < cum) { x_of[static_cast<size_t>(i)] = 1; break; }
+      if (u < cum) {
+        x_of[static_cast<size_t>(i)] = 1;
+        break;
+      }
     }
   } else {
     long long n_rem = cycles;
@@ -103,7 +107,8 @@ void draw_cycles(pcg32& rng, const std::vector<double>& lam, long long cycles, i
     if (i < nc && x <= kFewDraws) {
       // Few detections: each to a uniformly drawn column (cheaper than cpt - 1 binomials).
       for (long long m = 0; m < x; ++m)
-        ++g.events[std::min(static_cast<size_t>(uniform_open01(rng) * cpt), static_cast<size_t>(cpt) - 1)][static_cast<size_t>(i)];
+        ++g.events[std::min(static_cast<size_t>(uniform_open01(rng) * cpt), static_cast<size_t>(cpt) - 1)]
+                  [static_cast<size_t>(i)];
     } else if (i < nc) {
       long long left = x;
       for (int c = 0; c < cpt; ++c) {
@@ -139,12 +144,13 @@ void finish_counts(pcg32& rng, double after_mean, long long L, int nc, GroupHist
   std::vector<long long> ev(static_cast<size_t>(nc), 0);
   for (const auto& e : g.events)
     for (int i = 0; i < nc; ++i) ev[static_cast<size_t>(i)] += e[static_cast<size_t>(i)];
-  for (int i = 0; i < nc; ++i) g.armed[static_cast<size_t>(i)] = L - before_hits, before_hits += ev[static_cast<size_t>(i)];
+  for (int i = 0; i < nc; ++i)
+    g.armed[static_cast<size_t>(i)] = L - before_hits, before_hits += ev[static_cast<size_t>(i)];
 }
 }  // namespace
 
-std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int np, int nc, int block_event_bins,
-                                     int block_overflow_bins) {
+std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int np, int nc,
+                                     int block_event_bins, int block_overflow_bins) {
   // The conditions that tie one laser cycle to the next (shared with background-only groups) ...
   if (std::string b = spad_background_blocker(cfg, noise, np, nc, block_event_bins, block_overflow_bins); !b.empty())
     return b;
@@ -157,7 +163,8 @@ std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& 
 
 bool spad_group_aggregatable(const std::vector<PixelRates>& px) {
   for (const auto& p : px)
-    if (p.signal_Hz != px.front().signal_Hz || p.background_Hz != px.front().background_Hz || p.round_trip_s != px.front().round_trip_s)
+    if (p.signal_Hz != px.front().signal_Hz || p.background_Hz != px.front().background_Hz ||
+        p.round_trip_s != px.front().round_trip_s)
       return false;
   return true;
 }
@@ -170,11 +177,13 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
   const PixelRates& r = pixels.front();
   const double sigma = noise.pulse_width ? cfg.laser.sigma_per_fwhm * cfg.laser.pulse_fwhm_s : 0.0;
-  const double uniform_Hz = (noise.background ? r.background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz : 0.0);
+  const double uniform_Hz =
+      (noise.background ? r.background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz : 0.0);
   const double mu = r.signal_Hz / cfg.laser.repetition_rate_Hz;  // signal photons per pixel and cycle
   // Bin edges as the TDC sorts phases (TofSpadKernel::phase_bin): bin 0 from the START, the last to the period.
   std::vector<double> edge(static_cast<size_t>(np) + 1);
-  for (int i = 0; i <= np; ++i) edge[static_cast<size_t>(i)] = std::clamp(bins.edges_s[static_cast<size_t>(i)], 0.0, period_s);
+  for (int i = 0; i <= np; ++i)
+    edge[static_cast<size_t>(i)] = std::clamp(bins.edges_s[static_cast<size_t>(i)], 0.0, period_s);
   edge[0] = 0, edge[static_cast<size_t>(np)] = period_s;
 
   pcg32 rng = pixel_stream(pixel_stream_key(seed ^ kAggregateSalt, frame, static_cast<std::uint32_t>(row),
@@ -183,10 +192,14 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
   g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
   g.armed.assign(static_cast<size_t>(nc), 0);
   g.starts = L;
-  std::vector<double> lam(static_cast<size_t>(np));     // group arrivals per bin and cycle
+  std::vector<double> lam(static_cast<size_t>(np));  // group arrivals per bin and cycle
   // Cycle classes: cycle c receives the echoes of cycles c + d, d in [max(-kSpill, -c), min(kSpill, L-1-c)];
   // the first and last kSpill cycles one by one, the interior ones together.
-  struct Class { long long cycles; int dlo, dhi; bool first; };
+  struct Class {
+    long long cycles;
+    int dlo, dhi;
+    bool first;
+  };
   std::vector<Class> classes;
   for (long long c = 0; c < L; ++c) {
     if (c == kSpill && L - kSpill > c) {
@@ -195,7 +208,8 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
       c = std::max(c, L - kSpill) - 1;
       continue;
     }
-    classes.push_back({1, static_cast<int>(std::max<long long>(-kSpill, -c)), static_cast<int>(std::min<long long>(kSpill, L - 1 - c)), c == 0});
+    classes.push_back({1, static_cast<int>(std::max<long long>(-kSpill, -c)),
+                       static_cast<int>(std::min<long long>(kSpill, L - 1 - c)), c == 0});
   }
   double after_mean = 0;  // arrivals after the detecting bin, summed over detecting cycles
   // Echo mass per bin and source offset d, computed once (bins more than 40 sigma away get 0).
@@ -228,17 +242,20 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
   return g;
 }
 
-std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int np, int nc, int block_event_bins,
-                                    int block_overflow_bins) {
+std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int np, int nc,
+                                    int block_event_bins, int block_overflow_bins) {
   // The aggregation conditions, less the one about simultaneous echoes (there is no echo).
   if (noise.afterpulse && cfg.spad.afterpulse_probability > 0)
-    return fmt::format("afterpulses (spad.afterpulse_probability = {:g}) tie an avalanche to the next ones", cfg.spad.afterpulse_probability);
+    return fmt::format("afterpulses (spad.afterpulse_probability = {:g}) tie an avalanche to the next ones",
+                       cfg.spad.afterpulse_probability);
   if (cfg.spad.dead_time_s > 0)
     return fmt::format("SPAD dead time {:g} s: an avalanche late in a cycle blinds the next one", cfg.spad.dead_time_s);
   if (noise.jitter && cfg.spad.jitter_sigma_s > 0)
-    return fmt::format("jitter {:g} s: avalanches cross cycle edges, so cycles are not independent", cfg.spad.jitter_sigma_s);
+    return fmt::format("jitter {:g} s: avalanches cross cycle edges, so cycles are not independent",
+                       cfg.spad.jitter_sigma_s);
   if (nc > 0 && nc - 1 + block_event_bins > np)
-    return fmt::format("TDC blocked {} bins after an event: a late event carries into the next cycle", block_event_bins);
+    return fmt::format("TDC blocked {} bins after an event: a late event carries into the next cycle",
+                       block_event_bins);
   if (nc < np && np - 1 + block_overflow_bins > np)
     return fmt::format("TDC blocked {} bins after an overflow: carries into the next cycle", block_overflow_bins);
   return {};
@@ -250,12 +267,14 @@ bool spad_group_background_only(const std::vector<PixelRates>& px) {
   return true;
 }
 
-GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& noise, const golden::spad::TdcBins& bins,
-                                     const std::vector<PixelRates>& pixels, long long laser_cycles, std::uint64_t seed,
-                                     std::uint64_t frame, int row, int first_column) {
+GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& noise,
+                                     const golden::spad::TdcBins& bins, const std::vector<PixelRates>& pixels,
+                                     long long laser_cycles, std::uint64_t seed, std::uint64_t frame, int row,
+                                     int first_column) {
   const int cpt = static_cast<int>(pixels.size()), np = bins.phase_bins, nc = bins.codes;
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
-  const double uniform_Hz = (noise.background ? pixels.front().background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz : 0.0);
+  const double uniform_Hz =
+      (noise.background ? pixels.front().background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz : 0.0);
   GroupHistogram g;
   g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
   g.armed.assign(static_cast<size_t>(nc), 0);

@@ -52,8 +52,9 @@ std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& n
 bool spad_group_background_only(const std::vector<PixelRates>& pixels);
 // The histogram of one background-only group (same fields as the per-cycle path; background_class
 // set). Random stream keyed by (seed ^ salt, frame, row, first column of the group).
-GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& noise, const golden::spad::TdcBins& bins,
-                                     const std::vector<PixelRates>& pixels, long long laser_cycles, std::uint64_t seed,
-                                     std::uint64_t frame, int row, int first_column);
+GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& noise,
+                                     const golden::spad::TdcBins& bins, const std::vector<PixelRates>& pixels,
+                                     long long laser_cycles, std::uint64_t seed, std::uint64_t frame, int row,
+                                     int first_column);
 
 }  // namespace rangesim::systemc::spad

@@ -7,8 +7,8 @@
 
 namespace rangesim::systemc::spad {
 
-TdcGroupKernel::TdcGroupKernel(int phase_bins, int codes, int block_event_bins,
-                               int block_overflow_bins, long long laser_cycles, int columns)
+TdcGroupKernel::TdcGroupKernel(int phase_bins, int codes, int block_event_bins, int block_overflow_bins,
+                               long long laser_cycles, int columns)
     : np_(phase_bins),
       nc_(codes),
       block_event_(block_event_bins),

@@ -21,8 +21,8 @@ struct TdcHit {
 class TdcGroupKernel {
  public:
   // Np phase bins per laser period, Nc codes with events, dead times in bins, L laser cycles.
-  TdcGroupKernel(int phase_bins, int codes, int block_event_bins, int block_overflow_bins,
-                 long long laser_cycles, int columns);
+  TdcGroupKernel(int phase_bins, int codes, int block_event_bins, int block_overflow_bins, long long laser_cycles,
+                 int columns);
   // Hit of column `who` in laser cycle `cycle` (< L) falling in TDC code `bin` (0 .. Np-1).
   TdcHit hit(int who, long long cycle, int bin);
   // An avalanche that cannot be timed (before the first START): counted as lost.

@@ -82,16 +82,15 @@ class StreamMonitor {
   int operations_done() const { return operations_done_; }
   int stream_bit_index() const { return nbits_; }  // index of the next stream bit
 
-  void observe(const AddressSearchPins& p, long long cycle, std::pair<int, int> tag,
-               std::vector<Txn>& out) {
+  void observe(const AddressSearchPins& p, long long cycle, std::pair<int, int> tag, std::vector<Txn>& out) {
     if (p.addr_valid) {
       bits_ = (bits_ << 1) | (p.addr_bit ? 1U : 0U);
       ++nbits_;
       const unsigned mask = (1U << address_bits_) - 1;
-      if (nbits_ == address_bits_) out.push_back({tag.first, tag.second, "left address",
-                                                  static_cast<int>(bits_ & mask), cycle});
-      if (nbits_ == 2 * address_bits_) out.push_back({tag.first, tag.second, "right address",
-                                                      static_cast<int>(bits_ & mask), cycle});
+      if (nbits_ == address_bits_)
+        out.push_back({tag.first, tag.second, "left address", static_cast<int>(bits_ & mask), cycle});
+      if (nbits_ == 2 * address_bits_)
+        out.push_back({tag.first, tag.second, "right address", static_cast<int>(bits_ & mask), cycle});
     }
     if (p.done) {
       out.push_back({tag.first, tag.second, "done (found)", p.found ? 1 : 0, cycle});
@@ -103,9 +102,9 @@ class StreamMonitor {
 
  private:
   int address_bits_;
-  unsigned bits_ = 0;         // stream bits so far, this operation
-  int nbits_ = 0;             // how many
-  int operations_done_ = 0;   // done_o pulses seen
+  unsigned bits_ = 0;        // stream bits so far, this operation
+  int nbits_ = 0;            // how many
+  int operations_done_ = 0;  // done_o pulses seen
 };
 
 template <class VTop>
@@ -130,8 +129,7 @@ class CosimTop : public sc_core::sc_module {
            const rangesim::rtl::AddressSearchRtlParams& params, sc_core::sc_time period)
       : sc_core::sc_module(name),
         clk("clk", period),
-        model("model", AddressSearchConfig{params.columns, params.address_bits, 2},
-              params.search_cycles),
+        model("model", AddressSearchConfig{params.columns, params.address_bits, 2}, params.search_cycles),
         options_(options),
         params_(params),
         rng_(options.seed),
@@ -172,21 +170,17 @@ class CosimTop : public sc_core::sc_module {
     for (int side = 0; side < 2; ++side) {
       for (const Txn& t : queue_[side]) {
         std::ostringstream s;
-        s << "frame " << t.frame << " row " << t.row << " cycle " << t.cycle << ": "
-          << (side == 0 ? "model" : "RTL") << " " << t.kind << " " << t.value
-          << " has no counterpart";
+        s << "frame " << t.frame << " row " << t.row << " cycle " << t.cycle << ": " << (side == 0 ? "model" : "RTL")
+          << " " << t.kind << " " << t.value << " has no counterpart";
         mismatch(s.str());
       }
     }
     report_.operations_done = monitor_[1].operations_done();
-    report_.finished = monitor_[0].operations_done() == operations_ &&
-                       monitor_[1].operations_done() == operations_;
+    report_.finished = monitor_[0].operations_done() == operations_ && monitor_[1].operations_done() == operations_;
   }
 
  private:
-  std::pair<int, int> tag(int op) const {
-    return {op / options_.rows_per_frame, op % options_.rows_per_frame};
-  }
+  std::pair<int, int> tag(int op) const { return {op / options_.rows_per_frame, op % options_.rows_per_frame}; }
 
   void drive(const ActivationRow& row) {
     ActPort v{};
@@ -211,8 +205,7 @@ class CosimTop : public sc_core::sc_module {
       start.write(false);
       drive(random_row(params_.columns, rng_));  // must be ignored
       int cycles = k.operation_cycles(row.any());
-      if (op == options_.restart_operation && options_.restart_cycle >= 1 &&
-          options_.restart_cycle <= cycles) {
+      if (op == options_.restart_operation && options_.restart_cycle >= 1 && options_.restart_cycle <= cycles) {
         for (int i = 1; i < options_.restart_cycle; ++i, --cycles) wait();
         start.write(true);  // protocol violation: start while busy
         wait();
@@ -231,8 +224,7 @@ class CosimTop : public sc_core::sc_module {
     if (cycle < kResetCycles) return;  // RTL state is random until the reset edge
     AddressSearchPins p[2];
     for (int s = 0; s < 2; ++s) {
-      p[s] = {busy[s].read(), found[s].read(), addr_valid[s].read(), addr_bit[s].read(),
-              done[s].read()};
+      p[s] = {busy[s].read(), found[s].read(), addr_valid[s].read(), addr_bit[s].read(), done[s].read()};
     }
     // Fault injection: corrupt what the scoreboard sees of the RTL stream.
     if (options_.fault_operation >= 0 && report_.fault_frame < 0 &&
@@ -253,17 +245,17 @@ class CosimTop : public sc_core::sc_module {
     }
   }
 
-  void compare_pins(const AddressSearchPins& e, const AddressSearchPins& g, long long cycle,
-                    std::pair<int, int> t) {
-    const std::pair<const char*, std::pair<bool, bool>> pins[] = {
-        {"busy_o", {e.busy, g.busy}},           {"found_o", {e.found, g.found}},
-        {"addr_valid_o", {e.addr_valid, g.addr_valid}},
-        {"addr_bit_o", {e.addr_bit, g.addr_bit}}, {"done_o", {e.done, g.done}}};
+  void compare_pins(const AddressSearchPins& e, const AddressSearchPins& g, long long cycle, std::pair<int, int> t) {
+    const std::pair<const char*, std::pair<bool, bool>> pins[] = {{"busy_o", {e.busy, g.busy}},
+                                                                  {"found_o", {e.found, g.found}},
+                                                                  {"addr_valid_o", {e.addr_valid, g.addr_valid}},
+                                                                  {"addr_bit_o", {e.addr_bit, g.addr_bit}},
+                                                                  {"done_o", {e.done, g.done}}};
     for (const auto& [name, v] : pins) {
       if (v.first != v.second) {
         std::ostringstream s;
-        s << "frame " << t.first << " row " << t.second << " cycle " << cycle << ": " << name
-          << " expected " << v.first << " got " << v.second;
+        s << "frame " << t.first << " row " << t.second << " cycle " << cycle << ": " << name << " expected " << v.first
+          << " got " << v.second;
         mismatch(s.str());
       }
     }
@@ -274,8 +266,8 @@ class CosimTop : public sc_core::sc_module {
     std::ostringstream s;
     s << "frame " << e.frame << " row " << e.row << " cycle " << e.cycle << ": ";
     if (e.kind != g.kind || e.frame != g.frame || e.row != g.row) {
-      s << "expected " << e.kind << " " << e.value << ", got " << g.kind << " " << g.value
-        << " (frame " << g.frame << " row " << g.row << " cycle " << g.cycle << ")";
+      s << "expected " << e.kind << " " << e.value << ", got " << g.kind << " " << g.value << " (frame " << g.frame
+        << " row " << g.row << " cycle " << g.cycle << ")";
     } else if (e.value != g.value) {
       s << e.kind << " expected " << e.value << " got " << g.value;
     } else if (e.cycle != g.cycle) {
@@ -296,11 +288,11 @@ class CosimTop : public sc_core::sc_module {
 
   AddressSearchCosimOptions options_;
   rangesim::rtl::AddressSearchRtlParams params_;
-  std::mt19937_64 rng_;          // stimulus
-  int operations_ = 0;           // frames * rows_per_frame
-  long long cycle_ = 0;          // cycles seen by the monitor
-  StreamMonitor monitor_[2];     // [0] model, [1] RTL
-  std::vector<Txn> queue_[2];    // transactions not yet compared
+  std::mt19937_64 rng_;        // stimulus
+  int operations_ = 0;         // frames * rows_per_frame
+  long long cycle_ = 0;        // cycles seen by the monitor
+  StreamMonitor monitor_[2];   // [0] model, [1] RTL
+  std::vector<Txn> queue_[2];  // transactions not yet compared
   AddressSearchCosimReport report_;
 };
 
@@ -323,15 +315,11 @@ AddressSearchCosimReport run(const AddressSearchCosimOptions& options,
     sc_core::sc_trace(sc_tf, top.clk, "clk");
     sc_core::sc_trace(sc_tf, top.start, "start");
     const char* names[] = {"busy_o", "found_o", "addr_valid_o", "addr_bit_o", "done_o"};
-    sc_core::sc_signal<bool>* sigs[] = {top.busy, top.found, top.addr_valid, top.addr_bit,
-                                        top.done};
+    sc_core::sc_signal<bool>* sigs[] = {top.busy, top.found, top.addr_valid, top.addr_bit, top.done};
     for (int i = 0; i < 5; ++i) sc_core::sc_trace(sc_tf, sigs[i][0], names[i]);
   }
-  const long long per_op = 1 + params.search_cycles + 2 * params.address_bits +
-                           options.max_gap_cycles;
-  const long long limit = options.cycle_limit > 0
-                              ? options.cycle_limit
-                              : kResetCycles + 10 + per_op * top.operations();
+  const long long per_op = 1 + params.search_cycles + 2 * params.address_bits + options.max_gap_cycles;
+  const long long limit = options.cycle_limit > 0 ? options.cycle_limit : kResetCycles + 10 + per_op * top.operations();
   // Verilator tracing must start after elaboration (Verilator's SystemC examples).
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
   std::unique_ptr<VerilatedVcdSc> rtl_tf;
@@ -355,10 +343,8 @@ AddressSearchCosimReport run(const AddressSearchCosimOptions& options,
 
 AddressSearchCosimReport run_address_search_cosim(const AddressSearchCosimOptions& options) {
   switch (options.instance) {
-    case AddressSearchInstance::Default:
-      return run<Vaddress_search>(options, rangesim::rtl::kAddressSearchDefault);
-    case AddressSearchInstance::Small:
-      break;
+    case AddressSearchInstance::Default: return run<Vaddress_search>(options, rangesim::rtl::kAddressSearchDefault);
+    case AddressSearchInstance::Small: break;
   }
   return run<Vaddress_search_small>(options, rangesim::rtl::kAddressSearchSmall);
 }

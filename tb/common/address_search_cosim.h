@@ -16,10 +16,10 @@ enum class AddressSearchInstance {
 
 struct AddressSearchCosimOptions {
   AddressSearchInstance instance = AddressSearchInstance::Small;
-  int frames = 5;                 // rows are tagged (frame, row); operations = frames * rows
+  int frames = 5;  // rows are tagged (frame, row); operations = frames * rows
   int rows_per_frame = 100;
-  std::uint64_t seed = 1;         // stimulus and Verilator's random initial state
-  int max_gap_cycles = 2;         // idle cycles between operations, uniform in [0, max]
+  std::uint64_t seed = 1;  // stimulus and Verilator's random initial state
+  int max_gap_cycles = 2;  // idle cycles between operations, uniform in [0, max]
   // Fault injection (negative tests): flip stream bit `fault_bit` (0 = left MSB) of the RTL
   // output seen by the scoreboard, in the first operation from index `fault_operation` on that
   // streams (-1: no fault). The report says where it went.
@@ -29,8 +29,8 @@ struct AddressSearchCosimOptions {
   // `restart_operation` (-1: off); the RTL assertion a_start_while_busy must fire.
   int restart_operation = -1;
   int restart_cycle = 1;
-  long long cycle_limit = 0;      // 0: enough for all operations plus slack
-  std::string vcd_prefix;         // non-empty: <prefix>_rtl.vcd (Verilator) + <prefix>_sc.vcd
+  long long cycle_limit = 0;  // 0: enough for all operations plus slack
+  std::string vcd_prefix;     // non-empty: <prefix>_rtl.vcd (Verilator) + <prefix>_sc.vcd
 };
 
 struct AddressSearchCosimReport {

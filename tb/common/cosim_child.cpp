@@ -23,15 +23,23 @@ ChildArgs parse_args(int argc, char** argv) {
   ChildArgs a;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
-    if (k == "--preset") a.preset = v;
-    else if (k == "--report") a.report = v;
-    else if (k == "--cycles") a.options.cycles = std::stoull(v);
-    else if (k == "--seed") a.options.seed = std::stoull(v);
-    else if (k == "--fault") a.options.inject_fault = v;
-    else if (k == "--trace") a.options.trace_path = v;
-    else throw std::invalid_argument("cosim child: unknown argument " + k);
+    if (k == "--preset")
+      a.preset = v;
+    else if (k == "--report")
+      a.report = v;
+    else if (k == "--cycles")
+      a.options.cycles = std::stoull(v);
+    else if (k == "--seed")
+      a.options.seed = std::stoull(v);
+    else if (k == "--fault")
+      a.options.inject_fault = v;
+    else if (k == "--trace")
+      a.options.trace_path = v;
+    else
+      throw std::invalid_argument("cosim child: unknown argument " + k);
   }
-  if (a.preset.empty() || a.report.empty()) throw std::invalid_argument("cosim child: --preset and --report are required");
+  if (a.preset.empty() || a.report.empty())
+    throw std::invalid_argument("cosim child: --preset and --report are required");
   return a;
 }
 
@@ -51,14 +59,28 @@ void write_file(const std::string& path, const std::string& text) {
 std::string cosim_report_file_text(const CosimReport& r, const RtlCoverage& cov) {
   json ms = json::array();
   for (const auto& m : r.first_mismatches)
-    ms.push_back({{"check", m.check}, {"frame", m.frame}, {"row", m.row}, {"column", m.column}, {"cycle", m.cycle},
-                  {"expected", m.expected}, {"actual", m.actual}});
-  const json rep{{"target", r.target}, {"cycles", r.cycles}, {"transactions", r.transactions},
-                 {"mismatches", r.mismatches}, {"first_mismatches", ms}, {"golden_checks", r.golden_checks},
-                 {"rtl_assertions_failed", r.rtl_assertions_failed}, {"sc_errors", r.sc_errors},
-                 {"fault_injected", r.fault_injected}, {"fault_site", r.fault_site}};
-  const json c{{"available", cov.available}, {"line_points", cov.line_points}, {"line_hit", cov.line_hit},
-               {"toggle_points", cov.toggle_points}, {"toggle_hit", cov.toggle_hit}};
+    ms.push_back({{"check", m.check},
+                  {"frame", m.frame},
+                  {"row", m.row},
+                  {"column", m.column},
+                  {"cycle", m.cycle},
+                  {"expected", m.expected},
+                  {"actual", m.actual}});
+  const json rep{{"target", r.target},
+                 {"cycles", r.cycles},
+                 {"transactions", r.transactions},
+                 {"mismatches", r.mismatches},
+                 {"first_mismatches", ms},
+                 {"golden_checks", r.golden_checks},
+                 {"rtl_assertions_failed", r.rtl_assertions_failed},
+                 {"sc_errors", r.sc_errors},
+                 {"fault_injected", r.fault_injected},
+                 {"fault_site", r.fault_site}};
+  const json c{{"available", cov.available},
+               {"line_points", cov.line_points},
+               {"line_hit", cov.line_hit},
+               {"toggle_points", cov.toggle_points},
+               {"toggle_hit", cov.toggle_hit}};
   return json{{"report", rep}, {"coverage", c}}.dump();
 }
 

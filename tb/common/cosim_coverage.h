@@ -10,7 +10,7 @@
 namespace rangesim::tb {
 
 struct RtlCoverage {
-  bool available = false;         // some model in this process carries coverage points
+  bool available = false;  // some model in this process carries coverage points
   long long line_points = 0, line_hit = 0;
   long long toggle_points = 0, toggle_hit = 0;
   double line_percent() const { return line_points ? 100.0 * line_hit / line_points : 0.0; }

@@ -15,14 +15,10 @@ namespace rangesim::tb {
 template <class Port>
 using PortData = typename std::decay_t<Port>::data_type;
 
-inline std::uint64_t low_mask(int width) {
-  return width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1;
-}
+inline std::uint64_t low_mask(int width) { return width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1; }
 
 // Bits [lo, lo + width) of a port value (width <= 64).
-inline std::uint64_t port_field(bool v, int lo, int width) {
-  return lo == 0 && width >= 1 ? (v ? 1U : 0U) : 0U;
-}
+inline std::uint64_t port_field(bool v, int lo, int width) { return lo == 0 && width >= 1 ? (v ? 1U : 0U) : 0U; }
 inline std::uint64_t port_field(std::uint32_t v, int lo, int width) {
   return lo >= 32 ? 0 : (std::uint64_t{v} >> lo) & low_mask(width);
 }
@@ -51,7 +47,8 @@ inline void port_from_words(const std::vector<std::uint32_t>& w, std::uint64_t& 
 }
 template <int W>
 void port_from_words(const std::vector<std::uint32_t>& w, sc_dt::sc_bv<W>& v) {
-  for (int i = 0; i < (W + 31) / 32; ++i) v.set_word(i, i < static_cast<int>(w.size()) ? w[static_cast<std::size_t>(i)] : 0U);
+  for (int i = 0; i < (W + 31) / 32; ++i)
+    v.set_word(i, i < static_cast<int>(w.size()) ? w[static_cast<std::size_t>(i)] : 0U);
 }
 
 // `width` bits of a port as lower-case hex, zero-padded to ceil(width / 4) digits: the format of

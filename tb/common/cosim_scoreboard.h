@@ -24,8 +24,8 @@ class CosimScoreboard {
 
   // One compared transaction (counted); a mismatch if expected != actual.
   template <class T>
-  bool expect(const char* check, long long frame, long long row, long long column,
-              std::uint64_t cycle, const T& expected, const T& actual) {
+  bool expect(const char* check, long long frame, long long row, long long column, std::uint64_t cycle,
+              const T& expected, const T& actual) {
     ++r_.transactions;
     if (expected == actual) return true;
     mismatch(check, frame, row, column, cycle, to_text(expected), to_text(actual));
@@ -33,15 +33,14 @@ class CosimScoreboard {
   }
   // Per-cycle pin comparison: not a transaction, but a mismatch like one.
   template <class T>
-  bool pin(const char* name, long long frame, std::uint64_t cycle, const T& expected,
-           const T& actual) {
+  bool pin(const char* name, long long frame, std::uint64_t cycle, const T& expected, const T& actual) {
     if (expected == actual) return true;
     mismatch(name, frame, -1, -1, cycle, to_text(expected), to_text(actual));
     return false;
   }
 
-  void mismatch(const std::string& check, long long frame, long long row, long long column,
-                std::uint64_t cycle, const std::string& expected, const std::string& actual) {
+  void mismatch(const std::string& check, long long frame, long long row, long long column, std::uint64_t cycle,
+                const std::string& expected, const std::string& actual) {
     add({check, frame, row, column, cycle, expected, actual});
   }
   void add(CosimMismatch m) {
@@ -58,8 +57,7 @@ class CosimScoreboard {
     if (m.frame >= 0) s << "frame " << m.frame << " ";
     if (m.row >= 0) s << "row " << m.row << " ";
     if (m.column >= 0) s << "column " << m.column << " ";
-    s << "cycle " << m.cycle << ": " << m.check << " expected " << m.expected << " got "
-      << m.actual;
+    s << "cycle " << m.cycle << ": " << m.check << " expected " << m.expected << " got " << m.actual;
     return s.str();
   }
 
@@ -90,7 +88,12 @@ inline VerilatedContext* cosim_verilator_context(const CosimOptions& o) {
 
 // The mismatch recorded when a Verilog assertion fired (Verilator counts, not names, them).
 inline CosimMismatch rtl_assertion_mismatch(std::uint64_t cycle) {
-  return {"rtl_assertion", -1, -1, -1, cycle, "no assertion fails",
+  return {"rtl_assertion",
+          -1,
+          -1,
+          -1,
+          cycle,
+          "no assertion fails",
           "a Verilog assertion fired (its $error message names it)"};
 }
 

@@ -20,7 +20,7 @@ struct CosimOptions {
 
 // One mismatch, readable at a glance: where (frame, row, column, cycle), what, expected, actual.
 struct CosimMismatch {
-  std::string check;         // scoreboard check id, e.g. "address", "centre", "gate_edge", "tdc_code"
+  std::string check;  // scoreboard check id, e.g. "address", "centre", "gate_edge", "tdc_code"
   long long frame = -1, row = -1, column = -1;  // -1: not applicable
   std::uint64_t cycle = 0;
   std::string expected, actual;
@@ -32,22 +32,22 @@ inline constexpr std::size_t kKeptMismatches = 20;
 
 struct CosimReport {
   std::string target;
-  std::uint64_t cycles = 0;        // clock cycles simulated
-  std::uint64_t transactions = 0;  // scoreboard transactions compared (RTL vs SystemC vs golden)
-  std::uint64_t mismatches = 0;    // total, including assertion failures
+  std::uint64_t cycles = 0;                     // clock cycles simulated
+  std::uint64_t transactions = 0;               // scoreboard transactions compared (RTL vs SystemC vs golden)
+  std::uint64_t mismatches = 0;                 // total, including assertion failures
   std::vector<CosimMismatch> first_mismatches;  // at most kKeptMismatches
-  std::uint64_t golden_checks = 0;  // reconstructed positions/ranges compared with the golden model
-  int rtl_assertions_failed = 0;    // named SystemVerilog assertions that fired
-  int sc_errors = 0;                // SC_ERROR reports
-  bool fault_injected = false;      // the requested fault was applied somewhere
-  std::string fault_site;           // where it was applied (readable)
+  std::uint64_t golden_checks = 0;              // reconstructed positions/ranges compared with the golden model
+  int rtl_assertions_failed = 0;                // named SystemVerilog assertions that fired
+  int sc_errors = 0;                            // SC_ERROR reports
+  bool fault_injected = false;                  // the requested fault was applied somewhere
+  std::string fault_site;                       // where it was applied (readable)
 };
 
 using CosimRunner = CosimReport (*)(const CosimOptions&);
 
 struct CosimTarget {
-  const char* name;         // `rangesim cosim <name>`: a sensor id or a block name
-  const char* description;  // one line for --help and `rangesim cosim --list`
+  const char* name;                 // `rangesim cosim <name>`: a sensor id or a block name
+  const char* description;          // one line for --help and `rangesim cosim --list`
   std::vector<std::string> faults;  // names accepted by --inject-fault, each must be caught
   CosimRunner run;
 };

@@ -10,7 +10,7 @@
 
 namespace rangesim::tb {
 
-#define RANGESIM_DECLARE(s)                          \
+#define RANGESIM_DECLARE(s)                     \
   std::vector<CosimTarget> s##_cosim_targets(); \
   std::vector<PresetCosim> s##_preset_cosims();
 RANGESIM_FOR_EACH_SENSOR(RANGESIM_DECLARE)
@@ -24,7 +24,8 @@ const std::vector<CosimTarget>& cosim_targets() {
     RANGESIM_FOR_EACH_SENSOR(RANGESIM_APPEND)
 #undef RANGESIM_APPEND
     // Sensors first (their ids have '-', block names '_'), each group in listing order.
-    std::stable_partition(t.begin(), t.end(), [](const CosimTarget& x) { return std::string(x.name).find('-') != std::string::npos; });
+    std::stable_partition(t.begin(), t.end(),
+                          [](const CosimTarget& x) { return std::string(x.name).find('-') != std::string::npos; });
     return t;
   }();
   return targets;

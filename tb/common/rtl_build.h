@@ -19,8 +19,8 @@
 namespace rangesim::tb {
 
 struct RtlBuildSpec {
-  std::string folder;          // rtl/<folder>/ and tb/<folder>/, e.g. "ls_conventional"
-  std::string top;             // top module, rtl/<folder>/<top>.sv
+  std::string folder;  // rtl/<folder>/ and tb/<folder>/, e.g. "ls_conventional"
+  std::string top;     // top module, rtl/<folder>/<top>.sv
   VerilogParameters parameters;
   std::string harness_header;  // included by the generated sc_main, e.g. "tb/ls_conventional/cosim_harness.h"
   std::string runner;          // function template of that header: PresetCosimRunner once instantiated
@@ -29,8 +29,8 @@ struct RtlBuildSpec {
 // A sensor whose readout is co-simulated at a preset's own parameters (`rangesim cosim
 // <preset.toml>`). Each sensor lists its own in tb/<sensor>/cosim_targets.cpp.
 struct PresetCosim {
-  const char* sensor;  // sensor id of the presets it takes
-  const char* target;  // the built-in target it generalises: same harness, same faults
+  const char* sensor;                            // sensor id of the presets it takes
+  const char* target;                            // the built-in target it generalises: same harness, same faults
   RtlBuildSpec (*spec)(const ParamSet& preset);  // UserError when the RTL cannot take the preset
 };
 const std::vector<PresetCosim>& preset_cosims();  // tb/common/cosim_targets.cpp

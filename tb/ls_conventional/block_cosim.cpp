@@ -187,7 +187,8 @@ class SequencerTop : public sc_core::sc_module {
   sc_core::sc_signal<bool> rst{"rst", true};
   Vmultisampling_sequencer_small rtl{"rtl"};
   sc_core::sc_signal<PortData<decltype(rtl.phase_o)>> phase{"phase"};
-  sc_core::sc_signal<bool> pix_reset{"pix_reset"}, latch{"latch"}, search_start{"search_start"}, frame_done{"frame_done"};
+  sc_core::sc_signal<bool> pix_reset{"pix_reset"}, latch{"latch"}, search_start{"search_start"},
+      frame_done{"frame_done"};
   sc_core::sc_signal<PortData<decltype(rtl.sampling_o)>> sampling{"sampling"};
   sc_core::sc_signal<PortData<decltype(rtl.frame_o)>> frame{"frame"};
 
@@ -267,7 +268,8 @@ class SequencerTop : public sc_core::sc_module {
           << " frame " << p.frame;
         return s.str();
       };
-      add(report, {"sequencer", static_cast<long long>(m.frame), -1, -1, static_cast<std::uint64_t>(cycle), str(m), str(g)});
+      add(report,
+          {"sequencer", static_cast<long long>(m.frame), -1, -1, static_cast<std::uint64_t>(cycle), str(m), str(g)});
     }
     if (report.cycles >= o_.cycles) sc_core::sc_stop();
   }

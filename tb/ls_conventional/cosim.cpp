@@ -32,7 +32,8 @@ LsConventionalCosimResult run_ls_conventional_cosim(const LsConventionalCosimOpt
     check_instance_parameters("Vls_conventional_readout", verilog_parameters(cfg, "Vls_conventional_readout"));
     return run_ls_conventional_harness<Vls_conventional_readout>(options, cfg, "ls-conventional-full");
   }
-  check_instance_parameters("Vls_conventional_readout_small", verilog_parameters(cfg, "Vls_conventional_readout_small"));
+  check_instance_parameters("Vls_conventional_readout_small",
+                            verilog_parameters(cfg, "Vls_conventional_readout_small"));
   return run_ls_conventional_harness<Vls_conventional_readout_small>(options, cfg, "ls-conventional");
 }
 

@@ -24,11 +24,11 @@
 namespace rangesim::tb {
 
 struct LsConventionalCosimOptions {
-  bool full_size = false;        // Vls_conventional_readout (375 x 365) instead of the small instance
-  long long frames = 10;         // frame accesses
-  std::uint64_t seed = 1;        // scenes, noise on (even seeds) or off (odd), Verilator's initial state
-  std::string inject_fault;      // "", "address_bit_flip", "dropped_row", "centre_off_by_one"
-  std::string trace_path;        // RTL VCD ("" = none)
+  bool full_size = false;    // Vls_conventional_readout (375 x 365) instead of the small instance
+  long long frames = 10;     // frame accesses
+  std::uint64_t seed = 1;    // scenes, noise on (even seeds) or off (odd), Verilator's initial state
+  std::string inject_fault;  // "", "address_bit_flip", "dropped_row", "centre_off_by_one"
+  std::string trace_path;    // RTL VCD ("" = none)
   // Icarus replay (tb/ls_conventional_readout_tb.sv): the inputs of every clock period as
   // $readmemh lines {rst, cmp_i}, and the outputs from the reset edge on as %h fields.
   std::string record_stimulus_path, record_outputs_path;
@@ -37,9 +37,9 @@ struct LsConventionalCosimOptions {
 
 struct LsConventionalCosimResult {
   CosimReport report;
-  long long frames = 0;       // frame accesses compared
-  double wall_time_s = 0;     // elaboration + run
-  int recorded_cycles = 0;    // lines of the stimulus record
+  long long frames = 0;     // frame accesses compared
+  double wall_time_s = 0;   // elaboration + run
+  int recorded_cycles = 0;  // lines of the stimulus record
 };
 
 inline const std::vector<std::string>& ls_conventional_faults() {

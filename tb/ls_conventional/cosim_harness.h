@@ -45,8 +45,8 @@ namespace ls_conventional_harness {
 using rangesim::systemc::CentreProcessorPins;
 using rangesim::systemc::FrameStimulus;
 using rangesim::systemc::LsConventionalSensorKernel;
-using rangesim::systemc::ReadoutPhase;
 using rangesim::systemc::MultisamplingSequencerPins;
+using rangesim::systemc::ReadoutPhase;
 
 constexpr int kResetEdges = 3;  // rst high; before its first edge the RTL state is random
 
@@ -62,8 +62,8 @@ inline systemc::StimulusSource random_scenes(std::uint64_t seed, int rows, int c
     out.rows.assign(static_cast<std::size_t>(rows), {});
     for (auto& r : out.rows) {
       const bool beam = u(rng) >= 0.1;
-      r.signal_V = beam ? std::pow(10.0, -3.0 + 3.2 * u(rng)) : 0.0;     // 1 mV .. 1.6 V
-      r.background_V = std::pow(10.0, -3.0 + 2.7 * u(rng));             // 1 mV .. 0.5 V
+      r.signal_V = beam ? std::pow(10.0, -3.0 + 3.2 * u(rng)) : 0.0;  // 1 mV .. 1.6 V
+      r.background_V = std::pow(10.0, -3.0 + 2.7 * u(rng));           // 1 mV .. 0.5 V
       r.centre_px = -0.5 + columns * u(rng);
     }
   };
@@ -160,8 +160,8 @@ class LsCosimTop : public sc_core::sc_module {
   static std::string seq_string(const MultisamplingSequencerPins& s) {
     std::ostringstream o;
     o << "phase " << systemc::readout_phase_name(s.phase) << " pix_reset " << s.pix_reset << " latch " << s.latch
-      << " search_start " << s.search_start << " frame_done " << s.frame_done << " sampling " << s.sampling
-      << " frame " << s.frame;
+      << " search_start " << s.search_start << " frame_done " << s.frame_done << " sampling " << s.sampling << " frame "
+      << s.frame;
     return o.str();
   }
   static std::string centre_string(const CentreProcessorPins& c) {
@@ -189,10 +189,11 @@ class LsCosimTop : public sc_core::sc_module {
       if (m.bits == 0 && g.bits == 0) continue;
       report_.transactions += 2;  // left and right address
       if (m.bits != g.bits || m.value != g.value || m.first_cycle != g.first_cycle || m.last_cycle != g.last_cycle) {
-        const long long col =
-            m.bits == 2 * address_bits_ ? static_cast<long long>((m.value >> address_bits_) & low_mask(address_bits_)) : -1;
-        add({"address", static_cast<long long>(sp.frame), r, col, static_cast<std::uint64_t>(m.bits ? m.last_cycle : g.last_cycle),
-             stream_string(m), stream_string(g)});
+        const long long col = m.bits == 2 * address_bits_
+                                  ? static_cast<long long>((m.value >> address_bits_) & low_mask(address_bits_))
+                                  : -1;
+        add({"address", static_cast<long long>(sp.frame), r, col,
+             static_cast<std::uint64_t>(m.bits ? m.last_cycle : g.last_cycle), stream_string(m), stream_string(g)});
       }
       m = {};
       g = {};
@@ -231,7 +232,8 @@ class LsCosimTop : public sc_core::sc_module {
     const MultisamplingSequencerPins gp = sig.sequencer_pins(fields_);
     MultisamplingSequencerPins mp = sp;
     mp.frame &= 0xffffffffULL;  // frame_o is 32 bits wide (its wrap is an RTL assertion)
-    if (!(gp == mp)) add({"sequencer", frame_no, -1, -1, static_cast<std::uint64_t>(cycle), seq_string(mp), seq_string(gp)});
+    if (!(gp == mp))
+      add({"sequencer", frame_no, -1, -1, static_cast<std::uint64_t>(cycle), seq_string(mp), seq_string(gp)});
 
     // Rows: busy every cycle, address streams per sampling.
     const auto& av = sig.addr_valid.read();
@@ -245,7 +247,8 @@ class LsCosimTop : public sc_core::sc_module {
       if (o_.inject_fault == "address_bit_flip" && !report_.fault_injected && frame_no >= fault_frame_ && g_valid) {
         g_bit = !g_bit;
         report_.fault_injected = true;
-        report_.fault_site = site(frame_no, r, cycle, "stream bit " + std::to_string(rec_[1][static_cast<std::size_t>(r)].bits));
+        report_.fault_site =
+            site(frame_no, r, cycle, "stream bit " + std::to_string(rec_[1][static_cast<std::size_t>(r)].bits));
       }
       if (o_.inject_fault == "dropped_row") {
         if (drop_row_ < 0 && frame_no >= fault_frame_ && g_valid) {
@@ -257,7 +260,8 @@ class LsCosimTop : public sc_core::sc_module {
         if (r == drop_row_ && frame_no == drop_frame_) g_valid = g_bit = false;
       }
       if (m.busy != g_busy)
-        add({"busy", frame_no, r, -1, static_cast<std::uint64_t>(cycle), std::to_string(m.busy), std::to_string(g_busy)});
+        add({"busy", frame_no, r, -1, static_cast<std::uint64_t>(cycle), std::to_string(m.busy),
+             std::to_string(g_busy)});
       const bool valid[2] = {m.addr_valid, g_valid};
       const bool bit[2] = {m.addr_bit, g_bit};
       for (int s = 0; s < 2; ++s) {
@@ -278,8 +282,8 @@ class LsCosimTop : public sc_core::sc_module {
   }
 
   std::string site(long long frame_no, int row, long long cycle, const std::string& what) const {
-    return "frame " + std::to_string(frame_no) + " row " + std::to_string(row) + " cycle " + std::to_string(cycle) + ": " +
-           what;
+    return "frame " + std::to_string(frame_no) + " row " + std::to_string(row) + " cycle " + std::to_string(cycle) +
+           ": " + what;
   }
 
   void check_frame(const MultisamplingSequencerPins& sp, long long cycle) {
@@ -307,7 +311,8 @@ class LsCosimTop : public sc_core::sc_module {
         if (!ok) {
           std::ostringstream e, a;
           e << (ge.detected ? "centre " + std::to_string(ge.centre_px) + " px" : std::string("no detection"));
-          a << (g.valid ? "centre " + std::to_string(g.exact_centre_px()) + " px (sum/2n)" : std::string("no detection"));
+          a << (g.valid ? "centre " + std::to_string(g.exact_centre_px()) + " px (sum/2n)"
+                        : std::string("no detection"));
           add({"golden_centre", frame_no, r, -1, static_cast<std::uint64_t>(cycle), e.str(), a.str()});
         }
       }
@@ -333,15 +338,15 @@ class LsCosimTop : public sc_core::sc_module {
   LsConventionalConfig cfg_;
   bool noise_free_;
   LsConventionalSensorKernel kernel_;
-  LsReadoutFields fields_;            // RTL field widths: sampling, centre Q.8, sum, count
+  LsReadoutFields fields_;  // RTL field widths: sampling, centre Q.8, sum, count
   CosimReport report_;
-  CosimScoreboard board_;             // records into report_ (no SC reports: see cosim.h)
-  std::vector<StreamRecord> rec_[2];  // per row, [0] model, [1] RTL
-  long long edges_ = 0;               // rising edges so far
-  bool driven_ = false;               // cmp written at least once
+  CosimScoreboard board_;                    // records into report_ (no SC reports: see cosim.h)
+  std::vector<StreamRecord> rec_[2];         // per row, [0] model, [1] RTL
+  long long edges_ = 0;                      // rising edges so far
+  bool driven_ = false;                      // cmp written at least once
   std::pair<std::uint64_t, int> cmp_key_{};  // (frame, sampling) of the pixel array when last written
-  std::vector<std::uint32_t> cmp_words_;      // cmp_i as last written
-  long long fault_frame_ = 1;         // faults go into this frame access or later
+  std::vector<std::uint32_t> cmp_words_;     // cmp_i as last written
+  long long fault_frame_ = 1;                // faults go into this frame access or later
   int drop_row_ = -1;
   long long drop_frame_ = -1;
   long long frames_done_ = 0;
@@ -352,8 +357,8 @@ class LsCosimTop : public sc_core::sc_module {
 // Runs the readout RTL VTop, verilated with verilog_parameters(cfg), beside the clock-level
 // model of cfg; `target` names the report.
 template <class VTop>
-LsConventionalCosimResult run_ls_conventional_harness(const LsConventionalCosimOptions& o, const LsConventionalConfig& cfg,
-                                                      const std::string& target) {
+LsConventionalCosimResult run_ls_conventional_harness(const LsConventionalCosimOptions& o,
+                                                      const LsConventionalConfig& cfg, const std::string& target) {
   const auto t0 = std::chrono::steady_clock::now();
   VerilatedContext* ctx = cosim_verilator_context(o.seed, o.trace_path);
   systemc::SensorKernelOptions kopt;
@@ -380,9 +385,9 @@ LsConventionalCosimResult run_ls_conventional_harness(const LsConventionalCosimO
   res.report = top.report();
   res.frames = top.frames_done();
   if (res.frames < o.frames) {  // the schedule stalled: nothing else would say so
-    CosimScoreboard(res.report).add({"run", res.frames, -1, -1, res.report.cycles,
-                                     std::to_string(o.frames) + " frame accesses",
-                                     std::to_string(res.frames) + " within the cycle bound"});
+    CosimScoreboard(res.report)
+        .add({"run", res.frames, -1, -1, res.report.cycles, std::to_string(o.frames) + " frame accesses",
+              std::to_string(res.frames) + " within the cycle bound"});
   }
   res.report.rtl_assertions_failed = ctx->gotError() ? 1 : 0;
   if (res.report.rtl_assertions_failed) CosimScoreboard(res.report).add(rtl_assertion_mismatch(res.report.cycles));
@@ -391,7 +396,6 @@ LsConventionalCosimResult run_ls_conventional_harness(const LsConventionalCosimO
   res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
-
 
 }  // namespace ls_conventional_harness
 

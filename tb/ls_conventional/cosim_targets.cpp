@@ -88,15 +88,23 @@ std::vector<CosimTarget> ls_conventional_cosim_targets() {
       {"ls-conventional-full",
        "full-size ls-conventional readout RTL (375 x 365, 4 samplings, uninstrumented) vs the clock-level model",
        ls_conventional_faults(), run_ls_full},
-      {"address_search", "row address search RTL (16 columns) vs its SystemC model, random rows",
-       {"address_bit_flip", "start_while_busy"}, run_address_search},
-      {"centre_processor", "row centre processor RTL vs its cycle kernel, random address streams and clears",
-       {"centre_off_by_one", "count_wrap"}, run_centre_processor_cosim},
-      {"multisampling_sequencer", "ls-conventional frame sequencer RTL vs its cycle kernel, random reset pulses",
-       {"search_start_late"}, run_multisampling_sequencer_cosim},
+      {"address_search",
+       "row address search RTL (16 columns) vs its SystemC model, random rows",
+       {"address_bit_flip", "start_while_busy"},
+       run_address_search},
+      {"centre_processor",
+       "row centre processor RTL vs its cycle kernel, random address streams and clears",
+       {"centre_off_by_one", "count_wrap"},
+       run_centre_processor_cosim},
+      {"multisampling_sequencer",
+       "ls-conventional frame sequencer RTL vs its cycle kernel, random reset pulses",
+       {"search_start_late"},
+       run_multisampling_sequencer_cosim},
   };
 }
 
-std::vector<PresetCosim> ls_conventional_preset_cosims() { return {{"ls-conventional", "ls-conventional", &preset_readout}}; }
+std::vector<PresetCosim> ls_conventional_preset_cosims() {
+  return {{"ls-conventional", "ls-conventional", &preset_readout}};
+}
 
 }  // namespace rangesim::tb

@@ -70,9 +70,8 @@ inline Setup random_setup(const LsDemodulationConfig& base, const CosimOptions& 
       if (col >= c0 && col < c0 + width) s.stim.beam_A[i] = beam;
     }
   }
-  const long long frame_cycles =
-      c.grid.detections * (static_cast<long long>(period) * c.correlator.cycles + 1 +
-                           static_cast<long long>(c.pixel.rows) * c.readout.row_cycles);
+  const long long frame_cycles = c.grid.detections * (static_cast<long long>(period) * c.correlator.cycles + 1 +
+                                                      static_cast<long long>(c.pixel.rows) * c.readout.row_cycles);
   s.frames = std::clamp<long long>((static_cast<long long>(o.cycles) + frame_cycles - 1) / frame_cycles, 1, 65535);
   return s;
 }
@@ -97,15 +96,14 @@ class DemodCosimTop : public sc_core::sc_module {
   sc_core::sc_signal<std::uint32_t> window{"window"}, detections{"detections"}, rows{"rows"};
   sc_core::sc_signal<std::uint32_t> frames{"frames"};
   sc_core::sc_signal<PortData<decltype(rtl.act_i)>> act{"act"};
-  sc_core::sc_signal<bool> busy{"busy"}, integ_reset{"integ_reset"}, latch{"latch"},
-      search_start{"search_start"}, addr_valid{"addr_valid"}, addr_bit{"addr_bit"},
-      row_valid{"row_valid"}, found{"found"};
-  sc_core::sc_signal<std::uint32_t> phase{"phase"}, row{"row"}, decision{"decision"},
-      frame{"frame"}, left{"left"}, right{"right"};
+  sc_core::sc_signal<bool> busy{"busy"}, integ_reset{"integ_reset"}, latch{"latch"}, search_start{"search_start"},
+      addr_valid{"addr_valid"}, addr_bit{"addr_bit"}, row_valid{"row_valid"}, found{"found"};
+  sc_core::sc_signal<std::uint32_t> phase{"phase"}, row{"row"}, decision{"decision"}, frame{"frame"}, left{"left"},
+      right{"right"};
 
   SC_HAS_PROCESS(DemodCosimTop);
-  DemodCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report,
-                Setup setup, sc_core::sc_time period_time)
+  DemodCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report, Setup setup,
+                sc_core::sc_time period_time)
       : sc_core::sc_module(name),
         clk("clk", period_time),
         o_(o),
@@ -144,13 +142,10 @@ class DemodCosimTop : public sc_core::sc_module {
     dont_initialize();
   }
 
-  long long cycle_bound() const {
-    return kResetCycles + 10 + s_.frames * kernel_.frame_cycles();
-  }
+  long long cycle_bound() const { return kResetCycles + 10 + s_.frames * kernel_.frame_cycles(); }
   // Per frame and row, the centre rebuilt from the RTL's row results against the kernel's.
   void finish() {
-    if (!finished_) sb_.mismatch("frames", -1, -1, -1, cycle_, std::to_string(s_.frames),
-                                 std::to_string(frame_));
+    if (!finished_) sb_.mismatch("frames", -1, -1, -1, cycle_, std::to_string(s_.frames), std::to_string(frame_));
     for (std::size_t f = 0; f < kernel_rows_.size() && f < rtl_rows_.size(); ++f) {
       for (std::size_t rr = 0; rr < kernel_rows_[f].size(); ++rr) {
         const DemodRowResult& k = kernel_rows_[f][rr];
@@ -246,8 +241,7 @@ class DemodCosimTop : public sc_core::sc_module {
     }
     // Row results (found, left, right) as transactions.
     bool a_valid = row_valid.read();
-    if (o_.inject_fault == "dropped_row" && a_valid && frame_ == 0 && e_.valid_row == 1 &&
-        !r_.fault_injected) {
+    if (o_.inject_fault == "dropped_row" && a_valid && frame_ == 0 && e_.valid_row == 1 && !r_.fault_injected) {
       a_valid = false;
       r_.fault_injected = true;
       r_.fault_site = "frame 0 row 1: the RTL row result is dropped";
@@ -335,8 +329,8 @@ class DemodCosimTop : public sc_core::sc_module {
   void end_frame(std::uint64_t) { kernel_rows_.push_back(kernel_.result().rows); }
 
   struct RtlRow {
-    int detections = 0;         // detecting decisions
-    double centre_sum_px = 0;   // sum of (left + right) / 2
+    int detections = 0;        // detecting decisions
+    double centre_sum_px = 0;  // sum of (left + right) / 2
   };
 
   CosimOptions o_;
@@ -344,14 +338,14 @@ class DemodCosimTop : public sc_core::sc_module {
   CosimScoreboard sb_;
   Setup s_;
   DemodSensorKernel kernel_;
-  Expect e_;                       // the kernel's pins for the current cycle
+  Expect e_;  // the kernel's pins for the current cycle
   bool started_ = false, running_ = false, finished_ = false, first_integ_ = false;
   long long frame_ = 0;
   int decision_ = 0, row_cycle_ = 0;
-  std::vector<int> prev_det_;       // kernel detections per row so far (this frame)
-  std::vector<std::vector<RtlRow>> rtl_rows_;                 // [frame][row] from the RTL
-  std::vector<std::vector<DemodRowResult>> kernel_rows_;      // [frame][row] kernel results
-  std::vector<std::optional<double>> golden_;                 // [row] golden centre (noise-free runs)
+  std::vector<int> prev_det_;                             // kernel detections per row so far (this frame)
+  std::vector<std::vector<RtlRow>> rtl_rows_;             // [frame][row] from the RTL
+  std::vector<std::vector<DemodRowResult>> kernel_rows_;  // [frame][row] kernel results
+  std::vector<std::optional<double>> golden_;             // [row] golden centre (noise-free runs)
   std::uint64_t cycle_ = 0;
 };
 

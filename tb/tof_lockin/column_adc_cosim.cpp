@@ -41,8 +41,7 @@ Conversion random_conversion(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   c.cfg.readout.adc_bits = std::uniform_int_distribution<int>(1, 12)(rng);
   c.cfg.readout.adc_full_scale_V = 0.5 + u(rng);
-  c.cfg.readout.adc_conversion_cycles =
-      (1LL << c.cfg.readout.adc_bits) + std::uniform_int_distribution<int>(0, 3)(rng);
+  c.cfg.readout.adc_conversion_cycles = (1LL << c.cfg.readout.adc_bits) + std::uniform_int_distribution<int>(0, 3)(rng);
   const double fs = c.cfg.readout.adc_full_scale_V;
   const double lsb = fs / std::ldexp(1.0, c.cfg.readout.adc_bits);
   if (u(rng) < 0.2) {  // on a code boundary
@@ -63,14 +62,9 @@ class AdcCosimTop : public sc_core::sc_module {
   Vcolumn_adc rtl{"rtl"};
 
   SC_HAS_PROCESS(AdcCosimTop);
-  AdcCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report,
-              const std::string& record_path, sc_core::sc_time period_time)
-      : sc_core::sc_module(name),
-        clk("clk", period_time),
-        o_(o),
-        r_(report),
-        sb_(report, kMsgType),
-        rng_(o.seed) {
+  AdcCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report, const std::string& record_path,
+              sc_core::sc_time period_time)
+      : sc_core::sc_module(name), clk("clk", period_time), o_(o), r_(report), sb_(report, kMsgType), rng_(o.seed) {
     rtl.clk(clk);
     rtl.rst(rst);
     rtl.start_i(start);
@@ -126,9 +120,8 @@ class AdcCosimTop : public sc_core::sc_module {
     if (record_.is_open()) {
       // Inputs as sampled at the coming edge (cmp just written is read back next delta: use
       // the value computed) and this cycle's outputs.
-      record_ << rst.read() << ' ' << start.read() << ' ' << conv.read() << ' ' << bits.read()
-              << ' ' << c << ' ' << busy.read() << ' ' << ramp.read() << ' ' << done.read()
-              << ' ' << code.read() << '\n';
+      record_ << rst.read() << ' ' << start.read() << ' ' << conv.read() << ' ' << bits.read() << ' ' << c << ' '
+              << busy.read() << ' ' << ramp.read() << ' ' << done.read() << ' ' << code.read() << '\n';
     }
     // Model state for the next cycle.
     if (in_conv_) {

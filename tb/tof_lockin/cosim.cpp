@@ -73,9 +73,8 @@ Setup random_setup(const CosimOptions& o, std::mt19937_64& rng) {
     x.delay_s = c.source.pulse_width_s * u(rng);
     s.stim.push_back(x);
   }
-  const long long frame_cycles =
-      c.gates.accumulations_per_frame * t0 * m +
-      c.pixel.rows * (c.readout.adc_conversion_cycles + c.readout.output_cycles_per_row);
+  const long long frame_cycles = c.gates.accumulations_per_frame * t0 * m +
+                                 c.pixel.rows * (c.readout.adc_conversion_cycles + c.readout.output_cycles_per_row);
   s.frames = std::max<long long>(2, (static_cast<long long>(o.cycles) + frame_cycles - 1) / frame_cycles);
   if (c.readout.ambient_subtraction && s.frames % 2) ++s.frames;
   s.frames = std::min<long long>(s.frames, 65534);
@@ -98,10 +97,10 @@ class LockinCosimTop : public sc_core::sc_module {
  public:
   sc_core::sc_clock clk;
   sc_core::sc_signal<bool> rst{"rst", true}, start{"start"}, ambient{"ambient"};
-  sc_core::sc_signal<std::uint32_t> t0{"t0"}, period{"period"}, acc_n{"acc_n"}, rows{"rows"},
-      conv{"conv"}, outc{"outc"}, frames{"frames"}, bits{"bits"};
-  sc_core::sc_signal<bool> busy{"busy"}, tx1{"tx1"}, tx2{"tx2"}, txd{"txd"}, light{"light"},
-      adc_start{"adc_start"}, frame_done{"frame_done"};
+  sc_core::sc_signal<std::uint32_t> t0{"t0"}, period{"period"}, acc_n{"acc_n"}, rows{"rows"}, conv{"conv"},
+      outc{"outc"}, frames{"frames"}, bits{"bits"};
+  sc_core::sc_signal<bool> busy{"busy"}, tx1{"tx1"}, tx2{"tx2"}, txd{"txd"}, light{"light"}, adc_start{"adc_start"},
+      frame_done{"frame_done"};
   sc_core::sc_signal<std::uint32_t> phase{"phase"}, row{"row"}, frame{"frame"};
   Vtof_lockin_sequencer rtl{"rtl"};
   // One column ADC per (column, tap): index 2 c + k.
@@ -110,8 +109,8 @@ class LockinCosimTop : public sc_core::sc_module {
   std::vector<std::unique_ptr<sc_core::sc_signal<std::uint32_t>>> ramp, code;
 
   SC_HAS_PROCESS(LockinCosimTop);
-  LockinCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report,
-                 Setup setup, sc_core::sc_time period_time)
+  LockinCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report, Setup setup,
+                 sc_core::sc_time period_time)
       : sc_core::sc_module(name),
         clk("clk", period_time),
         o_(o),
@@ -178,8 +177,14 @@ class LockinCosimTop : public sc_core::sc_module {
       const Event* e = i < ev_[0].size() ? &ev_[0][i] : nullptr;
       const Event* a = i < ev_[1].size() ? &ev_[1][i] : nullptr;
       std::ostringstream es, as;
-      if (e) es << *e; else es << "none";
-      if (a) as << *a; else as << "none";
+      if (e)
+        es << *e;
+      else
+        es << "none";
+      if (a)
+        as << *a;
+      else
+        as << "none";
       const Event& w = e ? *e : *a;
       sb_.mismatch("phase_boundary", w.frame, w.row, -1, w.cycle, es.str(), as.str());
     }
@@ -204,8 +209,8 @@ class LockinCosimTop : public sc_core::sc_module {
           ++r_.golden_checks;
           const bool same = (std::isnan(range) && std::isnan(want)) || range == want;
           if (!same) {
-            sb_.mismatch("range_m (eq. 2.25 on RTL codes)", f, rr, cc, cycle_,
-                         std::to_string(want), std::to_string(range));
+            sb_.mismatch("range_m (eq. 2.25 on RTL codes)", f, rr, cc, cycle_, std::to_string(want),
+                         std::to_string(range));
           }
         }
       }
@@ -262,8 +267,8 @@ class LockinCosimTop : public sc_core::sc_module {
       const bool late = prev_tx2_;
       if (late != a_tx2 && !r_.fault_injected) {
         r_.fault_injected = true;
-        r_.fault_site = "frame 0 accumulation " + std::to_string(kernel_.gates().accumulation()) +
-                        ": RTL tx2_o delayed one cycle";
+        r_.fault_site =
+            "frame 0 accumulation " + std::to_string(kernel_.gates().accumulation()) + ": RTL tx2_o delayed one cycle";
       }
       prev_tx2_ = a_tx2;
       a_tx2 = late;
@@ -282,9 +287,10 @@ class LockinCosimTop : public sc_core::sc_module {
     }
     // Phase boundaries as transactions (the RTL phase with the gate pins as seen, so a shifted
     // gate edge shows here too).
-    const int ph_rtl = phase.read() >= 1 && phase.read() <= 3
-                           ? (tx1.read() ? 1 : a_tx2 ? 2 : 3)
-                           : static_cast<int>(phase.read());
+    const int ph_rtl = phase.read() >= 1 && phase.read() <= 3 ? (tx1.read() ? 1
+                                                                 : a_tx2    ? 2
+                                                                            : 3)
+                                                              : static_cast<int>(phase.read());
     const int now[2] = {static_cast<int>(ph), ph_rtl};
     for (int s = 0; s < 2; ++s) {
       if (now[s] != last_phase_[s]) {
@@ -303,9 +309,10 @@ class LockinCosimTop : public sc_core::sc_module {
     // Comparators for this cycle (the analog side: the look-ahead's inputs of this row).
     const double lsb = adc_.lsb_V();
     for (std::size_t i = 0; i < adcs.size(); ++i) {
-      const double v = run && ph == LockinPhase::AdcConversion
-                           ? ahead_.adc_input_V(f, static_cast<int>(rrow), static_cast<int>(i / 2), static_cast<int>(i % 2))
-                           : 0.0;
+      const double v =
+          run && ph == LockinPhase::AdcConversion
+              ? ahead_.adc_input_V(f, static_cast<int>(rrow), static_cast<int>(i / 2), static_cast<int>(i % 2))
+              : 0.0;
       // V < (ramp + 1) LSB, in the kernel's own arithmetic (floor(V / LSB)) so that inputs on a
       // code boundary compare as the kernel rounds them.
       cmp[i]->write(std::floor(v / lsb) <= static_cast<double>(ramp[i]->read()));
@@ -340,12 +347,12 @@ class LockinCosimTop : public sc_core::sc_module {
   TofLockinSensorKernel kernel_;  // reference, stepped once per cycle
   TofLockinSensorKernel ahead_;   // same run, finished up front (drives the comparators)
   ColumnAdcKernel adc_;
-  bool started_ = false;          // start_i seen: the kernel steps from the next cycle
+  bool started_ = false;  // start_i seen: the kernel steps from the next cycle
   std::uint64_t cycle_ = 0;
-  bool prev_tx2_ = false;         // RTL tx2 of the previous cycle (fault injection)
+  bool prev_tx2_ = false;  // RTL tx2 of the previous cycle (fault injection)
   LockinPhase prev_phase_ = LockinPhase::Idle;
-  int last_phase_[2] = {0, 0};    // phase of the previous cycle, model / RTL
-  std::vector<Event> ev_[2];      // phase boundaries, model / RTL
+  int last_phase_[2] = {0, 0};  // phase of the previous cycle, model / RTL
+  std::vector<Event> ev_[2];    // phase boundaries, model / RTL
   std::size_t matched_ = 0;
   std::vector<std::uint32_t> rtl_codes_;  // RTL codes per frame, row, column, tap
 };
@@ -359,9 +366,9 @@ CosimReport run_tof_lockin_cosim(const CosimOptions& o) {
   std::mt19937_64 rng(o.seed);
   Setup s = random_setup(o, rng);
   const sc_core::sc_time period(1.0 / s.cfg.readout.clock_Hz, sc_core::SC_SEC);
-  const long long bound = 10 + s.frames * (s.cfg.gates.accumulations_per_frame * 100 +
-                                           s.cfg.pixel.rows * (s.cfg.readout.adc_conversion_cycles +
-                                                               s.cfg.readout.output_cycles_per_row));
+  const long long bound =
+      10 + s.frames * (s.cfg.gates.accumulations_per_frame * 100 +
+                       s.cfg.pixel.rows * (s.cfg.readout.adc_conversion_cycles + s.cfg.readout.output_cycles_per_row));
   LockinCosimTop top("cosim", o, r, std::move(s), period);
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
   std::unique_ptr<VerilatedVcdSc> tf;

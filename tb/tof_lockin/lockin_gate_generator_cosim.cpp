@@ -50,20 +50,14 @@ class GateCosimTop : public sc_core::sc_module {
   sc_core::sc_clock clk;
   sc_core::sc_signal<bool> rst{"rst", true}, start{"start"};
   sc_core::sc_signal<std::uint32_t> t0{"t0"}, period{"period"}, acc_n{"acc_n"};
-  sc_core::sc_signal<bool> busy{"busy"}, tx1{"tx1"}, tx2{"tx2"}, txd{"txd"}, light{"light"},
-      last{"last"};
+  sc_core::sc_signal<bool> busy{"busy"}, tx1{"tx1"}, tx2{"tx2"}, txd{"txd"}, light{"light"}, last{"last"};
   sc_core::sc_signal<std::uint32_t> cycle{"cycle"}, accumulation{"accumulation"};
   Vlockin_gate_generator rtl{"rtl"};
 
   SC_HAS_PROCESS(GateCosimTop);
-  GateCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report,
-               const std::string& record_path, sc_core::sc_time period_time)
-      : sc_core::sc_module(name),
-        clk("clk", period_time),
-        o_(o),
-        r_(report),
-        sb_(report, kMsgType),
-        rng_(o.seed) {
+  GateCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report, const std::string& record_path,
+               sc_core::sc_time period_time)
+      : sc_core::sc_module(name), clk("clk", period_time), o_(o), r_(report), sb_(report, kMsgType), rng_(o.seed) {
     rtl.clk(clk);
     rtl.rst(rst);
     rtl.start_i(start);
@@ -91,8 +85,8 @@ class GateCosimTop : public sc_core::sc_module {
     for (std::size_t i = matched_; i < edges_[0].size() || i < edges_[1].size(); ++i) {
       const Edge* e = i < edges_[0].size() ? &edges_[0][i] : nullptr;
       const Edge* a = i < edges_[1].size() ? &edges_[1][i] : nullptr;
-      sb_.mismatch("gate_edge", (e ? e : a)->op, -1, -1, (e ? e : a)->cycle,
-                   e ? e->text() : "none", a ? a->text() : "none");
+      sb_.mismatch("gate_edge", (e ? e : a)->op, -1, -1, (e ? e : a)->cycle, e ? e->text() : "none",
+                   a ? a->text() : "none");
     }
   }
 
@@ -102,9 +96,7 @@ class GateCosimTop : public sc_core::sc_module {
     const char* gate;
     bool rise;
     std::uint64_t cycle;
-    std::string text() const {
-      return std::string(gate) + (rise ? " rise" : " fall") + " @" + std::to_string(cycle);
-    }
+    std::string text() const { return std::string(gate) + (rise ? " rise" : " fall") + " @" + std::to_string(cycle); }
     bool operator==(const Edge& b) const {
       return op == b.op && std::string(gate) == b.gate && rise == b.rise && cycle == b.cycle;
     }
@@ -150,14 +142,17 @@ class GateCosimTop : public sc_core::sc_module {
     r_.cycles = cycle_;
     Pins a{busy.read(), tx1.read(), tx2.read(), txd.read(), light.read(), last.read()};
     if (record_.is_open()) {
-      record_ << rst.read() << ' ' << start.read() << ' ' << t0.read() << ' ' << period.read()
-              << ' ' << acc_n.read() << ' ' << a.busy << a.tx1 << a.tx2 << a.txd << a.light
-              << a.last << '\n';
+      record_ << rst.read() << ' ' << start.read() << ' ' << t0.read() << ' ' << period.read() << ' ' << acc_n.read()
+              << ' ' << a.busy << a.tx1 << a.tx2 << a.txd << a.light << a.last << '\n';
     }
     if (cycle < kResetCycles) return;  // random state until the reset edge
     Pins e{false, false, false, false, false, false};
     if (kernel_ && !kernel_->done()) {
-      e = {true, kernel_->tx1(), kernel_->tx2(), kernel_->txd(), kernel_->light(),
+      e = {true,
+           kernel_->tx1(),
+           kernel_->tx2(),
+           kernel_->txd(),
+           kernel_->light(),
            kernel_->accumulation() == kernel_->accumulations() - 1 &&
                kernel_->cycle_in_period() == kernel_->period_cycles() - 1};
     }
@@ -169,8 +164,8 @@ class GateCosimTop : public sc_core::sc_module {
       prev_tx2_ = a.tx2;
       if (late != a.tx2 && !r_.fault_injected) {
         r_.fault_injected = true;
-        r_.fault_site = "operation 1 accumulation " +
-                        std::to_string(kernel_->accumulation()) + ": RTL tx2_o delayed one cycle";
+        r_.fault_site =
+            "operation 1 accumulation " + std::to_string(kernel_->accumulation()) + ": RTL tx2_o delayed one cycle";
       }
       a.tx2 = late;
     } else {
@@ -210,17 +205,17 @@ class GateCosimTop : public sc_core::sc_module {
   CosimOptions o_;
   CosimReport& r_;
   CosimScoreboard sb_;
-  std::mt19937_64 rng_;                  // stimulus
-  TofLockinConfig pending_;              // parameters of the operation being started
+  std::mt19937_64 rng_;                              // stimulus
+  TofLockinConfig pending_;                          // parameters of the operation being started
   std::optional<LockinGateGeneratorKernel> kernel_;  // reference for the current operation
-  std::uint64_t cycle_ = 0;              // cycles seen by the monitor
-  long long op_ = 0;                     // operations completed by the model
+  std::uint64_t cycle_ = 0;                          // cycles seen by the monitor
+  long long op_ = 0;                                 // operations completed by the model
   long long ops_started_ = 0;
-  bool prev_tx2_ = false;                // RTL tx2 of the previous cycle (fault injection)
-  bool was_[2][4] = {};                  // gate levels of the previous cycle, model / RTL
-  std::vector<Edge> edges_[2];           // gate edges, model / RTL
-  std::size_t matched_ = 0;              // edges compared so far
-  std::ofstream record_;                 // Icarus replay file
+  bool prev_tx2_ = false;       // RTL tx2 of the previous cycle (fault injection)
+  bool was_[2][4] = {};         // gate levels of the previous cycle, model / RTL
+  std::vector<Edge> edges_[2];  // gate edges, model / RTL
+  std::size_t matched_ = 0;     // edges compared so far
+  std::ofstream record_;        // Icarus replay file
 };
 
 }  // namespace

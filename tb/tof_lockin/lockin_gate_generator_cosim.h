@@ -17,10 +17,8 @@ namespace rangesim::tb {
 
 // record_path non-empty: every cycle's inputs and expected outputs go to a text file that
 // tb/lockin_gate_generator_tb.sv replays under Icarus (ctest label iverilog).
-CosimReport run_lockin_gate_generator_cosim(const CosimOptions& options,
-                                            const std::string& record_path = {});
-CosimReport run_column_adc_cosim(const CosimOptions& options,
-                                 const std::string& record_path = {});
+CosimReport run_lockin_gate_generator_cosim(const CosimOptions& options, const std::string& record_path = {});
+CosimReport run_column_adc_cosim(const CosimOptions& options, const std::string& record_path = {});
 CosimReport run_tof_lockin_cosim(const CosimOptions& options);
 
 }  // namespace rangesim::tb

@@ -11,7 +11,8 @@ namespace rangesim::tb {
 
 CosimReport run_tof_spad_cosim(const CosimOptions& o, bool high_rates, const std::string& record) {
   check_instance_parameters("Vtof_spad_sequencer", verilog_parameters(TofSpadConfig{}, "Vtof_spad_sequencer"));
-  return run_tof_spad_harness<Vtof_spad_sequencer>(o, TofSpadConfig{}, high_rates, record, high_rates ? "tdc" : "tof-spad");
+  return run_tof_spad_harness<Vtof_spad_sequencer>(o, TofSpadConfig{}, high_rates, record,
+                                                   high_rates ? "tdc" : "tof-spad");
 }
 
 }  // namespace rangesim::tb

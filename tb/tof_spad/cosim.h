@@ -16,7 +16,6 @@ namespace rangesim::tb {
 
 // high_rates: the `tdc` target. record_path: per-cycle inputs and RTL outputs for the Icarus
 // replay (tb/tof_spad/tof_spad_sequencer_replay_tb.sv). The harness: tb/tof_spad/cosim_harness.h.
-CosimReport run_tof_spad_cosim(const CosimOptions& options, bool high_rates,
-                               const std::string& record_path = {});
+CosimReport run_tof_spad_cosim(const CosimOptions& options, bool high_rates, const std::string& record_path = {});
 
 }  // namespace rangesim::tb

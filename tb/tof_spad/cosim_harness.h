@@ -86,10 +86,10 @@ inline Setup random_setup(const TofSpadConfig& base, std::mt19937_64& rng, bool 
 }
 
 struct CycleHits {
-  std::uint32_t hit = 0;                  // bit per column
-  std::uint32_t fine[kMaxCpt / 2] = {};   // FINE_BITS (16) per column, as the 32-bit words of fine_i
-  std::uint64_t corr = 0;                 // CORR_BITS (3) per column (two's complement)
-  int recorded_column = -1;      // expectation: the column recorded (-1: none)
+  std::uint32_t hit = 0;                 // bit per column
+  std::uint32_t fine[kMaxCpt / 2] = {};  // FINE_BITS (16) per column, as the 32-bit words of fine_i
+  std::uint64_t corr = 0;                // CORR_BITS (3) per column (two's complement)
+  int recorded_column = -1;              // expectation: the column recorded (-1: none)
   TdcHit::Kind kind = TdcHit::Kind::Lost;
   int code = 0;
   int lost = 0;
@@ -113,25 +113,22 @@ class SpadCosimTop : public sc_core::sc_module {
   sc_core::sc_clock clk;
   VTop rtl{"rtl"};
   sc_core::sc_signal<bool> rst{"rst", true}, start{"start"};
-  sc_core::sc_signal<std::uint32_t> rows{"rows"}, laser{"laser"}, np{"np"}, nc{"nc"}, be{"be"},
-      bo{"bo"}, w{"w"};
+  sc_core::sc_signal<std::uint32_t> rows{"rows"}, laser{"laser"}, np{"np"}, nc{"nc"}, be{"be"}, bo{"bo"}, w{"w"};
   Sig<decltype(rtl.hit_i)> hit{"hit"};
   Sig<decltype(rtl.corr_i)> corr{"corr"};
   Sig<decltype(rtl.fine_i)> fine{"fine"};
-  sc_core::sc_signal<bool> ready{"ready"}, ev{"ev"}, ovf{"ovf"}, word_valid{"word_valid"},
-      peak_valid{"peak_valid"}, saturated{"saturated"};
-  sc_core::sc_signal<std::uint32_t> phase{"phase"}, row{"row"}, code{"code"}, lost{"lost"},
-      word_code{"word_code"}, word{"word"}, peak_code{"peak_code"}, peak_count{"peak_count"},
-      den{"den"};
+  sc_core::sc_signal<bool> ready{"ready"}, ev{"ev"}, ovf{"ovf"}, word_valid{"word_valid"}, peak_valid{"peak_valid"},
+      saturated{"saturated"};
+  sc_core::sc_signal<std::uint32_t> phase{"phase"}, row{"row"}, code{"code"}, lost{"lost"}, word_code{"word_code"},
+      word{"word"}, peak_code{"peak_code"}, peak_count{"peak_count"}, den{"den"};
   Sig<decltype(rtl.tdc_grant_o)> grant{"grant"};
   Sig<decltype(rtl.word_column_o)> word_column{"word_column"};
   Sig<decltype(rtl.peak_column_o)> peak_column{"peak_column"};
   sc_core::sc_signal<std::uint64_t> num{"num"};
 
   SC_HAS_PROCESS(SpadCosimTop);
-  SpadCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report,
-               Setup setup, const TofSpadRtlShape& shape, const std::string& record_path,
-               sc_core::sc_time period_time)
+  SpadCosimTop(sc_core::sc_module_name name, const CosimOptions& o, CosimReport& report, Setup setup,
+               const TofSpadRtlShape& shape, const std::string& record_path, sc_core::sc_time period_time)
       : sc_core::sc_module(name),
         clk("clk", period_time),
         o_(o),
@@ -148,8 +145,8 @@ class SpadCosimTop : public sc_core::sc_module {
     block_event_ = in.block_event_bins;
     block_overflow_ = in.block_overflow_bins;
     for (int rr = 0; rr < s_.rows; ++rr) plans_.push_back(plan_row(rr));
-    row_len_ = kernel_.laser_cycles() * kernel_.phase_bins() +
-               kernel_.readout_words_per_row() * kernel_.cycles_per_word();
+    row_len_ =
+        kernel_.laser_cycles() * kernel_.phase_bins() + kernel_.readout_words_per_row() * kernel_.cycles_per_word();
     rtl.clk(clk);
     rtl.rst(rst);
     rtl.start_i(start);
@@ -200,25 +197,27 @@ class SpadCosimTop : public sc_core::sc_module {
     if (std::getenv("RANGESIM_COSIM_VERBOSE")) {  // what the stimulus exercised
       long long events = 0, ovf = 0, lost = 0, multi = 0;
       for (const RowPlan& p : plans_) {
-        for (const auto& e : p.expected.events) for (long long x : e) events += x;
+        for (const auto& e : p.expected.events)
+          for (long long x : e) events += x;
         ovf += p.expected.overflows, lost += p.expected.lost_busy;
         for (const auto& kv : p.cycles) multi += __builtin_popcount(kv.second.hit) > 1;
       }
-      std::fprintf(stderr, "tof-spad cosim: %d rows, Np %d, Nc %d, L %lld, W %lld, block %d/%d: "
+      std::fprintf(stderr,
+                   "tof-spad cosim: %d rows, Np %d, Nc %d, L %lld, W %lld, block %d/%d: "
                    "%lld events, %lld overflows, %lld lost, %lld cycles with several hits\n",
-                   s_.rows, kernel_.phase_bins(), kernel_.codes(), kernel_.laser_cycles(),
-                   kernel_.cycles_per_word(), block_event_, block_overflow_, events, ovf, lost, multi);
+                   s_.rows, kernel_.phase_bins(), kernel_.codes(), kernel_.laser_cycles(), kernel_.cycles_per_word(),
+                   block_event_, block_overflow_, events, ovf, lost, multi);
     }
     for (int rr = 0; rr < s_.rows; ++rr) {
       const RowPlan& p = plans_[static_cast<size_t>(rr)];
-      sb_.expect("kernel overflows (TdcGroupKernel vs simulate_group)", f, rr, -1, cycle_,
-                 p.kernel.overflows, p.expected.overflows);
-      sb_.expect("kernel lost (TdcGroupKernel + before START vs simulate_group)", f, rr, -1, cycle_,
-                 p.kernel.lost_busy, p.expected.lost_busy + p.dropped);
+      sb_.expect("kernel overflows (TdcGroupKernel vs simulate_group)", f, rr, -1, cycle_, p.kernel.overflows,
+                 p.expected.overflows);
+      sb_.expect("kernel lost (TdcGroupKernel + before START vs simulate_group)", f, rr, -1, cycle_, p.kernel.lost_busy,
+                 p.expected.lost_busy + p.dropped);
       for (int cc = 0; cc < cpt_; ++cc) {
         const auto& ke = p.kernel.events[static_cast<size_t>(cc)];
-        sb_.expect("kernel histogram (TdcGroupKernel vs simulate_group)", f, rr, cc, cycle_,
-                   vec_text(ke), vec_text(p.expected.events[static_cast<size_t>(cc)]));
+        sb_.expect("kernel histogram (TdcGroupKernel vs simulate_group)", f, rr, cc, cycle_, vec_text(ke),
+                   vec_text(p.expected.events[static_cast<size_t>(cc)]));
         const auto& got = rtl_events_[static_cast<size_t>(rr) * cpt_ + cc];
         const std::optional<double> want_t = kernel_.estimate(ke, p.kernel.armed);
         const std::optional<double> got_t = kernel_.estimate(got, p.kernel.armed);
@@ -227,12 +226,12 @@ class SpadCosimTop : public sc_core::sc_module {
           return t ? std::to_string(*t * 1e9) + " ns" : std::string("no detection");
         };
         if (txt(want_t) != txt(got_t) || (want_t && got_t && *want_t != *got_t))
-          sb_.mismatch("estimated round trip (golden estimator on RTL histogram)", f, rr, cc,
-                       cycle_, txt(want_t), txt(got_t));
+          sb_.mismatch("estimated round trip (golden estimator on RTL histogram)", f, rr, cc, cycle_, txt(want_t),
+                       txt(got_t));
       }
     }
-    sb_.expect("laser_cycles phase cycles", f, -1, -1, cycle_,
-               s_.rows * kernel_.laser_cycles() * kernel_.phase_bins(), phase_cycles_[1]);
+    sb_.expect("laser_cycles phase cycles", f, -1, -1, cycle_, s_.rows * kernel_.laser_cycles() * kernel_.phase_bins(),
+               phase_cycles_[1]);
     sb_.expect("histogram_readout phase cycles", f, -1, -1, cycle_,
                s_.rows * kernel_.readout_words_per_row() * kernel_.cycles_per_word(), phase_cycles_[2]);
   }
@@ -285,8 +284,7 @@ class SpadCosimTop : public sc_core::sc_module {
       const int cr = bin - coarse;
       if (cr < corr_min || cr > corr_max) throw std::runtime_error("tof-spad cosim: bin correction out of range");
       const double in_cycle = (ph - coarse * lsb) / lsb;
-      const auto fq = static_cast<std::uint32_t>(
-          std::clamp(std::floor(in_cycle * fine_steps), 0.0, fine_steps - 1));
+      const auto fq = static_cast<std::uint32_t>(std::clamp(std::floor(in_cycle * fine_steps), 0.0, fine_steps - 1));
       CycleHits& ch = p.cycles[lc * npb + coarse];
       if (ch.hit & (1U << who)) throw std::runtime_error("tof-spad cosim: two avalanches of one pixel in a cycle");
       ch.hit |= 1U << who;
@@ -351,14 +349,12 @@ class SpadCosimTop : public sc_core::sc_module {
     const std::uint64_t cycle = cycle_++;
     r_.cycles = cycle_;
     if (record_.is_open()) {
-      record_ << rst.read() << ' ' << start.read() << ' ' << rows.read() << ' ' << laser.read()
-              << ' ' << np.read() << ' ' << nc.read() << ' ' << be.read() << ' ' << bo.read()
-              << ' ' << w.read() << ' ' << hit.read() << ' ' << std::hex << fine.read()
-              << std::dec << ' ' << corr.read() << ' ' << phase.read() << ' ' << row.read()
-              << ' ' << ev.read() << ' ' << ovf.read() << ' ' << code.read() << ' '
-              << grant.read() << ' ' << lost.read() << ' ' << word_valid.read() << ' '
-              << word.read() << ' ' << peak_valid.read() << ' ' << peak_code.read() << ' '
-              << peak_count.read() << ' ' << num.read() << ' ' << den.read() << '\n';
+      record_ << rst.read() << ' ' << start.read() << ' ' << rows.read() << ' ' << laser.read() << ' ' << np.read()
+              << ' ' << nc.read() << ' ' << be.read() << ' ' << bo.read() << ' ' << w.read() << ' ' << hit.read() << ' '
+              << std::hex << fine.read() << std::dec << ' ' << corr.read() << ' ' << phase.read() << ' ' << row.read()
+              << ' ' << ev.read() << ' ' << ovf.read() << ' ' << code.read() << ' ' << grant.read() << ' '
+              << lost.read() << ' ' << word_valid.read() << ' ' << word.read() << ' ' << peak_valid.read() << ' '
+              << peak_code.read() << ' ' << peak_count.read() << ' ' << num.read() << ' ' << den.read() << '\n';
     }
     if (cycle < kResetCycles) return;
     if (start_cycle_ < 0) {
@@ -412,8 +408,8 @@ class SpadCosimTop : public sc_core::sc_module {
       if (o_.inject_fault == "tdc_code_off_by_one" && e_ev && ++events_seen_ == 5) {
         ++got;
         r_.fault_injected = true;
-        r_.fault_site = "row " + std::to_string(rr) + " column " + std::to_string(col) +
-                        " cycle " + std::to_string(cycle) + ": RTL tdc code_o + 1";
+        r_.fault_site = "row " + std::to_string(rr) + " column " + std::to_string(col) + " cycle " +
+                        std::to_string(cycle) + ": RTL tdc code_o + 1";
       }
       const std::uint32_t e_grant = col >= 0 ? 1U << col : 0U;
       sb_.expect("tdc grant", -1, rr, col, cycle, e_grant, g_grant);
@@ -439,8 +435,8 @@ class SpadCosimTop : public sc_core::sc_module {
     if (o_.inject_fault == "dropped_histogram_count" && !r_.fault_injected && got > 0) {
       --got;
       r_.fault_injected = true;
-      r_.fault_site = "row " + std::to_string(rr) + " column " + std::to_string(cc) + " code " +
-                      std::to_string(cd) + ": one count dropped from the RTL word";
+      r_.fault_site = "row " + std::to_string(rr) + " column " + std::to_string(cc) + " code " + std::to_string(cd) +
+                      ": one count dropped from the RTL word";
     }
     rtl_events_[static_cast<size_t>(rr) * cpt_ + cc][static_cast<size_t>(cd)] = got;
     sb_.expect("histogram_bin", -1, rr, cc, cycle, want, got);
@@ -465,13 +461,13 @@ class SpadCosimTop : public sc_core::sc_module {
   CosimScoreboard sb_;
   Setup s_;
   TofSpadRtlShape shape_;
-  int cpt_;                 // columns of the group (CPT)
-  long long count_max_;     // bins saturate at 2^COUNT_BITS - 1
+  int cpt_;              // columns of the group (CPT)
+  long long count_max_;  // bins saturate at 2^COUNT_BITS - 1
   TofSpadKernel kernel_;
   int block_event_ = 0, block_overflow_ = 0;
   std::vector<RowPlan> plans_;
-  long long row_len_ = 0;          // cycles per row (integration + readout)
-  long long start_cycle_ = -1;     // cycle in which start_i was high
+  long long row_len_ = 0;       // cycles per row (integration + readout)
+  long long start_cycle_ = -1;  // cycle in which start_i was high
   std::uint32_t last_phase_ = 0;
   long long phase_cycles_[3] = {0, 0, 0};
   long long events_seen_ = 0;

@@ -14,15 +14,15 @@
 namespace rangesim::tb {
 
 struct TofSpadRtlShape {
-  int cpt = 4;          // CPT: columns of the group (tdc.columns_per_tdc)
-  int col_bits = 2;     // COL_BITS: column index width, clog2(CPT) (at least 1)
-  int bin_bits = 11;    // BIN_BITS: phase-bin / code width, tdc.bits + 1 (Np may exceed the codes)
-  int codes_max = 1024; // CODES_MAX: histogram words per column, 2^tdc.bits
-  int fine_bits = 16;   // FINE_BITS: interpolator phase per column
-  int corr_bits = 3;    // CORR_BITS: signed bin correction per column
-  int count_bits = 16;  // COUNT_BITS: bin counters (saturating)
-  int row_bits = 8;     // ROW_BITS: rows per run
-  int laser_bits = 24;  // LASER_BITS: laser cycles per row
+  int cpt = 4;           // CPT: columns of the group (tdc.columns_per_tdc)
+  int col_bits = 2;      // COL_BITS: column index width, clog2(CPT) (at least 1)
+  int bin_bits = 11;     // BIN_BITS: phase-bin / code width, tdc.bits + 1 (Np may exceed the codes)
+  int codes_max = 1024;  // CODES_MAX: histogram words per column, 2^tdc.bits
+  int fine_bits = 16;    // FINE_BITS: interpolator phase per column
+  int corr_bits = 3;     // CORR_BITS: signed bin correction per column
+  int count_bits = 16;   // COUNT_BITS: bin counters (saturating)
+  int row_bits = 8;      // ROW_BITS: rows per run
+  int laser_bits = 24;   // LASER_BITS: laser cycles per row
 };
 
 // UserError naming `origin` and the key when the RTL cannot take the config.

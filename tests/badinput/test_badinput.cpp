@@ -75,8 +75,10 @@ std::string substitute(std::string s, const std::map<std::string, std::string>& 
 std::string edited_preset(const Case& c) {
   if (c.text) return *c.text;
   std::istringstream in(read_text(std::string(RANGESIM_PRESET_SOURCE_DIR) + "/" + c.preset + ".toml"));
-  const std::string& section = !c.replace.empty() ? c.replace[0] : !c.remove.empty() ? c.remove[0]
-                               : !c.insert.empty() ? c.insert[0] : std::string();
+  const std::string& section = !c.replace.empty()  ? c.replace[0]
+                               : !c.remove.empty() ? c.remove[0]
+                               : !c.insert.empty() ? c.insert[0]
+                                                   : std::string();
   std::string out, line, current;
   bool done = section.empty();
   while (std::getline(in, line)) {
@@ -117,8 +119,8 @@ TEST_P(BadInput, ExitsWithCode2AndAClearMessageAndWritesNothing) {
   if (!c.make_file.empty()) std::ofstream(tmp + "/" + c.make_file) << "not a directory\n";
   const std::string args = substitute(c.args, vars);
 
-  const CommandResult r = run_command(std::string("RANGESIM_PRESET_DIR=") + RANGESIM_PRESET_SOURCE_DIR + " " +
-                                      RANGESIM_BIN + " " + args);
+  const CommandResult r =
+      run_command(std::string("RANGESIM_PRESET_DIR=") + RANGESIM_PRESET_SOURCE_DIR + " " + RANGESIM_BIN + " " + args);
   SCOPED_TRACE("rangesim " + args);
   EXPECT_EQ(r.exit_code, 2) << "stderr: " << r.err;
   EXPECT_TRUE(r.out.empty()) << "stdout: " << r.out;

@@ -21,28 +21,29 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   const CommandResult r = run_command(rangesim("bench --quick --json --out '" + dir + "'"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);  // stdout is the JSON and nothing else
-  for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
-                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
-                          "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor"}) {
+  for (const char* key :
+       {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
+        "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
+        "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_number() || j[key].is_null()) << key;
     EXPECT_TRUE(j["targets"].contains(key)) << key;
     if (j[key].is_null()) EXPECT_TRUE(j["details"][key].contains("note")) << key << ": a missing figure says why";
   }
-  for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel",
-                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
-                          "sparse_vs_dense_spad", "realtime_factor"}) {
+  for (const char* key :
+       {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "aggregated_vs_per_clock_lockin",
+        "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod", "sparse_vs_dense_spad", "realtime_factor"}) {
     ASSERT_TRUE(j[key].is_number()) << key << " is measured by the bench itself";
     EXPECT_GT(j[key].get<double>(), 0.0) << key;
   }
   // The identity checks inside the bench.
   EXPECT_TRUE(j["checks_passed"].get<bool>()) << j["checks"].dump();
-  for (const char* check : {"sparse_equals_dense", "rtl_equals_model", "systemc_equals_kernel",
-                            "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical",
-                            "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle",
-                            "spad_sparse_cycles_identical", "spad_sparse_lit_pixels_identical",
-                            "spad_sparse_background_statistically_identical",
-                            "demod_aggregated_statistically_identical"}) {
+  for (const char* check :
+       {"sparse_equals_dense", "rtl_equals_model", "systemc_equals_kernel",
+        "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical",
+        "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle", "spad_sparse_cycles_identical",
+        "spad_sparse_lit_pixels_identical", "spad_sparse_background_statistically_identical",
+        "demod_aggregated_statistically_identical"}) {
     ASSERT_TRUE(j["checks"].contains(check)) << check;
     EXPECT_TRUE(j["checks"][check].get<bool>()) << check;
   }
@@ -53,10 +54,12 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   EXPECT_EQ(j["details"]["model_vs_rtl"]["mismatches"].get<long long>(), 0);
   // The Pareto table covers all four sensors and all three harnesses.
   std::set<std::string> sensors, harnesses;
-  for (const auto& row : j["pareto"]) sensors.insert(row["sensor"].get<std::string>()), harnesses.insert(row["harness"].get<std::string>());
+  for (const auto& row : j["pareto"])
+    sensors.insert(row["sensor"].get<std::string>()), harnesses.insert(row["harness"].get<std::string>());
   EXPECT_EQ(sensors.size(), 4u);
   EXPECT_EQ(harnesses, (std::set<std::string>{"kernel", "systemc", "rtl"}));
-  for (const char* f : {"bench.json", "figures.md", "pareto.md", "pareto.csv"}) EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
+  for (const char* f : {"bench.json", "figures.md", "pareto.md", "pareto.csv"})
+    EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
   for (const auto& e : fs::directory_iterator(dir))
     EXPECT_EQ(e.path().filename().string().rfind(".staging", 0), std::string::npos) << "staging left behind";
 }
@@ -103,7 +106,8 @@ TEST(SkippingSwitches, NoAggregateIsRefusedWithoutAnAggregatedPath) {
 // ls-demodulation: the switch through the binary. Noise-free, aggregated and per-period windows
 // give the same decisions (so positions and error) and cycles (DemodAggregation.* for D and noise).
 TEST(SkippingSwitches, DemodNoAggregateStepsPeriodsWithTheSameResult) {
-  const std::string s = "ls-demodulation --scene '" + scene("ls-demodulation-plane.toml") + "' --kernel-only --noise-free --frames ";
+  const std::string s =
+      "ls-demodulation --scene '" + scene("ls-demodulation-plane.toml") + "' --kernel-only --noise-free --frames ";
   const auto a = simulate(s + "3"), b = simulate(s + "3 --no-aggregate"), t = simulate(s + "1 --tick");
   EXPECT_EQ(a["aggregation"]["path"], "aggregated");
   EXPECT_EQ(b["aggregation"]["path"], "per_period");

@@ -40,7 +40,8 @@ class Cli : public ::testing::Test {
   void expect_bad_input(const CommandResult& r, const std::vector<std::string>& fragments,
                         const std::string& out = "") {
     EXPECT_EQ(r.exit_code, 2) << r.err;
-    for (const auto& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in: " << r.err;
+    for (const auto& f : fragments)
+      EXPECT_NE(r.err.find(f), std::string::npos) << "missing '" << f << "' in: " << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
     if (!out.empty()) {
       EXPECT_FALSE(fs::exists(out) && !fs::is_empty(out)) << out << " has files";
@@ -89,7 +90,8 @@ TEST_F(Cli, FrameRateMatchesPublishedFigures) {
 
 TEST_F(Cli, EvaluateWritesMapsSummaryAndPlots) {
   const std::string out = tmp_ + "/eval";
-  const auto r = rangesim("evaluate ls-conventional --signal 0.005:1.5:9 --background 0.001:0.5:7 --out " + out + " --json");
+  const auto r =
+      rangesim("evaluate ls-conventional --signal 0.005:1.5:9 --background 0.001:0.5:7 --out " + out + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"frame_access_rate_Hz", "range_maps_per_s", "frame_time_s", "signal_range_dB",
@@ -223,7 +225,8 @@ TEST_F(Cli, UnwritableOutputDirectory) {
     expect_bad_input(rangesim("evaluate ls-conventional --out " + ro + "/sub"), {"--out", ro + "/sub"}, ro + "/sub");
   // A regular file where DIR should be fails for everyone, root included.
   std::ofstream(tmp_ + "/file") << "x";
-  expect_bad_input(rangesim("evaluate ls-conventional --out " + tmp_ + "/file"), {"--out", tmp_ + "/file", "not a directory"});
+  expect_bad_input(rangesim("evaluate ls-conventional --out " + tmp_ + "/file"),
+                   {"--out", tmp_ + "/file", "not a directory"});
   fs::permissions(ro, fs::perms::owner_all);
 }
 
@@ -247,8 +250,10 @@ TEST_F(Cli, SetAndInheritReachEveryCommand) {
   EXPECT_NE(show.out.find("source: user\n"), std::string::npos) << show.out;
   EXPECT_NE(show.out.find("source: command line --set (from command line)"), std::string::npos) << show.out;
   EXPECT_NE(show.out.find("(from " + std::string(kPreset) + ")"), std::string::npos) << show.out;
-  const CommandResult ev = rangesim("evaluate " + user + " --set evaluation.signal_points=3 --set "
-                                    "evaluation.background_points=2 --no-plots --json --out " + tmp_ + "/ev");
+  const CommandResult ev = rangesim("evaluate " + user +
+                                    " --set evaluation.signal_points=3 --set "
+                                    "evaluation.background_points=2 --no-plots --json --out " +
+                                    tmp_ + "/ev");
   ASSERT_EQ(ev.exit_code, 0) << ev.err;
   EXPECT_NE(ev.out.find("\"points_total\": 6"), std::string::npos) << ev.out;
   EXPECT_NE(ev.out.find("\"samplings\": 1"), std::string::npos) << ev.out;

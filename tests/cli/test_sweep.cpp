@@ -32,7 +32,8 @@ std::map<std::string, std::string> files_of(const std::string& dir) {
   for (const auto& e : fs::directory_iterator(dir)) {
     if (e.is_directory()) continue;
     std::ifstream in(e.path(), std::ios::binary);
-    m[e.path().filename().string()] = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    m[e.path().filename().string()] =
+        std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   }
   return m;
 }
@@ -83,8 +84,8 @@ TEST(Sweep, ThreeShardsMergeByteIdenticalToOneProcess) {
   const CommandResult twice = rangesim("merge --out " + tmp + "/x " + p1 + " " + p1);
   EXPECT_NE(twice.err.find("given twice"), std::string::npos) << twice.err;
   ASSERT_EQ(rangesim(kSweep + " --set timing.clock_Hz=20e6 --shard 3/3 --out " + tmp + "/other").exit_code, 0);
-  const CommandResult other = rangesim("merge --out " + tmp + "/x " + p1 + " " + p2 + " " + tmp +
-                                       "/other/sweep.shard-3-of-3.json");
+  const CommandResult other =
+      rangesim("merge --out " + tmp + "/x " + p1 + " " + p2 + " " + tmp + "/other/sweep.shard-3-of-3.json");
   EXPECT_NE(other.err.find("shard of another sweep"), std::string::npos) << other.err;
   EXPECT_FALSE(fs::exists(tmp + "/x/sweep.csv"));
 }
@@ -130,7 +131,9 @@ TEST(Sweep, KilledSweepResumesByteIdentical) {
 
 TEST(Sweep, BadVaryIsRefusedNamingTheKeyAndWritesNothing) {
   const std::string dir = make_temp_dir() + "/bad";
-  const auto bad = [&](const std::string& vary) { return rangesim("sweep ls-conventional --vary " + vary + " --out " + dir); };
+  const auto bad = [&](const std::string& vary) {
+    return rangesim("sweep ls-conventional --vary " + vary + " --out " + dir);
+  };
   for (const auto& [vary, fragment] : std::vector<std::pair<std::string, std::string>>{
            {"timing.clok_Hz=1,2", "no parameter 'timing.clok_Hz' for sensor ls-conventional"},
            {"timing.clock_Hz=1:2", "expected KEY=LO:HI:N[:log]"},
@@ -143,8 +146,10 @@ TEST(Sweep, BadVaryIsRefusedNamingTheKeyAndWritesNothing) {
     EXPECT_EQ(r.exit_code, 2) << vary;
     EXPECT_NE(r.err.find(fragment), std::string::npos) << vary << ": " << r.err;
   }
-  const CommandResult zip = rangesim("sweep ls-conventional --zip --vary timing.clock_Hz=1e6,2e6 --vary "
-                                     "multisampling.samplings=1,2,3 --out " + dir);
+  const CommandResult zip = rangesim(
+      "sweep ls-conventional --zip --vary timing.clock_Hz=1e6,2e6 --vary "
+      "multisampling.samplings=1,2,3 --out " +
+      dir);
   EXPECT_NE(zip.err.find("--zip: --vary timing.clock_Hz has 2 values"), std::string::npos) << zip.err;
   EXPECT_FALSE(fs::exists(dir));
 }

@@ -33,9 +33,9 @@ std::string range_of(const std::string& sensor, const std::string& key) {
 
 // Loads an edited preset and checks the UserError message.
 struct Expect {
-  bool line = true;       // message carries "<file>:<line>" of the edited line
-  std::string key;        // full key, e.g. "pixel.columns" ("" = not checked)
-  std::string range;      // allowed range text ("" = not checked)
+  bool line = true;                    // message carries "<file>:<line>" of the edited line
+  std::string key;                     // full key, e.g. "pixel.columns" ("" = not checked)
+  std::string range;                   // allowed range text ("" = not checked)
   std::vector<std::string> also = {};  // further substrings
 };
 
@@ -49,8 +49,12 @@ void expect_load_error(const Edit& edit, const Expect& e) {
     EXPECT_NE(msg.find(fmt::format("{}:{}", file.path(), edit.line)), std::string::npos)
         << "message must name the line " << edit.line;
   }
-  if (!e.key.empty()) { EXPECT_NE(msg.find(e.key), std::string::npos) << "message must name the key " << e.key; }
-  if (!e.range.empty()) { EXPECT_NE(msg.find(e.range), std::string::npos) << "message must give the range " << e.range; }
+  if (!e.key.empty()) {
+    EXPECT_NE(msg.find(e.key), std::string::npos) << "message must name the key " << e.key;
+  }
+  if (!e.range.empty()) {
+    EXPECT_NE(msg.find(e.range), std::string::npos) << "message must give the range " << e.range;
+  }
   for (const auto& s : e.also) EXPECT_NE(msg.find(s), std::string::npos) << "message must contain " << s;
   // The same through load_preset(path).
   EXPECT_EQ(user_error_of([&] { load_preset(file.path()); }), msg);
@@ -109,8 +113,8 @@ TEST(PresetErrors, MissingKeyInEachSensor) {
 
 TEST(PresetErrors, WrongTypeStringForNumber) {
   const std::string key = "tdc.lsb_s";
-  const Edit e = test::replace_rhs(preset_text("tof-spad"), "tdc", "lsb_s",
-                                   R"({ value = "97e-12", source = "assumed: test" })");
+  const Edit e =
+      test::replace_rhs(preset_text("tof-spad"), "tdc", "lsb_s", R"({ value = "97e-12", source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("tof-spad", key), {"must be a number"}});
 }
 
@@ -123,7 +127,8 @@ TEST(PresetErrors, WrongTypeStringForInteger) {
 
 TEST(PresetErrors, FractionForInteger) {
   const std::string key = "tdc.bits";
-  const Edit e = test::replace_rhs(preset_text("tof-spad"), "tdc", "bits", R"({ value = 10.5, source = "assumed: test" })");
+  const Edit e =
+      test::replace_rhs(preset_text("tof-spad"), "tdc", "bits", R"({ value = 10.5, source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("tof-spad", key), {"must be an integer"}});
 }
 
@@ -160,7 +165,8 @@ TEST(PresetErrors, ZeroCapacitance) {
     SCOPED_TRACE(c.id);
     const std::string key = c.section + "." + c.name;
     EXPECT_EQ(range_of(c.id, key).rfind("(0, ", 0), 0u) << "capacitance range must exclude 0";
-    const Edit e = test::replace_rhs(preset_text(c.id), c.section, c.name, R"({ value = 0.0, source = "assumed: test" })");
+    const Edit e =
+        test::replace_rhs(preset_text(c.id), c.section, c.name, R"({ value = 0.0, source = "assumed: test" })");
     expect_load_error(e, {true, key, range_of(c.id, key), {"out of range"}});
   }
 }
@@ -169,25 +175,28 @@ TEST(PresetErrors, ZeroBits) {
   struct Case {
     std::string id, section, name;
   };
-  for (const Case& c : {Case{"ls-conventional", "comparator", "adc_bits"},
-                        Case{"ls-demodulation", "comparator", "adc_bits"},
-                        Case{"tof-lockin", "readout", "adc_bits"}, Case{"tof-spad", "tdc", "bits"}}) {
+  for (const Case& c :
+       {Case{"ls-conventional", "comparator", "adc_bits"}, Case{"ls-demodulation", "comparator", "adc_bits"},
+        Case{"tof-lockin", "readout", "adc_bits"}, Case{"tof-spad", "tdc", "bits"}}) {
     SCOPED_TRACE(c.id);
     const std::string key = c.section + "." + c.name;
-    const Edit e = test::replace_rhs(preset_text(c.id), c.section, c.name, R"({ value = 0, source = "assumed: test" })");
+    const Edit e =
+        test::replace_rhs(preset_text(c.id), c.section, c.name, R"({ value = 0, source = "assumed: test" })");
     expect_load_error(e, {true, key, range_of(c.id, key), {"out of range"}});
   }
 }
 
 TEST(PresetErrors, NaN) {
   const std::string key = "spad.dead_time_s";
-  const Edit e = test::replace_rhs(preset_text("tof-spad"), "spad", "dead_time_s", R"({ value = nan, source = "assumed: test" })");
+  const Edit e =
+      test::replace_rhs(preset_text("tof-spad"), "spad", "dead_time_s", R"({ value = nan, source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("tof-spad", key), {"nan"}});
 }
 
 TEST(PresetErrors, Infinity) {
   const std::string key = "source.pulse_width_s";
-  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "pulse_width_s", R"({ value = inf, source = "assumed: test" })");
+  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "pulse_width_s",
+                                   R"({ value = inf, source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("tof-lockin", key), {"inf"}});
 }
 
@@ -200,19 +209,22 @@ TEST(PresetErrors, ZeroTime) {
 
 TEST(PresetErrors, OutOfRangeInteger) {
   const std::string key = "pixel.columns";
-  const Edit e = test::replace_rhs(preset_text("ls-demodulation"), "pixel", "columns", R"({ value = 100000, source = "assumed: test" })");
+  const Edit e = test::replace_rhs(preset_text("ls-demodulation"), "pixel", "columns",
+                                   R"({ value = 100000, source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("ls-demodulation", key), {"100000", "out of range"}});
 }
 
 TEST(PresetErrors, OutOfRangeIntegerBelowMinimum) {
   const std::string key = "tdc.columns_per_tdc";
-  const Edit e = test::replace_rhs(preset_text("tof-spad"), "tdc", "columns_per_tdc", R"({ value = -4, source = "assumed: test" })");
+  const Edit e = test::replace_rhs(preset_text("tof-spad"), "tdc", "columns_per_tdc",
+                                   R"({ value = -4, source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("tof-spad", key), {"out of range"}});
 }
 
 TEST(PresetErrors, OutOfRangeReal) {
   const std::string key = "source.duty_cycle";
-  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "duty_cycle", R"({ value = 0.6, source = "assumed: test" })");
+  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "source", "duty_cycle",
+                                   R"({ value = 0.6, source = "assumed: test" })");
   expect_load_error(e, {true, key, range_of("tof-lockin", key), {"0.6", "out of range"}});
 }
 
@@ -254,7 +266,8 @@ TEST(PresetErrors, UnknownField) {
 TEST(PresetErrors, UnknownSensorId) {
   const Edit e = test::replace_line(preset_text("tof-spad"), "sensor", "id", R"(id = "tof-flash")");
   // The loader does not know the line of a string value; it names the file.
-  expect_load_error(e, {false, "sensor.id", "", {"tof-flash", "ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"}});
+  expect_load_error(
+      e, {false, "sensor.id", "", {"tof-flash", "ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"}});
 }
 
 TEST(PresetErrors, MissingSensorId) {
@@ -263,7 +276,8 @@ TEST(PresetErrors, MissingSensorId) {
 }
 
 TEST(PresetErrors, TomlSyntaxError) {
-  const Edit e = test::replace_rhs(preset_text("tof-lockin"), "gates", "clock_Hz", R"({ value = 100e6, source = "unterminated )");
+  const Edit e =
+      test::replace_rhs(preset_text("tof-lockin"), "gates", "clock_Hz", R"({ value = 100e6, source = "unterminated )");
   expect_load_error(e, {true, "", "", {"TOML syntax error"}});
 }
 
@@ -323,7 +337,8 @@ TEST(PresetErrors, IntegerOverrideOutOfRangeNamesFlagKeyAndRange) {
   EXPECT_NE(msg.find(range_of("tof-spad", "tdc.bits")), std::string::npos) << msg;
   set.set_integer("tdc.bits", 12, "--tdc-bits", schema);
   EXPECT_EQ(set.integer("tdc.bits"), 12);
-  EXPECT_EQ(user_error_of([&] { set.set_integer("tdc.nope", 1, "--x", schema); }).find("tdc.nope") != std::string::npos, true);
+  EXPECT_EQ(user_error_of([&] { set.set_integer("tdc.nope", 1, "--x", schema); }).find("tdc.nope") != std::string::npos,
+            true);
 }
 
 // ---- Stricter messages: an unknown key lists the allowed keys of its section, a plain value

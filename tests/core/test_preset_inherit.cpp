@@ -56,7 +56,8 @@ samplings = { value = 3, source = "what-if" }
 
 TEST(PresetInherit, ChainsOfRelativePaths) {
   write("a.toml", "base = \"tof-spad\"\n[tdc]\ncolumns_per_tdc = 2\n");
-  const std::string b = write("b.toml", "base = \"a.toml\"\n[sensor]\nid = \"tof-spad\"\n[laser]\nrepetition_rate_Hz = 20e6\n");
+  const std::string b =
+      write("b.toml", "base = \"a.toml\"\n[sensor]\nid = \"tof-spad\"\n[laser]\nrepetition_rate_Hz = 20e6\n");
   const ParamSet p = load_preset(b);
   EXPECT_EQ(p.integer("tdc.columns_per_tdc"), 2);
   EXPECT_DOUBLE_EQ(p.real("laser.repetition_rate_Hz"), 20e6);
@@ -103,7 +104,8 @@ TEST(PresetSet, AppliesAfterThePresetWithTheSameChecks) {
     return error_of([&] { apply_settings(q, {s}); });
   };
   EXPECT_NE(bad("timing.clock_Hz").find("expected KEY=VALUE"), std::string::npos);
-  EXPECT_NE(bad("timing.clok_Hz=1").find("no parameter 'timing.clok_Hz' for sensor ls-conventional"), std::string::npos);
+  EXPECT_NE(bad("timing.clok_Hz=1").find("no parameter 'timing.clok_Hz' for sensor ls-conventional"),
+            std::string::npos);
   EXPECT_NE(bad("timing.clock_Hz=fast").find("is not a number"), std::string::npos);
   EXPECT_NE(bad("multisampling.samplings=65").find("integer in [1, 64]"), std::string::npos);
   EXPECT_NE(bad("multisampling.samplings=2.5").find("out of range"), std::string::npos);

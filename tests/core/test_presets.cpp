@@ -63,7 +63,9 @@ TEST_P(PresetTest, LoadsWithEverySchemaKeyAndASource) {
     EXPECT_FALSE(v.source.empty());
     EXPECT_TRUE(std::regex_search(v.source, status))
         << "source must start with published:/derived:/assumed:/recalled:, got: " << v.source;
-    if (spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer) { EXPECT_TRUE(std::isfinite(v.number)); }
+    if (spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer) {
+      EXPECT_TRUE(std::isfinite(v.number));
+    }
   }
 }
 
@@ -84,10 +86,14 @@ TEST_P(PresetTest, SchemaIsWellFormed) {
     EXPECT_EQ(schema.find(spec.key), &spec);
     if (spec.kind == ParamKind::Real || spec.kind == ParamKind::Integer) {
       EXPECT_LE(spec.min, spec.max);
-      if (spec.min_exclusive) { EXPECT_LT(spec.min, spec.max); }
+      if (spec.min_exclusive) {
+        EXPECT_LT(spec.min, spec.max);
+      }
     }
     // The unit is the key's suffix (SI units in key names, CONVENTIONS.md).
-    if (!spec.unit.empty()) { EXPECT_TRUE(ends_with(lower(spec.key), "_" + lower(spec.unit))) << "unit " << spec.unit; }
+    if (!spec.unit.empty()) {
+      EXPECT_TRUE(ends_with(lower(spec.key), "_" + lower(spec.unit))) << "unit " << spec.unit;
+    }
     // Capacitances, bit counts and times cannot be zero or negative.
     if (ends_with(spec.key, "_F")) {
       EXPECT_EQ(spec.unit, "F");
@@ -102,9 +108,11 @@ TEST_P(PresetTest, SchemaIsWellFormed) {
       EXPECT_EQ(spec.unit, "s");
       EXPECT_GE(spec.min, 0.0);
     }
-    for (const char* positive : {"integration_time_s", "time_constant_s", "pulse_width_s", "pulse_fwhm_s", "dead_time_s",
-                                 "busy_time_s", "lsb_s", "full_range_s"}) {
-      if (ends_with(spec.key, positive)) { EXPECT_TRUE(spec.min_exclusive) << "this time must be > 0"; }
+    for (const char* positive : {"integration_time_s", "time_constant_s", "pulse_width_s", "pulse_fwhm_s",
+                                 "dead_time_s", "busy_time_s", "lsb_s", "full_range_s"}) {
+      if (ends_with(spec.key, positive)) {
+        EXPECT_TRUE(spec.min_exclusive) << "this time must be > 0";
+      }
     }
   }
 }
@@ -206,15 +214,15 @@ TEST(TofLockinPreset, DerivedValuesAreConsistent) {
   EXPECT_NEAR(p.real("readout.detection_threshold_V"),
               p.real("evaluation.signal_min_A") * t0 * n / p.real("pixel.fd1_capacitance_F"), 1e-9);
   // The largest signal (plus offset) fits in the FD swing.
-  EXPECT_LT(p.real("evaluation.signal_max_A") * t0 * n / p.real("pixel.fd1_capacitance_F") +
-                p.real("pixel.offset_voltage_V"),
-            p.real("pixel.saturation_voltage_V"));
+  EXPECT_LT(
+      p.real("evaluation.signal_max_A") * t0 * n / p.real("pixel.fd1_capacitance_F") + p.real("pixel.offset_voltage_V"),
+      p.real("pixel.saturation_voltage_V"));
   // Frame schedule reproduces the published 30 fps within 1%.
-  const double frame_s = n * t0 / p.real("source.duty_cycle") +
-                         p.integer("pixel.rows") *
-                             static_cast<double>(p.integer("readout.adc_conversion_cycles") +
-                                                 p.integer("readout.output_cycles_per_row")) /
-                             p.real("readout.clock_Hz");
+  const double frame_s =
+      n * t0 / p.real("source.duty_cycle") +
+      p.integer("pixel.rows") *
+          static_cast<double>(p.integer("readout.adc_conversion_cycles") + p.integer("readout.output_cycles_per_row")) /
+          p.real("readout.clock_Hz");
   EXPECT_NEAR(1.0 / frame_s, 30.0, 0.3);
   EXPECT_EQ(p.integer("readout.output_cycles_per_row"), 2 * p.integer("pixel.columns"));
   EXPECT_EQ(p.integer("readout.adc_conversion_cycles"), 1LL << p.integer("readout.adc_bits"));

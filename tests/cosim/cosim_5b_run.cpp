@@ -37,16 +37,14 @@ int sc_main(int argc, char* argv[]) {
   const auto t0 = std::chrono::steady_clock::now();
   const rangesim::tb::CosimReport r = t->run(o);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("target %s seed %llu fault %s: cycles %llu transactions %llu golden_checks %llu "
-              "mismatches %llu rtl_assertions %d wall %.2f s\n",
-              r.target.c_str(), static_cast<unsigned long long>(o.seed),
-              o.inject_fault.empty() ? "none" : o.inject_fault.c_str(),
-              static_cast<unsigned long long>(r.cycles),
-              static_cast<unsigned long long>(r.transactions),
-              static_cast<unsigned long long>(r.golden_checks),
-              static_cast<unsigned long long>(r.mismatches), r.rtl_assertions_failed, wall);
-  for (const auto& m : r.first_mismatches)
-    std::printf("  %s\n", rangesim::tb::CosimScoreboard::format(m).c_str());
+  std::printf(
+      "target %s seed %llu fault %s: cycles %llu transactions %llu golden_checks %llu "
+      "mismatches %llu rtl_assertions %d wall %.2f s\n",
+      r.target.c_str(), static_cast<unsigned long long>(o.seed),
+      o.inject_fault.empty() ? "none" : o.inject_fault.c_str(), static_cast<unsigned long long>(r.cycles),
+      static_cast<unsigned long long>(r.transactions), static_cast<unsigned long long>(r.golden_checks),
+      static_cast<unsigned long long>(r.mismatches), r.rtl_assertions_failed, wall);
+  for (const auto& m : r.first_mismatches) std::printf("  %s\n", rangesim::tb::CosimScoreboard::format(m).c_str());
   if (!o.inject_fault.empty()) {
     std::printf("fault %s at %s: %s\n", o.inject_fault.c_str(), r.fault_site.c_str(),
                 r.fault_injected && r.mismatches > 0 ? "CAUGHT" : "MISSED");

@@ -24,9 +24,10 @@ bool claim_elaboration() {
   return first;
 }
 
-#define REQUIRE_FRESH_ELABORATION()                                                   \
-  if (!claim_elaboration()) GTEST_SKIP() << "one SystemC elaboration per process: run " \
-                                            "this test alone (ctest does)"
+#define REQUIRE_FRESH_ELABORATION()                           \
+  if (!claim_elaboration())                                   \
+  GTEST_SKIP() << "one SystemC elaboration per process: run " \
+                  "this test alone (ctest does)"
 
 std::string all(const AddressSearchCosimReport& r) {
   std::string s;
@@ -90,8 +91,7 @@ TEST(AddressSearchCosim, FlippedRtlAddressBitIsReported) {
   ASSERT_GT(r.mismatch_count, 0) << "fault not detected";
   EXPECT_GT(r.sc_errors, 0);
   const std::string text = all(r);
-  const std::string where =
-      "frame 1 row " + std::to_string(r.fault_row) + " cycle ";
+  const std::string where = "frame 1 row " + std::to_string(r.fault_row) + " cycle ";
   EXPECT_NE(text.find(where), std::string::npos) << text;
   EXPECT_NE(text.find("addr_bit_o expected"), std::string::npos) << text;
   EXPECT_NE(text.find("right address expected"), std::string::npos) << text;

@@ -56,9 +56,17 @@ std::string record_path(const char* name) {
 TEST(LockinCosimTargets, ListedWithTheirFaults) {
   // Every sensor's targets through the registry (core/sensor_list.h), sensors first.
   const auto& targets = rangesim::tb::cosim_targets();
-  const char* names[] = {"ls-conventional", "ls-conventional-full", "ls-demodulation", "tof-lockin", "tof-spad",
-                         "address_search", "centre_processor", "multisampling_sequencer", "lockin_gate_generator",
-                         "column_adc", "tdc"};
+  const char* names[] = {"ls-conventional",
+                         "ls-conventional-full",
+                         "ls-demodulation",
+                         "tof-lockin",
+                         "tof-spad",
+                         "address_search",
+                         "centre_processor",
+                         "multisampling_sequencer",
+                         "lockin_gate_generator",
+                         "column_adc",
+                         "tdc"};
   ASSERT_EQ(targets.size(), std::size(names));
   for (std::size_t i = 0; i < targets.size(); ++i) EXPECT_STREQ(targets[i].name, names[i]);
   for (const auto& t : targets) {

@@ -28,9 +28,10 @@ TEST(LsConventionalCosim, NoiseFreeMatchesModelAndGolden) {
   const auto res = run_ls_conventional_cosim(o);
   const CosimReport& r = res.report;
   EXPECT_EQ(res.frames, 60);
-  EXPECT_EQ(r.mismatches, 0u) << (r.first_mismatches.empty() ? "" : r.first_mismatches[0].check + ": " +
-                                                                       r.first_mismatches[0].expected + " / " +
-                                                                       r.first_mismatches[0].actual);
+  EXPECT_EQ(r.mismatches, 0u) << (r.first_mismatches.empty()
+                                      ? ""
+                                      : r.first_mismatches[0].check + ": " + r.first_mismatches[0].expected + " / " +
+                                            r.first_mismatches[0].actual);
   EXPECT_EQ(r.golden_checks, 60u * 8u);
   EXPECT_GT(r.transactions, 60u * 8u);  // centres plus address pairs
   EXPECT_EQ(r.rtl_assertions_failed, 0);

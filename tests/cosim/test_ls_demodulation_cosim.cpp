@@ -49,7 +49,8 @@ TEST(LsDemodulationCosim, NoiseFreeCentresMatchGolden) {
   REQUIRE_FRESH_ELABORATION();
   CosimOptions o;
   o.cycles = 12000;
-  o.seed = 13;  // odd: noise-free (seed 13: 81 golden checks in 12000 cycles; some seeds have no row a golden D decides)
+  o.seed =
+      13;  // odd: noise-free (seed 13: 81 golden checks in 12000 cycles; some seeds have no row a golden D decides)
   const CosimReport r = run_ls_demodulation_cosim(o);
   expect_clean(r, o.cycles);
   EXPECT_GT(r.golden_checks, 0u);

@@ -33,7 +33,8 @@ std::map<std::string, std::string> files_of(const std::string& dir) {
   std::map<std::string, std::string> m;
   for (const auto& e : fs::directory_iterator(dir)) {
     std::ifstream in(e.path(), std::ios::binary);
-    m[e.path().filename().string()] = std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    m[e.path().filename().string()] =
+        std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   }
   return m;
 }
@@ -170,7 +171,8 @@ TEST(EvaluateMcCli, TimeBudgetEndsWithExit4AndKeepsTheJournal) {
   const std::string dir = make_temp_dir() + "/t";
   // kSweep takes about 0.2 s on one thread of a fast machine: 20 times its trials take seconds, far
   // beyond the budget on any machine.
-  const std::string sweep = "evaluate ls-conventional --signal 0.03:0.6:7 --background 0.002:0.02:4 --trials 120000 --no-plots";
+  const std::string sweep =
+      "evaluate ls-conventional --signal 0.03:0.6:7 --background 0.002:0.02:4 --trials 120000 --no-plots";
   const CommandResult r = run_command(kBin + " " + sweep + " --threads 1 --max-seconds 0.3 --out " + dir);
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_NE(r.err.find("--max-seconds 0.3 exceeded"), std::string::npos) << r.err;
@@ -215,16 +217,17 @@ TEST(EvaluateMcCli, TrialCapIsReported) {
   const std::string dir = make_temp_dir() + "/c";
   const CommandResult r = run_command(kBin +
                                       " evaluate ls-conventional --signal 0.05:0.05:1 --background 0.003:0.003:1 "
-                                      "--trials 20 --target-error 1e-9 --max-trials 60 --no-plots --out " + dir);
+                                      "--trials 20 --target-error 1e-9 --max-trials 60 --no-plots --out " +
+                                      dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("1 of 1 points reached --max-trials 60"), std::string::npos) << r.err;
   EXPECT_NE(slurp(dir + "/mc_points.csv").find(",60,"), std::string::npos);
 }
 
 TEST(EvaluateMcCli, BadMonteCarloFlagsExit2WritingNothing) {
-  for (const std::string flags : {"--trials 1", "--trials 100 --threads 0", "--target-error -1", "--target-error nan",
-                                  "--trials 50 --max-trials 10", "--trials 10 --max-seconds 0",
-                                  "--trials 10 --adc-bits 2"}) {
+  for (const std::string flags :
+       {"--trials 1", "--trials 100 --threads 0", "--target-error -1", "--target-error nan",
+        "--trials 50 --max-trials 10", "--trials 10 --max-seconds 0", "--trials 10 --adc-bits 2"}) {
     SCOPED_TRACE(flags);
     const std::string dir = make_temp_dir() + "/x";
     const CommandResult r = run_command(kBin + " evaluate ls-conventional " + flags + " --out " + dir);

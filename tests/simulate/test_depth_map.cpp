@@ -28,7 +28,8 @@ const std::string kScenes = RANGESIM_SCENE_DIR;
 
 fs::path temp_dir() {
   static int n = 0;
-  const fs::path d = fs::temp_directory_path() / ("rangesim-depth-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
+  const fs::path d =
+      fs::temp_directory_path() / ("rangesim-depth-" + std::to_string(::getpid()) + "-" + std::to_string(n++));
   fs::create_directories(d);
   return d;
 }
@@ -120,7 +121,8 @@ TEST(DepthMap, BadImagesNameFileKeyAndRange) {
   EXPECT_NE(e.find("width = '0'; allowed an integer in [1, 16384]"), std::string::npos) << e;
   write_bytes(d / "r.pfm", pfm(1, 1, {500.0f}, true));
   e = error_of([&] { load("r.pfm"); });
-  EXPECT_NE(e.find("distance 500 m at pixel (x 0, y 0) is out of range; allowed [0.01, 100] m"), std::string::npos) << e;
+  EXPECT_NE(e.find("distance 500 m at pixel (x 0, y 0) is out of range; allowed [0.01, 100] m"), std::string::npos)
+      << e;
   e = error_of([&] { load("missing.pgm"); });
   EXPECT_NE(e.find("cannot read the depth-map image"), std::string::npos) << e;
   // A header alone must not allocate the raster it announces (16384^2 doubles = 2 GiB).
@@ -136,13 +138,18 @@ TEST(DepthMap, BadImagesNameFileKeyAndRange) {
 }
 
 TEST(SceneReader, EveryExampleSceneLoadsForItsSensor) {
-  const std::pair<const char*, const char*> examples[] = {
-      {"plane", "ls-conventional"},           {"tilted", "ls-conventional"},
-      {"step", "ls-conventional"},            {"depth-map", "ls-conventional"},
-      {"ls-demodulation-plane", "ls-demodulation"}, {"ls-demodulation-depth-map", "ls-demodulation"},
-      {"tof-lockin-plane", "tof-lockin"},     {"tof-lockin-step", "tof-lockin"},
-      {"tof-lockin-depth-map", "tof-lockin"}, {"tof-spad-plane", "tof-spad"},
-      {"tof-spad-step", "tof-spad"},          {"tof-spad-depth-map", "tof-spad"}};
+  const std::pair<const char*, const char*> examples[] = {{"plane", "ls-conventional"},
+                                                          {"tilted", "ls-conventional"},
+                                                          {"step", "ls-conventional"},
+                                                          {"depth-map", "ls-conventional"},
+                                                          {"ls-demodulation-plane", "ls-demodulation"},
+                                                          {"ls-demodulation-depth-map", "ls-demodulation"},
+                                                          {"tof-lockin-plane", "tof-lockin"},
+                                                          {"tof-lockin-step", "tof-lockin"},
+                                                          {"tof-lockin-depth-map", "tof-lockin"},
+                                                          {"tof-spad-plane", "tof-spad"},
+                                                          {"tof-spad-step", "tof-spad"},
+                                                          {"tof-spad-depth-map", "tof-spad"}};
   for (const auto& [name, sensor] : examples) {
     const sc::Scene s = sc::load_scene(kScenes + "/" + name + ".toml", sensor);
     EXPECT_EQ(s.name, name);
@@ -158,8 +165,9 @@ TEST(SceneReader, DepthMapPathIsRelativeToTheSceneAndKeysAreChecked) {
   const fs::path d = temp_dir();
   fs::create_directories(d / "maps");
   write_bytes(d / "maps" / "m.pgm", "P2 2 2 4 0 4 4 0\n");
-  const std::string good = "[scene]\nname = \"m\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"maps/m.pgm\"\n"
-                           "depth_near_m = 2.0\ndepth_far_m = 3.0\n[rates]\nsignal_Hz = 1e4\n";
+  const std::string good =
+      "[scene]\nname = \"m\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"maps/m.pgm\"\n"
+      "depth_near_m = 2.0\ndepth_far_m = 3.0\n[rates]\nsignal_Hz = 1e4\n";
   const sc::Scene s = sc::load_scene_text(good, (d / "s.toml").string(), "tof-spad");
   ASSERT_TRUE(s.depth_map);
   EXPECT_DOUBLE_EQ(s.depth_map->at(1, 0), 3.0);
@@ -175,32 +183,40 @@ TEST(SceneReader, DepthMapPathIsRelativeToTheSceneAndKeysAreChecked) {
   t = good;
   t.replace(t.find("depth_near_m = 2.0"), 18, "depth_near_m = -2.0");
   e = error_of([&] { sc::load_scene_text(t, (d / "s.toml").string(), "tof-spad"); });
-  EXPECT_NE(e.find("s.toml:6: target.depth_near_m = -2 is out of range; allowed: [0.01, 10000]"), std::string::npos) << e;
+  EXPECT_NE(e.find("s.toml:6: target.depth_near_m = -2 is out of range; allowed: [0.01, 10000]"), std::string::npos)
+      << e;
   t = good + "[camera]\nf_number = 2\n";
   e = error_of([&] { sc::load_scene_text(t, "x.toml", "tof-spad"); });
   EXPECT_NE(e.find("key 'camera.f_number' is not a tof-spad scene key"), std::string::npos) << e;
   t = good;
   t.replace(t.find("shape = \"depth_map\""), 19, "shape = \"tilted\"");
   e = error_of([&] { sc::load_scene_text(t, "x.toml", "tof-spad"); });
-  EXPECT_NE(e.find("target.shape = \"tilted\" is not allowed for tof-spad; allowed: plane, step, depth_map"), std::string::npos) << e;
+  EXPECT_NE(e.find("target.shape = \"tilted\" is not allowed for tof-spad; allowed: plane, step, depth_map"),
+            std::string::npos)
+      << e;
   // Garbage never escapes as anything but UserError (the fuzzing contract).
-  for (const char* junk : {"", "[[x]]", "a = [1, {b = 2}]", "[target]\nshape = 3", "\xff\xfe", "[scene]\nname = \"../x\""})
+  for (const char* junk :
+       {"", "[[x]]", "a = [1, {b = 2}]", "[target]\nshape = 3", "\xff\xfe", "[scene]\nname = \"../x\""})
     EXPECT_THROW(sc::load_scene_text(junk, "junk.toml", "ls-conventional"), rangesim::UserError) << junk;
   fs::remove_all(d);
 }
 
 TEST(SceneOptics, FlatDepthMapGivesThePlaneGroundTruth) {
-  const rangesim::LsConventionalConfig cfg = rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
+  const rangesim::LsConventionalConfig cfg =
+      rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
   const fs::path d = temp_dir();
   write_bytes(d / "flat.pgm", "P2 3 3 10 5 5 5 5 5 5 5 5 5\n");  // 1.0 + 0.5 x (1.2 - 1.0) = 1.1 m everywhere
-  const std::string radiometry = "reflectance = 0.5\n[beam]\npower_W = 0.5\nreference_distance_m = 1.1\ncolumn_offset_px = 0.37\n"
-                                 "[background]\nirradiance_W_per_m2 = 5.0\n[camera]\nf_number = 1.4\nfill_factor = 0.5\n"
-                                 "responsivity_A_per_W = 0.4\n";
-  const sc::Scene map = sc::load_scene_text("[scene]\nname = \"m\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"flat.pgm\"\n"
-                                            "depth_near_m = 1.0\ndepth_far_m = 1.2\n" + radiometry,
-                                            (d / "m.toml").string());
-  const sc::Scene plane =
-      sc::load_scene_text("[scene]\nname = \"p\"\n[target]\nshape = \"plane\"\ndistance_m = 1.1\n" + radiometry, (d / "p.toml").string());
+  const std::string radiometry =
+      "reflectance = 0.5\n[beam]\npower_W = 0.5\nreference_distance_m = 1.1\ncolumn_offset_px = 0.37\n"
+      "[background]\nirradiance_W_per_m2 = 5.0\n[camera]\nf_number = 1.4\nfill_factor = 0.5\n"
+      "responsivity_A_per_W = 0.4\n";
+  const sc::Scene map = sc::load_scene_text(
+      "[scene]\nname = \"m\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"flat.pgm\"\n"
+      "depth_near_m = 1.0\ndepth_far_m = 1.2\n" +
+          radiometry,
+      (d / "m.toml").string());
+  const sc::Scene plane = sc::load_scene_text(
+      "[scene]\nname = \"p\"\n[target]\nshape = \"plane\"\ndistance_m = 1.1\n" + radiometry, (d / "p.toml").string());
   const sc::SceneOptics om(cfg, map), op(cfg, plane);
   int visible = 0;
   for (int b = 0; b < om.beam_positions(); b += 37)
@@ -220,7 +236,8 @@ TEST(SceneOptics, FlatDepthMapGivesThePlaneGroundTruth) {
 TEST(SceneOptics, DepthMapTruthLiesOnTheMap) {
   // The dome example: every visible lit point's depth equals the resampled map at its column
   // (the fixed point of the triangulation), within the bisection's tolerance.
-  const rangesim::LsConventionalConfig cfg = rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
+  const rangesim::LsConventionalConfig cfg =
+      rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
   const sc::Scene s = sc::load_scene(kScenes + "/depth-map.toml");
   const sc::SceneOptics o(cfg, s);
   int visible = 0;
@@ -233,7 +250,8 @@ TEST(SceneOptics, DepthMapTruthLiesOnTheMap) {
       const int c0 = static_cast<int>(std::floor(t.centre_px));
       const int c1 = std::min(c0 + 1, o.columns() - 1);
       const double f = t.centre_px - c0;
-      const double z = (1 - f) * s.map_depth_m(r, c0, o.rows(), o.columns()) + f * s.map_depth_m(r, c1, o.rows(), o.columns());
+      const double z =
+          (1 - f) * s.map_depth_m(r, c0, o.rows(), o.columns()) + f * s.map_depth_m(r, c1, o.rows(), o.columns());
       EXPECT_NEAR(t.range_m, z, 1e-9) << b << " " << r;
       zmin = std::min(zmin, t.range_m), zmax = std::max(zmax, t.range_m);
     }
@@ -244,17 +262,18 @@ TEST(SceneOptics, DepthMapTruthLiesOnTheMap) {
 
 TEST(SceneOptics, CameraRadiometryComesFromThePresetUnlessTheSceneOverridesIt) {
   rangesim::LsConventionalConfig cfg = rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
-  const std::string base = "[scene]\nname = \"c\"\n[target]\nshape = \"plane\"\ndistance_m = 1.0\nreflectance = 0.5\n"
-                           "[beam]\npower_W = 0.5\nreference_distance_m = 1.1\n[background]\nirradiance_W_per_m2 = 5.0\n";
+  const std::string base =
+      "[scene]\nname = \"c\"\n[target]\nshape = \"plane\"\ndistance_m = 1.0\nreflectance = 0.5\n"
+      "[beam]\npower_W = 0.5\nreference_distance_m = 1.1\n[background]\nirradiance_W_per_m2 = 5.0\n";
   const sc::Scene preset_only = sc::load_scene_text(base, "c.toml");
-  const sc::Scene same = sc::load_scene_text(
-      base + "[camera]\nf_number = 1.4\nfill_factor = 0.5\nresponsivity_A_per_W = 0.4\n", "c.toml");
+  const sc::Scene same =
+      sc::load_scene_text(base + "[camera]\nf_number = 1.4\nfill_factor = 0.5\nresponsivity_A_per_W = 0.4\n", "c.toml");
   const sc::Scene slower = sc::load_scene_text(base + "[camera]\nf_number = 2.8\n", "c.toml");
   ASSERT_DOUBLE_EQ(cfg.optics.f_number, 1.4);  // presets/ls-conventional.toml
   ASSERT_DOUBLE_EQ(cfg.pixel.fill_factor, 0.5);
   ASSERT_DOUBLE_EQ(cfg.pixel.responsivity_A_per_W, 0.4);
-  const sc::RowTruth a = sc::SceneOptics(cfg, preset_only).truth(100, 100), b = sc::SceneOptics(cfg, same).truth(100, 100),
-                     c = sc::SceneOptics(cfg, slower).truth(100, 100);
+  const sc::RowTruth a = sc::SceneOptics(cfg, preset_only).truth(100, 100),
+                     b = sc::SceneOptics(cfg, same).truth(100, 100), c = sc::SceneOptics(cfg, slower).truth(100, 100);
   EXPECT_DOUBLE_EQ(a.signal_V, b.signal_V);
   EXPECT_DOUBLE_EQ(a.background_V, b.background_V);
   EXPECT_NEAR(c.signal_V, a.signal_V / 4, 1e-12 * a.signal_V);  // lens area ~ 1 / F#^2

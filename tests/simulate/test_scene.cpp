@@ -24,11 +24,14 @@ namespace {
 
 const std::string kScenes = RANGESIM_SCENE_DIR;
 
-LsConventionalConfig preset() { return rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional")); }
+LsConventionalConfig preset() {
+  return rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
+}
 
 std::string write_temp(const std::string& text) {
   static int n = 0;
-  const auto p = std::filesystem::temp_directory_path() / ("rangesim-scene-" + std::to_string(::getpid()) + "-" + std::to_string(n++) + ".toml");
+  const auto p = std::filesystem::temp_directory_path() /
+                 ("rangesim-scene-" + std::to_string(::getpid()) + "-" + std::to_string(n++) + ".toml");
   std::ofstream(p) << text;
   return p.string();
 }
@@ -111,7 +114,8 @@ TEST(SceneOptics, GroundTruthAgreesWithGoldenTriangulation) {
         const double x_e = (t.centre_px - o.principal_column_px()) * c.pixel.pitch_m;
         if (std::fabs(x_e) < 1e-9) continue;
         // golden: range from the image position and the beam angle (eq. 1.1-1.6 corrected).
-        EXPECT_NEAR(rangesim::golden::range_from_image_m(c.optics, x_e, o.beam_angle_rad(b)), t.range_m, 1e-9 * t.range_m)
+        EXPECT_NEAR(rangesim::golden::range_from_image_m(c.optics, x_e, o.beam_angle_rad(b)), t.range_m,
+                    1e-9 * t.range_m)
             << name << " b " << b << " r " << r;
         EXPECT_NEAR(o.range_from_centre_m(b, t.centre_px), t.range_m, 1e-12 * t.range_m);
       }
@@ -155,8 +159,8 @@ TEST(SceneOptics, NoiseFreeKernelRunEqualsGoldenEstimateOfTheScene) {
     for (int r = 0; r < o.rows(); ++r) {
       const sc::RowTruth t = o.truth(o.beam_position(fr.frame), r);
       const auto& p = fr.rows[static_cast<std::size_t>(r)];
-      const auto g = rangesim::golden::noise_free_estimate(rangesim::golden::make_row_model(c, t.signal_V, t.background_V),
-                                                           t.centre_px);
+      const auto g = rangesim::golden::noise_free_estimate(
+          rangesim::golden::make_row_model(c, t.signal_V, t.background_V), t.centre_px);
       ASSERT_EQ(p.valid, t.hit && g.detected) << r;
       if (!p.valid) continue;
       ASSERT_EQ(p.exact_centre_px(), g.centre_px);

@@ -32,11 +32,12 @@ std::string slurp(const std::string& path) {
 
 TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
   const std::string dir = make_temp_dir();
-  const CommandResult r = simulate("--scene " + kScenes + "/plane.toml --frames 40 --kernel-only --json --out " + dir + "/o");
+  const CommandResult r =
+      simulate("--scene " + kScenes + "/plane.toml --frames 40 --kernel-only --json --out " + dir + "/o");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"frame_time_s", "frame_rate_Hz", "cycles", "range_error_rms_m", "range_error_rms_px", "phases",
-                          "golden", "frame_cycles", "points_detected"})
+  for (const char* key : {"frame_time_s", "frame_rate_Hz", "cycles", "range_error_rms_m", "range_error_rms_px",
+                          "phases", "golden", "frame_cycles", "points_detected"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_EQ(j["cycles"].get<long long>(), 40 * 100);
   EXPECT_NEAR(j["frame_rate_Hz"].get<double>(), 394.5e3, 1e-6);
@@ -45,7 +46,8 @@ TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
   EXPECT_GT(j["points_detected"].get<long long>(), 40 * 300);
   EXPECT_LT(j["range_error_rms_px"].get<double>(), 0.3);
   EXPECT_LT(j["range_error_rms_m"].get<double>(), 5e-3);
-  for (const char* f : {"range_map.csv", "points.csv", "frames.csv", "summary.json"}) EXPECT_TRUE(fs::exists(dir + "/o/" + f)) << f;
+  for (const char* f : {"range_map.csv", "points.csv", "frames.csv", "summary.json"})
+    EXPECT_TRUE(fs::exists(dir + "/o/" + f)) << f;
   const std::string frames = slurp(dir + "/o/frames.csv");
   EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 41);
   EXPECT_NE(frames.find("\n0,0,100,100,4,4,8,72,12,"), std::string::npos) << frames.substr(0, 200);
@@ -55,8 +57,10 @@ TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
 TEST(SimulateCommand, SystemCEqualsKernelAndWritesTrace) {
   const std::string dir = make_temp_dir();
   const std::string scene = kScenes + "/step.toml";
-  const CommandResult k = simulate("--scene " + scene + " --frames 3 --kernel-only --json --no-plots --out " + dir + "/k");
-  const CommandResult s = simulate("--scene " + scene + " --frames 3 --json --no-plots --trace " + dir + "/w.vcd --out " + dir + "/s");
+  const CommandResult k =
+      simulate("--scene " + scene + " --frames 3 --kernel-only --json --no-plots --out " + dir + "/k");
+  const CommandResult s =
+      simulate("--scene " + scene + " --frames 3 --json --no-plots --trace " + dir + "/w.vcd --out " + dir + "/s");
   ASSERT_EQ(k.exit_code, 0) << k.err;
   ASSERT_EQ(s.exit_code, 0) << s.err;
   const auto jk = nlohmann::json::parse(k.out), js = nlohmann::json::parse(s.out);
@@ -65,7 +69,8 @@ TEST(SimulateCommand, SystemCEqualsKernelAndWritesTrace) {
   EXPECT_EQ(js["cycles"], jk["cycles"]);
   EXPECT_EQ(js["range_error_rms_m"], jk["range_error_rms_m"]);
   EXPECT_EQ(slurp(dir + "/k/points.csv"), slurp(dir + "/s/points.csv"));
-  EXPECT_NEAR(js["frame_time_s"].get<double>(), jk["frame_time_s"].get<double>(), 1e-7 * jk["frame_time_s"].get<double>());
+  EXPECT_NEAR(js["frame_time_s"].get<double>(), jk["frame_time_s"].get<double>(),
+              1e-7 * jk["frame_time_s"].get<double>());
   const std::string vcd = slurp(dir + "/w.vcd");
   EXPECT_NE(vcd.find("$enddefinitions"), std::string::npos);
   EXPECT_NE(vcd.find("search_start"), std::string::npos);
@@ -94,7 +99,8 @@ TEST(SimulateCommand, BadInputExitsTwoAndWritesNothing) {
   std::ofstream(dir + "/bad.toml") << "[scene]\nname = \"b\"\n[target]\nshape = \"plane\"\ndistance_m = -1\n";
   const CommandResult r = simulate("--scene " + dir + "/bad.toml --kernel-only --out " + dir + "/o");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("bad.toml:5: target.distance_m = -1 is out of range; allowed: [0.01, 10000]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bad.toml:5: target.distance_m = -1 is out of range; allowed: [0.01, 10000]"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(dir + "/o"));
   // A light-section scene is not a tof-spad scene: the scene reader names the file.
   const CommandResult m = run_command(kDriver + " simulate tof-spad --scene " + kScenes + "/plane.toml --kernel-only");

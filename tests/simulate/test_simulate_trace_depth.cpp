@@ -49,11 +49,11 @@ std::vector<double> csv_column(const std::string& path, const std::string& name)
 struct DepthCase {
   const char* sensor;
   const char* scene;
-  const char* args;    // frames, harness
-  double rms_max_m;    // bound on the range error against the map
+  const char* args;      // frames, harness
+  double rms_max_m;      // bound on the range error against the map
   double near_m, far_m;  // the scene's depth_near_m / depth_far_m
-  bool has_points;     // writes points.csv with truth_range_m
-  double min_span;     // the truth must span this fraction of [near, far] (the map is not flat there)
+  bool has_points;       // writes points.csv with truth_range_m
+  double min_span;       // the truth must span this fraction of [near, far] (the map is not flat there)
 };
 
 }  // namespace
@@ -61,15 +61,16 @@ struct DepthCase {
 TEST(SimulateDepthMap, EverySensorRangesTheMap) {
   const DepthCase cases[] = {
       {"ls-conventional", "depth-map", "--frames 60 --kernel-only", 5e-3, 0.95, 1.15, true, 0.3},
-      {"ls-demodulation", "ls-demodulation-depth-map", "--frames 3 --kernel-only", 5e-3, 0.98, 1.06, true, 0.01},  // 3 frames: the stripe at the map's edge
+      {"ls-demodulation", "ls-demodulation-depth-map", "--frames 3 --kernel-only", 5e-3, 0.98, 1.06, true,
+       0.01},  // 3 frames: the stripe at the map's edge
       {"tof-lockin", "tof-lockin-depth-map", "--kernel-only --noise-free", 20e-3, 2.0, 4.0, false, 0},
       {"tof-spad", "tof-spad-depth-map", "--kernel-only", 15e-3, 1.5, 3.0, true, 0.3},
   };
   const std::string dir = make_temp_dir();
   for (const DepthCase& c : cases) {
     const std::string out = dir + "/" + c.sensor;
-    const CommandResult r = rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene + ".toml " +
-                                         c.args + " --json --no-plots --out " + out);
+    const CommandResult r = rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene +
+                                         ".toml " + c.args + " --json --no-plots --out " + out);
     ASSERT_EQ(r.exit_code, 0) << c.sensor << "\n" << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["target_shape"], "depth_map") << c.sensor;
@@ -90,16 +91,21 @@ TEST(SimulateDepthMap, EverySensorRangesTheMap) {
 
 TEST(SimulateDepthMap, BadDepthMapExitsTwoNamingFileAndKey) {
   const std::string dir = make_temp_dir();
-  std::ofstream(dir + "/s.toml") << "[scene]\nname = \"s\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"nope.pgm\"\n"
-                                    "depth_near_m = 1\ndepth_far_m = 2\n[rates]\nsignal_Hz = 1e4\n";
-  const CommandResult r = rangesim_cmd("simulate tof-spad --scene " + dir + "/s.toml --kernel-only --out " + dir + "/o");
+  std::ofstream(dir + "/s.toml")
+      << "[scene]\nname = \"s\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"nope.pgm\"\n"
+         "depth_near_m = 1\ndepth_far_m = 2\n[rates]\nsignal_Hz = 1e4\n";
+  const CommandResult r =
+      rangesim_cmd("simulate tof-spad --scene " + dir + "/s.toml --kernel-only --out " + dir + "/o");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find(dir + "/s.toml:5: target.depth_map_file (" + dir + "/nope.pgm): cannot read"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir + "/s.toml:5: target.depth_map_file (" + dir + "/nope.pgm): cannot read"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(dir + "/o"));
   std::ofstream(dir + "/far.pgm") << "P2 1 1 1 1\n";
-  std::ofstream(dir + "/t.toml") << "[scene]\nname = \"t\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"far.pgm\"\n"
-                                    "depth_near_m = 1\ndepth_far_m = 50\n[rates]\nsignal_Hz = 1e4\n";
-  const CommandResult f = rangesim_cmd("simulate tof-spad --scene " + dir + "/t.toml --kernel-only --out " + dir + "/o");
+  std::ofstream(dir + "/t.toml")
+      << "[scene]\nname = \"t\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"far.pgm\"\n"
+         "depth_near_m = 1\ndepth_far_m = 50\n[rates]\nsignal_Hz = 1e4\n";
+  const CommandResult f =
+      rangesim_cmd("simulate tof-spad --scene " + dir + "/t.toml --kernel-only --out " + dir + "/o");
   EXPECT_EQ(f.exit_code, 2) << f.err;
   EXPECT_NE(f.err.find("target.depth_map_file: distance 50 m; allowed 0.3 <= distance <="), std::string::npos) << f.err;
   EXPECT_FALSE(fs::exists(dir + "/o"));
@@ -134,8 +140,9 @@ class SimulateTraceFst : public ::testing::TestWithParam<TraceCase> {};
 TEST_P(SimulateTraceFst, ReadBackByFst2Vcd) {
   const TraceCase& c = GetParam();
   const std::string dir = make_temp_dir();
-  const CommandResult r = rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene + ".toml " +
-                                       c.args + " --json --no-plots --trace " + dir + "/w.fst --out " + dir + "/o");
+  const CommandResult r =
+      rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene + ".toml " + c.args +
+                   " --json --no-plots --trace " + dir + "/w.fst --out " + dir + "/o");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out)["trace"], dir + "/w.fst");
   ASSERT_TRUE(fs::exists(dir + "/w.fst"));
@@ -157,11 +164,25 @@ TEST_P(SimulateTraceFst, ReadBackByFst2Vcd) {
 INSTANTIATE_TEST_SUITE_P(
     EverySensor, SimulateTraceFst,
     ::testing::Values(
-        TraceCase{"ls-conventional", "plane", "--frames 2", {"clk", "rst", "latch", "search_start", "row0_addr_bit", "frame"}, "latch", 8},
-        TraceCase{"ls-demodulation", "ls-demodulation-plane", "--frames 1 --tick",
-                  {"clk", "phase", "decision", "phase_cycle", "mpy_plus", "row", "search_start", "addr_valid", "addr_bit", "frame_done"},
-                  "addr_valid", 1},
-        TraceCase{"tof-lockin", "tof-lockin-plane", "--frames 1", {"tx1", "tx2", "txd", "light", "phase", "row"}, "row", 100},  // gates aggregated: rows move
+        TraceCase{"ls-conventional",
+                  "plane",
+                  "--frames 2",
+                  {"clk", "rst", "latch", "search_start", "row0_addr_bit", "frame"},
+                  "latch",
+                  8},
+        TraceCase{"ls-demodulation",
+                  "ls-demodulation-plane",
+                  "--frames 1 --tick",
+                  {"clk", "phase", "decision", "phase_cycle", "mpy_plus", "row", "search_start", "addr_valid",
+                   "addr_bit", "frame_done"},
+                  "addr_valid",
+                  1},
+        TraceCase{"tof-lockin",
+                  "tof-lockin-plane",
+                  "--frames 1",
+                  {"tx1", "tx2", "txd", "light", "phase", "row"},
+                  "row",
+                  100},  // gates aggregated: rows move
         TraceCase{"tof-spad", "tof-spad-plane", "--frames 1", {"row", "phase", "word_valid", "word"}, "word_valid", 1}),
     [](const ::testing::TestParamInfo<TraceCase>& i) {
       std::string n = i.param.sensor;
@@ -173,8 +194,8 @@ TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
   const std::string dir = make_temp_dir();
   // --no-aggregate: the periods stepped one by one, so the trace shows every MPY edge (aggregated,
   // the integration is one jump and mpy_plus shows none of them).
-  const std::string base =
-      "simulate ls-demodulation --scene " + kScenes + "/ls-demodulation-plane.toml --frames 1 --json --no-plots --no-aggregate";
+  const std::string base = "simulate ls-demodulation --scene " + kScenes +
+                           "/ls-demodulation-plane.toml --frames 1 --json --no-plots --no-aggregate";
   const CommandResult a = rangesim_cmd(base + " --trace " + dir + "/a.vcd --out " + dir + "/a");
   const CommandResult b = rangesim_cmd(base + " --trace " + dir + "/b.fst --out " + dir + "/b");
   ASSERT_EQ(a.exit_code, 0) << a.err;
@@ -185,7 +206,8 @@ TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
     ASSERT_TRUE(va.has(s) && vb.has(s)) << s;
     EXPECT_EQ(va.of(s), vb.of(s)) << s;  // the conversion keeps every change
   }
-  EXPECT_GE(va.rising_edges("mpy_plus").size(), 4U);  // N = 5 correlation periods; event skipping shows the edges it stops at
+  EXPECT_GE(va.rising_edges("mpy_plus").size(),
+            4U);  // N = 5 correlation periods; event skipping shows the edges it stops at
   // Bad --trace: exit 2, the message names the flag, nothing written.
   struct Case {
     std::string args, message;
@@ -215,10 +237,12 @@ TEST(SimulatePresetKeys, TofSpadReadoutWordRateSetsTheReadoutPhaseInGoldenAndKer
   std::ofstream(dir + "/slow.toml") << text;
   auto readout_cycles = [](const nlohmann::json& phases) {
     for (const auto& p : phases)
-      if (p["name"] == "histogram_readout") return p.contains("golden_cycles") ? p["golden_cycles"].get<long long>() : p["cycles"].get<long long>();
+      if (p["name"] == "histogram_readout")
+        return p.contains("golden_cycles") ? p["golden_cycles"].get<long long>() : p["cycles"].get<long long>();
     return -1LL;
   };
-  const CommandResult fast = rangesim_cmd("frame-rate tof-spad --json"), slow = rangesim_cmd("frame-rate " + dir + "/slow.toml --json");
+  const CommandResult fast = rangesim_cmd("frame-rate tof-spad --json"),
+                      slow = rangesim_cmd("frame-rate " + dir + "/slow.toml --json");
   ASSERT_EQ(fast.exit_code, 0) << fast.err;
   ASSERT_EQ(slow.exit_code, 0) << slow.err;
   const long long rf = readout_cycles(nlohmann::json::parse(fast.out)["phases"]);

@@ -56,8 +56,8 @@ std::vector<double> all_diff_V(const DemodRunResult& r) {
 }
 
 std::string describe(const TwoSampleComparison& c) {
-  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) + " SE (variance), KS p " +
-         ::testing::PrintToString(c.ks_p);
+  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) +
+         " SE (variance), KS p " + ::testing::PrintToString(c.ks_p);
 }
 
 TEST(DemodAggregation, NoiseFreeEqualsPerPeriod) {

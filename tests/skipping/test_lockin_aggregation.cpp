@@ -25,8 +25,8 @@ Samples run(const TofLockinConfig& cfg, bool aggregated, double signal_A, std::u
   o.seed = seed;
   const int columns = 64;
   const long long frames = 60;  // 30 range maps (LED + ambient frame each)
-  TofLockinSensorKernel k(cfg, o, 1, columns, std::vector<LockinPixelStimulus>(columns, {signal_A, 1e-10, 2 * 2.0 / 299792458.0}),
-                          frames);
+  TofLockinSensorKernel k(cfg, o, 1, columns,
+                          std::vector<LockinPixelStimulus>(columns, {signal_A, 1e-10, 2 * 2.0 / 299792458.0}), frames);
   k.run();
   Samples s;
   for (const auto& rec : k.frame_records())
@@ -39,8 +39,8 @@ Samples run(const TofLockinConfig& cfg, bool aggregated, double signal_A, std::u
 }
 
 std::string describe(const TwoSampleComparison& c) {
-  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) + " SE (variance), KS p " +
-         ::testing::PrintToString(c.ks_p);
+  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) +
+         " SE (variance), KS p " + ::testing::PrintToString(c.ks_p);
 }
 
 TEST(LockinAggregation, StatisticallyIdenticalToPerClock) {

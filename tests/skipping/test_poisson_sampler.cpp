@@ -43,7 +43,8 @@ TEST(PoissonSampler, StatisticallyIdenticalToStdPoissonOnBothPaths) {
   for (double mu : {0.3, 2.0, 9.99, 10.0, 37.0, 480.0, 2.6e4}) {
     const std::vector<double> a = sampler_draws(mu, seed++), b = reference_draws(mu, seed++);
     const auto c = compare_samples(a, b);
-    EXPECT_TRUE(c.indistinguishable()) << "mu " << mu << ": mean z " << c.mean_z << " var z " << c.var_z << " KS p " << c.ks_p;
+    EXPECT_TRUE(c.indistinguishable()) << "mu " << mu << ": mean z " << c.mean_z << " var z " << c.var_z << " KS p "
+                                       << c.ks_p;
     // And against the exact moments: E = Var = mu.
     const auto m = moments(a);
     EXPECT_LT(std::abs(m.mean - mu) / std::sqrt(mu / kDraws), 5) << "mu " << mu << " mean " << m.mean;
@@ -90,7 +91,8 @@ TEST(PoissonSampler, LogPmfKeepsItsDigitsAtHugeMeans) {
   // Normalisation over +-9 sd at mu = 1e12 (the direct double sum is off by ~1e-2 here).
   const double mu = 1e12, sd = 1e6;
   long double sum = 0;
-  for (double k = std::floor(mu - 9 * sd); k <= mu + 9 * sd; k += 1) sum += std::exp(sc::PoissonSampler::log_pmf(mu, k));
+  for (double k = std::floor(mu - 9 * sd); k <= mu + 9 * sd; k += 1)
+    sum += std::exp(sc::PoissonSampler::log_pmf(mu, k));
   EXPECT_NEAR(static_cast<double>(sum), 1.0, 1e-8);
   // Small k keep the direct form; the two forms meet at k = 16.
   for (double m : {10.0, 16.0, 40.0})
@@ -101,7 +103,8 @@ TEST(PoissonSampler, LogPmfKeepsItsDigitsAtHugeMeans) {
 TEST(StandardNormalPair, StatisticallyIdenticalToStdNormalAndUncorrelated) {
   pcg32 rng = sc::pixel_stream(sc::pixel_stream_key(7, 1, 2, 3));
   std::vector<double> z1(kDraws), z2(kDraws), ref(kDraws);
-  for (int i = 0; i < kDraws; ++i) sc::standard_normal_pair(rng, z1[static_cast<std::size_t>(i)], z2[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < kDraws; ++i)
+    sc::standard_normal_pair(rng, z1[static_cast<std::size_t>(i)], z2[static_cast<std::size_t>(i)]);
   std::mt19937_64 mt(5);
   std::normal_distribution<double> n;
   for (double& v : ref) v = n(mt);

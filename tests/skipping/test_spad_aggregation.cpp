@@ -34,7 +34,7 @@ TofSpadConfig exact_config() {
 }
 
 struct SpadRun {
-  std::vector<std::vector<double>> bin;  // [code][pixel sample]
+  std::vector<std::vector<double>> bin;    // [code][pixel sample]
   std::vector<std::vector<double>> armed;  // [code][group sample]
   std::vector<double> overflows, avalanches, range, peak;
   long long aggregated_groups = 0;
@@ -54,10 +54,12 @@ SpadRun run(const TofSpadConfig& cfg, bool aggregate, double signal_Hz, std::uin
     r.aggregated_groups += h.aggregated;
     r.overflows.push_back(static_cast<double>(h.overflows));
     r.avalanches.push_back(static_cast<double>(h.avalanches));
-    for (int i = 0; i < k.codes(); ++i) r.armed[static_cast<size_t>(i)].push_back(static_cast<double>(h.armed[static_cast<size_t>(i)]));
+    for (int i = 0; i < k.codes(); ++i)
+      r.armed[static_cast<size_t>(i)].push_back(static_cast<double>(h.armed[static_cast<size_t>(i)]));
     for (int p = 0; p < cfg.tdc.columns_per_tdc; ++p) {
       const auto& ev = h.events[static_cast<size_t>(p)];
-      for (int i = 0; i < k.codes(); ++i) r.bin[static_cast<size_t>(i)].push_back(static_cast<double>(ev[static_cast<size_t>(i)]));
+      for (int i = 0; i < k.codes(); ++i)
+        r.bin[static_cast<size_t>(i)].push_back(static_cast<double>(ev[static_cast<size_t>(i)]));
       r.peak.push_back(static_cast<double>(std::max_element(ev.begin(), ev.end()) - ev.begin()));
       const PixelResult px = k.make_pixel(0, g * cfg.tdc.columns_per_tdc + p, h, p);
       r.range.push_back(px.time_s ? px.range_m : -1.0);
@@ -80,11 +82,12 @@ std::vector<std::string> differences(const SpadRun& a, const SpadRun& b) {
   }
   if (!moments_agree(a.overflows, b.overflows)) bad.push_back("overflows");
   if (!moments_agree(a.avalanches, b.avalanches)) bad.push_back("avalanches");
-  for (const auto& [name, x, y] : {std::tuple{"range", &a.range, &b.range}, std::tuple{"peak code", &a.peak, &b.peak}}) {
+  for (const auto& [name, x, y] :
+       {std::tuple{"range", &a.range, &b.range}, std::tuple{"peak code", &a.peak, &b.peak}}) {
     const TwoSampleComparison c = compare_samples(*x, *y);
     if (!c.indistinguishable())
-      bad.push_back(std::string(name) + ": mean " + std::to_string(c.mean_z) + " SE, var " + std::to_string(c.var_z) + " SE, KS p " +
-                    std::to_string(c.ks_p));
+      bad.push_back(std::string(name) + ": mean " + std::to_string(c.mean_z) + " SE, var " + std::to_string(c.var_z) +
+                    " SE, KS p " + std::to_string(c.ks_p));
   }
   return bad;
 }
@@ -123,7 +126,8 @@ TEST(SpadAggregation, StatisticallyIdenticalToPerCycle) {
   ASSERT_EQ(cyc.aggregated_groups, 0);
   // The point is pile-up heavy: the group detects in ~30% of the cycles, so Coates matters.
   double events = 0;
-  for (const auto& b : agg.bin) for (double v : b) events += v;
+  for (const auto& b : agg.bin)
+    for (double v : b) events += v;
   EXPECT_GT(events / kGroups, 0.2 * 40000);
   const std::vector<std::string> bad = differences(agg, cyc);
   EXPECT_TRUE(bad.empty()) << ::testing::PrintToString(bad);

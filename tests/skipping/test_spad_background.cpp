@@ -41,7 +41,8 @@ TofSpadConfig exact_config() {
   return cfg;
 }
 
-TofSpadKernel kernel(const TofSpadConfig& cfg, bool sparse, std::uint64_t seed, int groups = kGroups, SpadNoise noise = {}) {
+TofSpadKernel kernel(const TofSpadConfig& cfg, bool sparse, std::uint64_t seed, int groups = kGroups,
+                     SpadNoise noise = {}) {
   TofSpadKernelOptions o;
   o.seed = seed;
   o.sparse = sparse;
@@ -75,7 +76,8 @@ Samples run(const TofSpadConfig& cfg, bool sparse, double background_Hz, std::ui
     s.overflows.push_back(static_cast<double>(h.overflows));
     s.avalanches.push_back(static_cast<double>(h.avalanches));
     s.photons.push_back(static_cast<double>(h.photons));
-    for (int i = 0; i < k.codes(); ++i) s.armed[static_cast<size_t>(i)].push_back(static_cast<double>(h.armed[static_cast<size_t>(i)]));
+    for (int i = 0; i < k.codes(); ++i)
+      s.armed[static_cast<size_t>(i)].push_back(static_cast<double>(h.armed[static_cast<size_t>(i)]));
   }
   for (const PixelResult& p : f.pixels) {
     double total = 0;
@@ -106,12 +108,13 @@ std::vector<std::string> differences(const Samples& a, const Samples& b) {
   if (!moments_agree(a.overflows, b.overflows)) bad.push_back("overflows");
   if (!moments_agree(a.avalanches, b.avalanches)) bad.push_back("avalanches");
   if (!moments_agree(a.photons, b.photons)) bad.push_back("photons");
-  for (const auto& [name, x, y] : {std::tuple{"total counts", &a.total, &b.total}, std::tuple{"peak code", &a.peak, &b.peak},
-                                   std::tuple{"range", &a.range, &b.range}}) {
+  for (const auto& [name, x, y] :
+       {std::tuple{"total counts", &a.total, &b.total}, std::tuple{"peak code", &a.peak, &b.peak},
+        std::tuple{"range", &a.range, &b.range}}) {
     const TwoSampleComparison c = compare_samples(*x, *y);
     if (!c.indistinguishable())
-      bad.push_back(std::string(name) + ": mean " + std::to_string(c.mean_z) + " SE, var " + std::to_string(c.var_z) + " SE, KS p " +
-                    std::to_string(c.ks_p));
+      bad.push_back(std::string(name) + ": mean " + std::to_string(c.mean_z) + " SE, var " + std::to_string(c.var_z) +
+                    " SE, KS p " + std::to_string(c.ks_p));
   }
   // Detection fraction: two proportions, pooled standard error.
   const double n = static_cast<double>(a.detected.size()), m = static_cast<double>(b.detected.size());
@@ -119,7 +122,8 @@ std::vector<std::string> differences(const Samples& a, const Samples& b) {
   for (double v : a.detected) pa += v / n;
   for (double v : b.detected) pb += v / m;
   const double pool = (pa * n + pb * m) / (n + m), se = std::sqrt(pool * (1 - pool) * (1 / n + 1 / m));
-  if (se > 0 ? std::fabs(pa - pb) > 5 * se : pa != pb) bad.push_back("detection fraction " + std::to_string(pa) + " vs " + std::to_string(pb));
+  if (se > 0 ? std::fabs(pa - pb) > 5 * se : pa != pb)
+    bad.push_back("detection fraction " + std::to_string(pa) + " vs " + std::to_string(pb));
   return bad;
 }
 
@@ -156,7 +160,8 @@ TEST(SpadBackground, ClassPathAndDeterministicPartsIdentical) {
     }
     // No arrivals at all (noise-free, no echo): the class's empty histogram in any configuration,
     // equal to the per-cycle one bit for bit.
-    const TofSpadKernel ns = kernel(*cfg, true, 7, 2, SpadNoise::none()), nd = kernel(*cfg, false, 7, 2, SpadNoise::none());
+    const TofSpadKernel ns = kernel(*cfg, true, 7, 2, SpadNoise::none()),
+                        nd = kernel(*cfg, false, 7, 2, SpadNoise::none());
     const GroupHistogram e_s = ns.simulate_group(0, 0, 1, spot), e_d = nd.simulate_group(0, 0, 1, spot);
     EXPECT_TRUE(e_s.background_class);
     test::expect_same_histogram(e_s, e_d);

@@ -93,7 +93,8 @@ inline rc::Gen<LsConventionalConfig> config_gen(Limits lim = {}) {
     // Cost caps (see above): shrink the row for many samplings, the samplings for many bits.
     const double n = c.multisampling.samplings;
     c.pixel.columns = std::max(1, std::min(c.pixel.columns, static_cast<int>(4e6 / (n * n * n))));
-    while (c.multisampling.samplings > 1 && double(c.multisampling.samplings) * (1 << c.comparator.adc_bits) > (1 << 18))
+    while (c.multisampling.samplings > 1 &&
+           double(c.multisampling.samplings) * (1 << c.comparator.adc_bits) > (1 << 18))
       c.multisampling.samplings /= 2;
     c.search.columns = c.pixel.columns;
     c.optics.focal_length_m = *log_uniform(1e-4, 10.0);

@@ -15,10 +15,10 @@ inline std::ostream& operator<<(std::ostream& os, const LsDemodulationConfig& c)
             << " frequency_Hz=" << c.modulation.frequency_Hz << " clock_Hz=" << c.readout.clock_Hz
             << " columns=" << c.pixel.columns << " source_duty=" << c.modulation.source_duty_cycle
             << " reference_duty=" << c.correlator.reference_duty_cycle
-            << " reference_phase_rad=" << c.modulation.reference_phase_rad << " mirror_gain=" << c.suppression.mirror_gain
-            << " mirror_mismatch=" << c.suppression.mirror_mismatch << " tau_s=" << c.suppression.lpf_time_constant_s
-            << " log_gain=" << c.log_converter.gain << " slope_V=" << c.log_converter.slope_V
-            << " offset_current_A=" << c.log_converter.offset_current_A
+            << " reference_phase_rad=" << c.modulation.reference_phase_rad
+            << " mirror_gain=" << c.suppression.mirror_gain << " mirror_mismatch=" << c.suppression.mirror_mismatch
+            << " tau_s=" << c.suppression.lpf_time_constant_s << " log_gain=" << c.log_converter.gain
+            << " slope_V=" << c.log_converter.slope_V << " offset_current_A=" << c.log_converter.offset_current_A
             << " leakage_current_A=" << c.log_converter.leakage_current_A << " C1_F=" << c.correlator.capacitance_plus_F
             << " C2_F=" << c.correlator.capacitance_minus_F << " gm_S=" << c.correlator.transconductance_S
             << " vsat_V=" << c.correlator.saturation_voltage_V << " vcmp_V=" << c.comparator.threshold_V

@@ -43,8 +43,7 @@ rc::Gen<Args> args_gen() {
     a.mu = *rc::gen::oneOf(log_uniform_or_zero(1e-300, 1e10), rc::gen::element(0.0, 1e-300, 1e-30, 0.5, 1.0));
     a.s = *rc::gen::oneOf(rc::gen::just(0.0), log_uniform(1e-300, 1e9), log_uniform(1e-3, 1e3));
     const double z = (*rc::gen::inRange(-20000, 20001)) / 1000.0;
-    a.t = *rc::gen::oneOf(rc::gen::just(a.mu + z * std::sqrt(a.mu + a.s * a.s)),
-                          log_uniform(1e-300, 1e300),
+    a.t = *rc::gen::oneOf(rc::gen::just(a.mu + z * std::sqrt(a.mu + a.s * a.s)), log_uniform(1e-300, 1e300),
                           rc::gen::map(log_uniform(1e-300, 1e300), [](double v) { return -v; }),
                           rc::gen::element(0.0, 1.0, a.mu, std::floor(a.mu), std::ceil(a.mu)));
     return a;

@@ -53,8 +53,8 @@ rc::Gen<LsDemodulationConfig> demod_config_gen() {
     c.log_converter.offset_current_A = *log_uniform(1e-15, 1e-3);
     c.log_converter.leakage_current_A = *log_uniform(1e-24, 1e-6);
     c.correlator.capacitance_plus_F = *log_uniform(1e-18, 1e-9);
-    c.correlator.capacitance_minus_F = *rc::gen::oneOf(rc::gen::just(c.correlator.capacitance_plus_F),
-                                                        log_uniform(1e-18, 1e-9));
+    c.correlator.capacitance_minus_F =
+        *rc::gen::oneOf(rc::gen::just(c.correlator.capacitance_plus_F), log_uniform(1e-18, 1e-9));
     c.correlator.transconductance_S = *log_uniform(1e-12, 1.0);
     c.correlator.saturation_voltage_V = *log_uniform(1e-3, 10.0);
     c.comparator.threshold_V = *log_uniform(1e-6, 10.0);
@@ -191,7 +191,8 @@ TEST(DemodHazards, TransientThenAggregatedEqualsStepped) {
   // N = 1e9 with the preset's 120-period LPF: only the transient (~5000 periods) is stepped.
   cfg.suppression.lpf_time_constant_s = 1.2e-3;
   const auto seg = pixel_segments(cfg, 2e-11, 3e-10);
-  const CorrelatorOutput big = correlate_from(cfg, seg, 1000000000, 0.0), per = correlate_periodic(cfg, seg, 1000000000);
+  const CorrelatorOutput big = correlate_from(cfg, seg, 1000000000, 0.0),
+                         per = correlate_periodic(cfg, seg, 1000000000);
   EXPECT_TRUE(std::isfinite(big.shot_var_V2));
   // The transient changes D by a finite amount against a window of 1e9 periods.
   EXPECT_NEAR(big.diff_V, per.diff_V, 1e-4 * std::fabs(per.diff_V));
@@ -261,7 +262,8 @@ TEST(DemodHazards, HugeBackgroundKeepsTheBeamShare) {
       p.reset(beam, bg, rng, systemc::DemodNoiseSwitches::none(), mode == 2);
       while (!p.window_done()) p.step(mode == 0 ? 1 : p.cycles_to_edge());
       // Ticking sums 100 per-cycle pieces per period: rounding of the quadrature, 1e-9 relative.
-      EXPECT_NEAR(p.diff_V(), d0, (mode == 0 ? 1e-9 : 1e-12) * std::fabs(d0)) << "kernel mode " << mode << ", ratio " << ratio;
+      EXPECT_NEAR(p.diff_V(), d0, (mode == 0 ? 1e-9 : 1e-12) * std::fabs(d0))
+          << "kernel mode " << mode << ", ratio " << ratio;
     }
   }
 }
@@ -325,10 +327,10 @@ RC_GTEST_PROP(DemodKernelStress, NoiseFreeKernelEqualsGolden, ()) {
   // Floor of the tolerance: 1e-12 of the swing the whole photocurrent would give on one side
   // (a beam switched fully on for the window, e.g. source duty 1, leaves D = 0 + rounding).
   const auto& lg = cfg.log_converter;
-  const double full = cfg.correlator.transconductance_S * lg.gain * lg.slope_V /
-                      std::min(cfg.correlator.capacitance_plus_F, cfg.correlator.capacitance_minus_F) *
-                      cfg.pixel.integration_time_s *
-                      std::log1p(cfg.suppression.mirror_gain * (beam + bg + cfg.noise.dark_current_A) / lg.offset_current_A);
+  const double full =
+      cfg.correlator.transconductance_S * lg.gain * lg.slope_V /
+      std::min(cfg.correlator.capacitance_plus_F, cfg.correlator.capacitance_minus_F) * cfg.pixel.integration_time_s *
+      std::log1p(cfg.suppression.mirror_gain * (beam + bg + cfg.noise.dark_current_A) / lg.offset_current_A);
   const double scale = std::max({std::fabs(g.plus_V), std::fabs(g.minus_V), 1e-4 * full});
   // Ticks split a segment into pieces integrated separately: the same exact solution, summed in
   // another order and with other quadrature panels (before the panel fix a fast LPF put the two
@@ -372,7 +374,8 @@ TEST(DemodKernelStress, ConfidenceIntervalsCoverTheMean) {
   cfg.noise.read_noise_V = 0;  // frame-common: drawn by the sensor kernel, not here
   const DemodWindowSchedule s = demod_window_schedule(cfg);
   const double beam = 2e-11, bg = 1e-10;
-  const double truth = golden::correlate_periodic(cfg, golden::pixel_segments(cfg, beam, bg), cfg.correlator.cycles).diff_V;
+  const double truth =
+      golden::correlate_periodic(cfg, golden::pixel_segments(cfg, beam, bg), cfg.correlator.cycles).diff_V;
   const int reps = 200, n = 40;
   const double t975 = 2.0227;  // Student t, 39 degrees of freedom
   int covered = 0;

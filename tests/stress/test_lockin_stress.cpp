@@ -53,8 +53,8 @@ rc::Gen<TofLockinConfig> lockin_config_gen() {
     c.readout.min_snr = *log_uniform(1e-3, 1e3);
     c.readout.cds_enabled = *rc::gen::arbitrary<bool>();
     c.readout.ambient_subtraction = *rc::gen::arbitrary<bool>();
-    c.readout.offset_calibration_V = *rc::gen::oneOf(rc::gen::just(0.0), rc::gen::just(c.pixel.offset_voltage_V),
-                                                     log_uniform(1e-6, 1.0));
+    c.readout.offset_calibration_V =
+        *rc::gen::oneOf(rc::gen::just(0.0), rc::gen::just(c.pixel.offset_voltage_V), log_uniform(1e-6, 1.0));
     c.noise.temperature_K = *log_uniform(1e-3, 500.0);
     c.noise.dark_current_A = *log_uniform_or_zero(1e-18, 1e-9);
     c.noise.read_noise_V = *log_uniform_or_zero(1e-9, 1.0);
@@ -67,7 +67,7 @@ rc::Gen<TofLockinConfig> lockin_config_gen() {
 double distance_for(const TofLockinConfig& c, double u) { return u * max_range_m(c.source); }
 
 void check_point(const LockinPoint& p) {
-  const double f[] = {p.distance_m, p.delay_s, p.signal_V, p.v1_V, p.v2_V,   p.n1_e, p.n2_e,
+  const double f[] = {p.distance_m, p.delay_s, p.signal_V, p.v1_V,        p.v2_V,  p.n1_e,       p.n2_e,
                       p.mean_m,     p.bias_m,  p.std_m,    p.std_first_m, p.fpn_m, p.accuracy_m, p.snr};
   for (double v : f) RC_ASSERT(finite(v));
   RC_ASSERT(p.std_m >= 0 && p.std_first_m >= 0 && p.fpn_m >= 0 && p.accuracy_m >= 0);
@@ -77,8 +77,9 @@ void check_point(const LockinPoint& p) {
 RC_GTEST_PROP(LockinStress, AnyLegalPointIsFinite, ()) {
   const TofLockinConfig cfg = *lockin_config_gen();
   const double s = *log_uniform_or_zero(1e-18, 1.0), b = *log_uniform_or_zero(1e-18, 1.0);
-  const double u = *rc::gen::weightedOneOf<double>({{7, rc::gen::map(rc::gen::inRange(0, 1001), [](int i) { return i / 1000.0; })},
-                                                   {1, rc::gen::element(-0.1, 1.5)}});
+  const double u =
+      *rc::gen::weightedOneOf<double>({{7, rc::gen::map(rc::gen::inRange(0, 1001), [](int i) { return i / 1000.0; })},
+                                       {1, rc::gen::element(-0.1, 1.5)}});
   const LockinPoint p = evaluate_point(cfg, s, b, distance_for(cfg, u), *rc::gen::element(1LL, 7LL, 100000LL));
   RC_TAG(to_string(p.detect));
   check_point(p);
@@ -170,7 +171,8 @@ RC_GTEST_PROP(LockinKernelStress, NoiseFreeKernelEqualsGolden, ()) {
   const TofLockinConfig cfg = *kernel_config_gen();
   const double s = *stress::log_uniform_or_zero(1e-18, 1.0), b = *stress::log_uniform_or_zero(1e-18, 1.0);
   // Any delay in range, including a pulse whose tail passes T_rep (duty 0.5 with a rise time).
-  const double delay = cfg.source.pulse_width_s * *rc::gen::map(rc::gen::inRange(0, 1001), [](int i) { return i / 1000.0; });
+  const double delay =
+      cfg.source.pulse_width_s * *rc::gen::map(rc::gen::inRange(0, 1001), [](int i) { return i / 1000.0; });
   TofLockinSensorKernel k(cfg, aggregated(false, 1), 1, 1, {LockinPixelStimulus{s, b, delay}}, 1);
   k.run();
   const golden::FrameCharge ch = golden::frame_charge(cfg, s, b, delay);
@@ -194,7 +196,8 @@ RC_GTEST_PROP(LockinKernelStress, PulseTailPastThePeriodAgreesWithGolden, ()) {
   cfg.gates.accumulations_per_frame = *rc::gen::inRange(1, 13);
   cfg.gates.clock_Hz = *rc::gen::element(1, 2, 5, 64) / cfg.source.pulse_width_s;
   const double s = *stress::log_uniform(1e-15, 1e-6), b = *stress::log_uniform_or_zero(1e-18, 1e-6);
-  const double delay = cfg.source.pulse_width_s * *rc::gen::map(rc::gen::inRange(0, 1001), [](int i) { return i / 1000.0; });
+  const double delay =
+      cfg.source.pulse_width_s * *rc::gen::map(rc::gen::inRange(0, 1001), [](int i) { return i / 1000.0; });
   const golden::FrameCharge ch = golden::frame_charge(cfg, s, b, delay);
   LockinSimOptions per_period = aggregated(false, 1);
   per_period.aggregate = false;
@@ -254,13 +257,15 @@ TEST(LockinKernelStress, ConfidenceIntervalsCoverTheMean) {
   // Golden's digitised mean of tap 1, as evaluate_point forms it.
   const golden::FrameCharge ch = golden::frame_charge(cfg, s, b, golden::round_trip_delay_s(d));
   const golden::TapSample ts = golden::tap_sample(cfg, 0, ch.total_e(0));
-  const double truth = golden::quantised_moments(ts.mean_V, ts.sigma_V, golden::adc_lsb_V(cfg), 1LL << cfg.readout.adc_bits).mean_V -
-                       cfg.readout.offset_calibration_V;
+  const double truth =
+      golden::quantised_moments(ts.mean_V, ts.sigma_V, golden::adc_lsb_V(cfg), 1LL << cfg.readout.adc_bits).mean_V -
+      cfg.readout.offset_calibration_V;
   const int reps = 200, n = 40;
   const double t975 = 2.0227;  // Student t, 39 degrees of freedom
   int covered = 0;
   for (int r = 0; r < reps; ++r) {
-    TofLockinSensorKernel k(cfg, aggregated(true, 1000 + r), 1, 1, {LockinPixelStimulus{s, b, golden::round_trip_delay_s(d)}}, n);
+    TofLockinSensorKernel k(cfg, aggregated(true, 1000 + r), 1, 1,
+                            {LockinPixelStimulus{s, b, golden::round_trip_delay_s(d)}}, n);
     k.run();
     double sum = 0, sum2 = 0;
     for (int m = 0; m < n; ++m) {

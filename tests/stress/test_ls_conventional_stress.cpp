@@ -86,8 +86,7 @@ rc::Gen<PointCase> detectable_biased_case(stress::Limits lim = {}) {
     // (tiny capacitances otherwise make most backgrounds "background_activation").
     if (*rc::gen::arbitrary<bool>()) c.cfg.comparator.false_activation_max = 1.0;
     // and a background below saturation.
-    if (*rc::gen::arbitrary<bool>())
-      c.background_V = std::min(c.background_V, 0.5 * c.cfg.pixel.saturation_voltage_V);
+    if (*rc::gen::arbitrary<bool>()) c.background_V = std::min(c.background_V, 0.5 * c.cfg.pixel.saturation_voltage_V);
     double lo, hi;
     c.signal_V = detectable_window(c.cfg, c.background_V, lo, hi) ? *log_uniform(lo, hi) : *volts_gen();
     return c;
@@ -95,12 +94,12 @@ rc::Gen<PointCase> detectable_biased_case(stress::Limits lim = {}) {
 }
 
 void expect_same_bits(const OperatingPoint& a, const OperatingPoint& b) {
-  const double fa[] = {a.signal_V, a.background_V, a.sbr_total_dB, a.sbr_ratio_dB, a.quantisation_rms_px,
-                       a.resolution_px, a.worst_error_px, a.noise_std_px, a.accuracy_px, a.accuracy_m,
-                       a.p_detect, a.largest_step_px, a.detected_fraction};
-  const double fb[] = {b.signal_V, b.background_V, b.sbr_total_dB, b.sbr_ratio_dB, b.quantisation_rms_px,
-                       b.resolution_px, b.worst_error_px, b.noise_std_px, b.accuracy_px, b.accuracy_m,
-                       b.p_detect, b.largest_step_px, b.detected_fraction};
+  const double fa[] = {a.signal_V,      a.background_V,    a.sbr_total_dB,     a.sbr_ratio_dB, a.quantisation_rms_px,
+                       a.resolution_px, a.worst_error_px,  a.noise_std_px,     a.accuracy_px,  a.accuracy_m,
+                       a.p_detect,      a.largest_step_px, a.detected_fraction};
+  const double fb[] = {b.signal_V,      b.background_V,    b.sbr_total_dB,     b.sbr_ratio_dB, b.quantisation_rms_px,
+                       b.resolution_px, b.worst_error_px,  b.noise_std_px,     b.accuracy_px,  b.accuracy_m,
+                       b.p_detect,      b.largest_step_px, b.detected_fraction};
   RC_ASSERT(std::memcmp(fa, fb, sizeof fa) == 0);
   RC_ASSERT(a.detect == b.detect);
   RC_ASSERT(a.noise_exact == b.noise_exact);
@@ -240,11 +239,12 @@ RC_GTEST_PROP(LsConventionalStress, BackgroundTrackingShrinksEarlySamplings, ())
     for (size_t m = 0; m < r1.half_width_px[k - 1].size(); ++m) {
       const double l1 = level_of(r1, r1.half_width_px[k - 1][m]), l2 = level_of(r2, r2.half_width_px[k - 1][m]);
       // Rounding of the level: a few ulps of the largest term of theta N / (A k) - V_bg - V_dark.
-      const double tol =
-          1e-14 * (code_threshold_V(r2.quantiser, static_cast<int>(m) + 1) / A * N / k + b2 + dark) / s;
+      const double tol = 1e-14 * (code_threshold_V(r2.quantiser, static_cast<int>(m) + 1) / A * N / k + b2 + dark) / s;
       if (l1 > 1 + tol && l2 > 1 + tol) continue;  // both above the peak
-      if (k == N) RC_ASSERT(std::fabs(l1 - l2) <= tol);
-      else RC_ASSERT(l2 >= l1 - tol);
+      if (k == N)
+        RC_ASSERT(std::fabs(l1 - l2) <= tol);
+      else
+        RC_ASSERT(l2 >= l1 - tol);
     }
 }
 

@@ -49,7 +49,9 @@ rc::Gen<TofSpadConfig> spad_config_gen() {
     c.tdc.columns_per_tdc = *rc::gen::element(1, 4, 4096);
     c.tdc.neighbour_rate_fraction = *rc::gen::element(0.0, 0.5, 1.0);
     c.tdc.busy_time_s = *rc::gen::element(0.0, 1e-3, 0.5, 1.0) * period;
-    c.spad.dead_time_s = *rc::gen::oneOf(rc::gen::element(0.0, period, 0.999 * period), rc::gen::map(log_uniform(1e-6, 1.0), [period](double f) { return f * period; }));
+    c.spad.dead_time_s =
+        *rc::gen::oneOf(rc::gen::element(0.0, period, 0.999 * period),
+                        rc::gen::map(log_uniform(1e-6, 1.0), [period](double f) { return f * period; }));
     c.spad.dark_count_rate_Hz = *log_uniform_or_zero(1e-3, 1e9);
     c.spad.jitter_sigma_s = *log_uniform_or_zero(1e-13, 1e-6);
     c.laser.pulse_fwhm_s = *log_uniform(1e-13, 1e-6);
@@ -73,8 +75,17 @@ double distance_in_codes(const TofSpadConfig& c, double u) {
 }
 
 void check_result(const PointResult& p) {
-  const double f[] = {p.bias_m, p.std_m, p.accuracy_m, p.signal_counts, p.background_counts, p.detections_per_cycle,
-                      p.armed_at_echo, p.background_per_bin, p.cycles, p.moments.mean_s, p.moments.var_s2};
+  const double f[] = {p.bias_m,
+                      p.std_m,
+                      p.accuracy_m,
+                      p.signal_counts,
+                      p.background_counts,
+                      p.detections_per_cycle,
+                      p.armed_at_echo,
+                      p.background_per_bin,
+                      p.cycles,
+                      p.moments.mean_s,
+                      p.moments.var_s2};
   for (double v : f) RC_ASSERT(finite(v));
   RC_ASSERT(p.std_m >= 0 && p.accuracy_m >= 0 && p.signal_counts >= 0 && p.background_counts >= 0);
   RC_ASSERT(p.detections_per_cycle >= 0 && p.detections_per_cycle <= 1 + 1e-9);
@@ -103,7 +114,8 @@ RC_GTEST_PROP(SpadStress, ExpectedHistogramIsAProbabilityLaw, ()) {
   for (double q : h.hazard) RC_ASSERT(q >= 0 && q <= 1);
   RC_ASSERT(sum <= 1 + 1e-9);
   RC_ASSERT(finite(h.cycles_per_live_cycle) && h.cycles_per_live_cycle >= 1 - 1e-12);
-  RC_ASSERT(std::fabs(h.our_events_per_cycle * h.share - h.group_events_per_cycle) <= 1e-12 + 1e-9 * h.group_events_per_cycle);
+  RC_ASSERT(std::fabs(h.our_events_per_cycle * h.share - h.group_events_per_cycle) <=
+            1e-12 + 1e-9 * h.group_events_per_cycle);
 }
 
 // A detectable echo stays detectable as the signal grows, until the TDC is stopped before the
@@ -160,8 +172,9 @@ RC_GTEST_PROP(SpadKernelStress, TdcCodeEqualsGoldenBinSearch, ()) {
   const TofSpadKernel k(cfg, 1, cfg.tdc.columns_per_tdc, {});
   const auto& e = k.bins().edges_s;
   for (int i = 0; i < 50; ++i) {
-    const double phase = *rc::gen::oneOf(rc::gen::map(rc::gen::inRange(0, 1 << 20), [&](int j) { return e.back() * j / double(1 << 20); }),
-                                         rc::gen::map(rc::gen::inRange(0, k.phase_bins()), [&](int j) { return e[static_cast<size_t>(j)]; }));
+    const double phase = *rc::gen::oneOf(
+        rc::gen::map(rc::gen::inRange(0, 1 << 20), [&](int j) { return e.back() * j / double(1 << 20); }),
+        rc::gen::map(rc::gen::inRange(0, k.phase_bins()), [&](int j) { return e[static_cast<size_t>(j)]; }));
     const int golden_bin = static_cast<int>(std::upper_bound(e.begin(), e.end(), phase) - e.begin()) - 1;
     RC_ASSERT(k.phase_bin(phase) == std::min(golden_bin, k.phase_bins() - 1));
   }
@@ -204,7 +217,8 @@ TEST(SpadHazards, ManyPhotonsPerCycleArePoisson) {
   TofSpadConfig cfg;
   cfg.spad.dead_time_s = 0;
   const double mu = 1000, cycles = 50;
-  SpadPixelKernel px(cfg, {mu * cfg.laser.repetition_rate_Hz, 0, 10e-9}, SpadNoise::none(), static_cast<long long>(cycles), 5, 0, 0, 0);
+  SpadPixelKernel px(cfg, {mu * cfg.laser.repetition_rate_Hz, 0, 10e-9}, SpadNoise::none(),
+                     static_cast<long long>(cycles), 5, 0, 0, 0);
   long long n = 0;
   while (!px.done() && n < 100000000) px.pop(), ++n;
   EXPECT_NEAR(static_cast<double>(px.photons()), mu * cycles, 5 * std::sqrt(mu * cycles));
@@ -274,7 +288,7 @@ TEST(SpadHazards, PhotonPhaseExactAfterHundredSeconds) {
   }
   ASSERT_GE(code, 0);
   ASSERT_EQ(k.phase_bin(rt), code);
-  const PixelRates r{400.0 / cfg.histogram.integration_time_s, 0, rt};  // ~400 photons over 100 s
+  const PixelRates r{400.0 / cfg.histogram.integration_time_s, 0, rt};     // ~400 photons over 100 s
   SpadPixelKernel px(cfg, r, o.noise, k.laser_cycles(), o.seed, 0, 0, 0);  // the stream simulate_group uses
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
   long long n = 0, late = 0, off = 0, absolute_off = 0;

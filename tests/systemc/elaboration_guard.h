@@ -15,6 +15,6 @@ inline bool claim_elaboration() {
 
 }  // namespace rangesim::systemc::test
 
-#define REQUIRE_FRESH_ELABORATION()                                             \
-  if (!::rangesim::systemc::test::claim_elaboration())                          \
+#define REQUIRE_FRESH_ELABORATION()                    \
+  if (!::rangesim::systemc::test::claim_elaboration()) \
   GTEST_SKIP() << "one SystemC elaboration per process: run this test alone (ctest does)"

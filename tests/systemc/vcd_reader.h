@@ -13,9 +13,9 @@
 namespace rangesim::systemc::test {
 
 struct VcdFile {
-  std::string timescale;                                   // e.g. "1 fs"
-  std::map<std::string, std::string> id_of;                // signal name -> identifier code
-  std::map<std::string, int> width_of;                     // signal name -> bits
+  std::string timescale;                     // e.g. "1 fs"
+  std::map<std::string, std::string> id_of;  // signal name -> identifier code
+  std::map<std::string, int> width_of;       // signal name -> bits
   std::map<std::string, std::vector<std::pair<std::uint64_t, std::uint64_t>>> changes;  // id -> (time, value)
   std::uint64_t end_time = 0;
   bool ok = false;

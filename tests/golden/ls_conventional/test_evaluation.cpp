@@ -30,7 +30,7 @@ TEST(GoldenEvaluation, ClassifyOperatingPoints) {
   EXPECT_EQ(classify(cfg, 1.5, 0.2409), Detect::Detectable);
   EXPECT_EQ(classify(cfg, 1.5, 0.2411), Detect::Saturated);
   EXPECT_EQ(classify(cfg, 0.02, 1.0), Detect::Detectable);  // tracking threshold, noise below the limit
-  cfg.comparator.threshold_mode = ThresholdMode::Fixed;       // fixed 11 mV: background alone reaches it
+  cfg.comparator.threshold_mode = ThresholdMode::Fixed;     // fixed 11 mV: background alone reaches it
   EXPECT_EQ(classify(cfg, 0.5, 0.02), Detect::BackgroundActivation);
   EXPECT_EQ(classify(cfg, 0.5, 0.005), Detect::Detectable);
   EXPECT_EQ(classify(cfg, 0.003, 0.005), Detect::BelowThreshold);

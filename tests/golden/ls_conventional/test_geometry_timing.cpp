@@ -39,7 +39,8 @@ TEST(GoldenTriangulation, RangePerPixelMatchesNumericalDerivative) {
   for (double l : {0.6, 1.1, 2.0}) {
     const double xe = reference_image_x_m(cfg.optics, l), ap = reference_beam_angle_rad(cfg.optics, l);
     const double dx = 1e-9;
-    const double deriv = (range_from_image_m(cfg.optics, xe + dx, ap) - range_from_image_m(cfg.optics, xe - dx, ap)) / (2 * dx);
+    const double deriv =
+        (range_from_image_m(cfg.optics, xe + dx, ap) - range_from_image_m(cfg.optics, xe - dx, ap)) / (2 * dx);
     const double analytic = range_per_px_m(cfg.optics, cfg.pixel.pitch_m, l);
     EXPECT_NEAR(std::fabs(deriv) * cfg.pixel.pitch_m, analytic, 1e-6 * analytic) << l;
     EXPECT_NEAR(analytic, l * l * cfg.pixel.pitch_m / (cfg.optics.focal_length_m * cfg.optics.baseline_m), 1e-15);

@@ -59,7 +59,8 @@ TEST(GoldenNoise, ActivationProbabilityMatchesBruteForce) {
   double worst = 0;
   for (int i = 0; i < 300; ++i) {
     const double mu = std::exp(std::uniform_real_distribution<double>(std::log(0.2), std::log(4e5))(rng));
-    const double s = i % 5 == 0 ? 0 : std::exp(std::uniform_real_distribution<double>(std::log(0.3), std::log(300))(rng));
+    const double s =
+        i % 5 == 0 ? 0 : std::exp(std::uniform_real_distribution<double>(std::log(0.3), std::log(300))(rng));
     const double t = mu + std::normal_distribution<double>(0, 3)(rng) * std::sqrt(mu + s * s);
     long double p, q;
     reference_activation(mu, t, s, p, q);
@@ -93,7 +94,7 @@ TEST(GoldenNoise, ExactMomentsTwoPixelHandCase) {
 TEST(GoldenNoise, NoiselessLimitIsTheNoiseFreeEstimate) {
   LsConventionalConfig cfg = test::preset_config();
   cfg.pixel.read_noise_V = 0;
-  cfg.pixel.temperature_K = 1e-9;  // no kTC
+  cfg.pixel.temperature_K = 1e-9;      // no kTC
   cfg.pixel.pd_capacitance_F = 40e-9;  // 1e6 x the electrons per volt: shot noise 1000x smaller
   const RowModel row = make_row_model(cfg, 0.3, 0.01);
   for (double u : {-0.37, -0.1, 0.21, 0.44}) {

@@ -23,15 +23,16 @@ TEST(DemodEvaluation, PresetGridIsComplete) {
   EXPECT_GT(r.points_detectable, 0);
   std::set<std::string> seen;
   for (const auto& p : r.points) seen.insert(p.detect);
-  for (const char* id : {"detectable", "below_threshold", "saturated", "background_activation"}) EXPECT_TRUE(seen.count(id)) << id;
+  for (const char* id : {"detectable", "below_threshold", "saturated", "background_activation"})
+    EXPECT_TRUE(seen.count(id)) << id;
   EXPECT_TRUE(std::isfinite(r.accuracy_min_m) && std::isfinite(r.accuracy_max_m));
   EXPECT_LT(r.sbr_ratio_min_dB, 0.0);  // detects below the background (the point of the sensor)
   EXPECT_FALSE(r.signal_range.lo_limited_by_grid);
   EXPECT_TRUE(r.background_range.lo_limited_by_grid);
   std::set<std::string> sweeps;
   for (const auto& s : r.sweeps) sweeps.insert(s.id);
-  for (const char* id : {"accuracy_vs_mirror_gain", "accuracy_vs_frames", "accuracy_vs_detections", "selectivity_vs_harmonic",
-                         "step_settling"})
+  for (const char* id : {"accuracy_vs_mirror_gain", "accuracy_vs_frames", "accuracy_vs_detections",
+                         "selectivity_vs_harmonic", "step_settling"})
     EXPECT_TRUE(sweeps.count(id)) << id;
 }
 
@@ -80,7 +81,7 @@ TEST(DemodEvaluation, DetectionsHelpUntilReadNoise) {
   const double b1 = evaluate_demod_point(cfg, s, b, 1, 1).accuracy.noise_std_px;
   const double b256 = evaluate_demod_point(cfg, s, b, 256, 1).accuracy.noise_std_px;
   EXPECT_NEAR(b256, b1 / 16, 0.05 * b1 / 16);  // without it: exactly 1 / sqrt(K) (all decisions detect)
-  EXPECT_GT(a256, 1.5 * b256);                  // with it: a floor the decisions cannot average
+  EXPECT_GT(a256, 1.5 * b256);                 // with it: a floor the decisions cannot average
 }
 
 TEST(DemodEvaluation, HigherMirrorGainLowersTheWeakestSignal) {

@@ -13,8 +13,8 @@ namespace {
 
 // Brute-force chain with tiny time steps (midpoint rule, LPF by its exact step): what the exact
 // solution must agree with.
-double stepped_diff_V(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods,
-                      double start_A, int steps_per_segment) {
+double stepped_diff_V(const LsDemodulationConfig& cfg, const std::vector<Segment>& period, int periods, double start_A,
+                      int steps_per_segment) {
   const auto& s = cfg.suppression;
   const auto& lg = cfg.log_converter;
   const double gain = cfg.correlator.transconductance_S * lg.gain * lg.slope_V;
@@ -36,7 +36,9 @@ double stepped_diff_V(const LsDemodulationConfig& cfg, const std::vector<Segment
 
 TEST(DemodFrontEnd, LogIntegralMatchesFineMidpoint) {
   const double tau = 1.2e-3, L = 5e-6, floor = 1e-15, ref = 1e-9;
-  struct Case { double c0, c1; };
+  struct Case {
+    double c0, c1;
+  };
   // Unclipped, rising; clipped at the start and recovering; clipped at the end.
   for (const Case c : {Case{1e-9, 5e-10}, Case{1e-9, -1.5e-9}, Case{-2e-13, 2.1e-13}, Case{1e-9, -1.00001e-9}}) {
     const LogIntegral li = log_integral(c.c0, c.c1, tau, L, floor, ref);
@@ -61,7 +63,7 @@ TEST(DemodFrontEnd, PeriodicSteadyStateRepeats) {
 
 TEST(DemodFrontEnd, ExactSolutionMatchesTimeStepping) {
   LsDemodulationConfig cfg = test::demod_cfg();
-  cfg.modulation.reference_phase_rad = 0.7;  // four segments per period
+  cfg.modulation.reference_phase_rad = 0.7;   // four segments per period
   for (double beam : {2e-11, 5e-10, 3e-9}) {  // linear, compressed, clipped negative half-periods
     const auto seg = pixel_segments(cfg, beam, 2e-10);
     const double start = lpf_periodic_start_A(cfg, seg) * 0.9;  // off steady state: transient too
@@ -87,13 +89,14 @@ TEST(DemodFrontEnd, ConstantBackgroundIsRejected) {
 }
 
 TEST(DemodFrontEnd, SmallSignalGainIsLinearCorrelation) {
-  // alpha (1 + eps) I_s / 2 swing (the LPF passes nothing at f0), beta s / I_off log gain, g_m T / C integration: D = g_m beta s alpha I_s T / (2 C I_off).
+  // alpha (1 + eps) I_s / 2 swing (the LPF passes nothing at f0), beta s / I_off log gain, g_m T / C integration: D =
+  // g_m beta s alpha I_s T / (2 C I_off).
   const LsDemodulationConfig cfg = test::demod_cfg();
   const double Is = 1e-13;
   const double D = correlate_periodic(cfg, pixel_segments(cfg, Is, 1e-13), cfg.correlator.cycles).diff_V;
   const double expect = cfg.correlator.transconductance_S * cfg.log_converter.slope_V * cfg.suppression.mirror_gain *
-                        (1 + cfg.suppression.mirror_mismatch) * Is *
-                        cfg.pixel.integration_time_s / (2 * cfg.correlator.capacitance_plus_F * cfg.log_converter.offset_current_A);
+                        (1 + cfg.suppression.mirror_mismatch) * Is * cfg.pixel.integration_time_s /
+                        (2 * cfg.correlator.capacitance_plus_F * cfg.log_converter.offset_current_A);
   EXPECT_NEAR(D, expect, 2e-3 * expect);
 }
 

@@ -19,8 +19,8 @@ std::map<std::string, PublishedFigure> figures() {
 
 TEST(DemodPublished, Reproduced) {
   const auto f = figures();
-  for (const char* id : {"even_harmonic_suppression_duty", "frame_rate_2000fps", "std_effective_area", "averaging_exponent",
-                         "signal_span", "table51_accuracy_min"}) {
+  for (const char* id : {"even_harmonic_suppression_duty", "frame_rate_2000fps", "std_effective_area",
+                         "averaging_exponent", "signal_span", "table51_accuracy_min"}) {
     ASSERT_TRUE(f.count(id)) << id;
     EXPECT_TRUE(f.at(id).reproduced()) << id << ": ours " << f.at(id).ours << " vs " << f.at(id).published;
   }

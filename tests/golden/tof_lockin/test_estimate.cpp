@@ -92,8 +92,10 @@ TEST(LockinPoint, OffsetMiscalibrationBiasWithoutAmbientFrame) {
   // Fixed-pattern noise without the ambient frame: rms over pixels.
   c.noise.fixed_pattern_rms_V = 1e-3;
   const LockinPoint f = evaluate_point(c, is, 0.0, L, 1);
-  EXPECT_NEAR(f.fpn_m, K * std::sqrt(std::pow(0.5 * x + 0.005, 2) + std::pow(0.5 * (1 - x) + 0.005, 2)) / std::pow(0.51, 2) * 1e-3,
-              1e-5);
+  EXPECT_NEAR(
+      f.fpn_m,
+      K * std::sqrt(std::pow(0.5 * x + 0.005, 2) + std::pow(0.5 * (1 - x) + 0.005, 2)) / std::pow(0.51, 2) * 1e-3,
+      1e-5);
 }
 
 }  // namespace rangesim::golden

@@ -56,12 +56,14 @@ TEST(LockinEvaluation, DetectableSetIsAnIntervalAlongEachAxis) {
   const size_t ns = r.signal.values.size(), nb = r.background.values.size();
   for (size_t ib = 0; ib < nb; ++ib) {
     int changes = 0;
-    for (size_t is = 1; is < ns; ++is) changes += (r.at(ib, is).detect == "detectable") != (r.at(ib, is - 1).detect == "detectable");
+    for (size_t is = 1; is < ns; ++is)
+      changes += (r.at(ib, is).detect == "detectable") != (r.at(ib, is - 1).detect == "detectable");
     EXPECT_LE(changes, 2) << ib;
   }
   for (size_t is = 0; is < ns; ++is) {
     int changes = 0;
-    for (size_t ib = 1; ib < nb; ++ib) changes += (r.at(ib, is).detect == "detectable") != (r.at(ib - 1, is).detect == "detectable");
+    for (size_t ib = 1; ib < nb; ++ib)
+      changes += (r.at(ib, is).detect == "detectable") != (r.at(ib - 1, is).detect == "detectable");
     EXPECT_LE(changes, 2) << is;
   }
 }

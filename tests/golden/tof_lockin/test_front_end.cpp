@@ -77,7 +77,7 @@ TEST(LockinCharge, PulseTailPastThePeriodGoesToTheNextPhase1) {
 // is the closed form.
 TEST(LockinPulse, NumericalOverlapConvergesToTheClosedForm) {
   TofLockinConfig cfg = lockin_config();
-  cfg.source.rise_time_s = 8e-9;  // ramps [0, 10 ns] and [100, 110 ns]
+  cfg.source.rise_time_s = 8e-9;          // ramps [0, 10 ns] and [100, 110 ns]
   const double a = 3.3e-9, b = 104.1e-9;  // a window cutting both ramps
   const double exact = pulse_area_before_s(cfg.source, b) - pulse_area_before_s(cfg.source, a);
   EXPECT_EQ(pulse_area_between_s(cfg.source, a, b, 0.0), exact);
@@ -100,7 +100,7 @@ TEST(LockinCharge, IdealPixelCollectsEq217SignalAndTwoWindowsOfBackground) {
   const FrameCharge c = frame_charge(cfg, 1e-9, 2e-10, 20e-9);
   EXPECT_NEAR(c.signal_e[0], 1e-9 * 80e-9 * n / q, 1e-6);
   EXPECT_NEAR(c.signal_e[1], 1e-9 * 20e-9 * n / q, 1e-6);
-  EXPECT_DOUBLE_EQ(c.light_common_e, 0.0);  // eta = 1, drain efficiency 1
+  EXPECT_DOUBLE_EQ(c.light_common_e, 0.0);                // eta = 1, drain efficiency 1
   EXPECT_NEAR(c.background_e, 2e-10 * T0 * n / q, 1e-6);  // PHASE3 fully drained
   EXPECT_NEAR(c.dark_e, 1e-15 * 1e-6 * n / q, 1e-9);
   // 1.5 nA -> 0.75 V of V1 + V2 with 10 fF (preset header).
@@ -126,7 +126,8 @@ static QuantisedMoments brute(double mu, double sigma, double lsb, long long cod
   double e1 = 0, e2 = 0;
   for (long long k = 0; k < codes; ++k) {
     const double lo = k == 0 ? -1e300 : k * lsb, hi = k == codes - 1 ? 1e300 : (k + 1) * lsb;
-    const double p = 0.5 * (std::erfc((lo - mu) / (sigma * std::sqrt(2.0))) - std::erfc((hi - mu) / (sigma * std::sqrt(2.0))));
+    const double p =
+        0.5 * (std::erfc((lo - mu) / (sigma * std::sqrt(2.0))) - std::erfc((hi - mu) / (sigma * std::sqrt(2.0))));
     e1 += p * k;
     e2 += p * k * k;
   }

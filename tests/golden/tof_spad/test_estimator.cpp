@@ -73,10 +73,11 @@ TEST(SpadEstimator, VarianceMatchesThompsonAtLowCountRates) {
       const PointResult p = m.evaluate(signal_Hz, 10, 2.0, {7, coates, true});
       ASSERT_EQ(p.detect, "detectable");
       const double thompson_m = kHalfC * thompson_sigma_t_s(s, a, p.signal_counts, p.background_per_bin);
-      std::printf("Thompson check: signal %g/s (%s), N = %.1f, b = %.4f/bin: ours %.4f mm, Thompson %.4f mm, "
-                  "ratio %.4f\n",
-                  signal_Hz, coates ? "Coates" : "raw", p.signal_counts, p.background_per_bin, p.std_m * 1e3,
-                  thompson_m * 1e3, p.std_m / thompson_m);
+      std::printf(
+          "Thompson check: signal %g/s (%s), N = %.1f, b = %.4f/bin: ours %.4f mm, Thompson %.4f mm, "
+          "ratio %.4f\n",
+          signal_Hz, coates ? "Coates" : "raw", p.signal_counts, p.background_per_bin, p.std_m * 1e3, thompson_m * 1e3,
+          p.std_m / thompson_m);
       EXPECT_NEAR(p.std_m / thompson_m, 1.0, 0.03) << signal_Hz;
     }
   }

@@ -70,8 +70,8 @@ TEST(SpadEvaluation, PresetSummary) {
               r.sbr_ratio_min_dB, r.sbr_ratio_max_dB, r.accuracy_min_m * 1e3, r.accuracy_max_m * 1e3);
   EXPECT_NEAR(r.sbr_max_dB, 100.0, 0.01);  // 1e6 over 10 counts/s
   EXPECT_NEAR(r.sbr_ratio_max_dB, 100.0, 0.01);
-  EXPECT_NEAR(r.sbr_ratio_min_dB, -50.0, 0.01);  // 1e6 signal over the grid's 1e8 background
-  EXPECT_NEAR(r.sbr_min_dB, 0.0274, 0.001);  // the weakest signal detectable at the grid's 1e8/s background
+  EXPECT_NEAR(r.sbr_ratio_min_dB, -50.0, 0.01);      // 1e6 signal over the grid's 1e8 background
+  EXPECT_NEAR(r.sbr_min_dB, 0.0274, 0.001);          // the weakest signal detectable at the grid's 1e8/s background
   EXPECT_NEAR(r.accuracy_min_m, 1.451e-3, 0.01e-3);  // INL bias at 3.6 m with std -> 0
   EXPECT_NEAR(r.accuracy_max_m, 6.821e-3, 0.01e-3);
   EXPECT_EQ(extra(r, "cycles"), 2e6);

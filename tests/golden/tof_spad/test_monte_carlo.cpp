@@ -23,7 +23,9 @@ namespace {
 class CycleSimulator {
  public:
   CycleSimulator(const SpadModel& m, double signal_Hz, double background_Hz, double distance_m, unsigned long long seed)
-      : m_(m), a_(make_arrivals(m.config(), signal_Hz, background_Hz, distance_m)), in_(m.pile_up_input({})),
+      : m_(m),
+        a_(make_arrivals(m.config(), signal_Hz, background_Hz, distance_m)),
+        in_(m.pile_up_input({})),
         rng_(seed) {}
 
   // One histogram of n cycles (state carries over from the previous call, as a sensor's does).

@@ -17,18 +17,16 @@ int sc_main(int, char*[]) {
   const rangesim::golden::FrameTiming ft = rangesim::golden::frame_timing(timing, 4);
 
   // One search operation of the kernel, start to next start, must be what golden counts.
-  rangesim::systemc::AddressSearchKernel kernel(rangesim::AddressSearchConfig{},
-                                                timing.search_cycles);
+  rangesim::systemc::AddressSearchKernel kernel(rangesim::AddressSearchConfig{}, timing.search_cycles);
   rangesim::systemc::ActivationRow row(rangesim::AddressSearchConfig{}.columns);
   row.set(100);
   row.set(103);
   const long long before = kernel.edges();
   const rangesim::systemc::AddressSearchResult r = kernel.run(row);
   const long long per_sampling = kernel.edges() - before;
-  const long long expected =
-      timing.reset_cycles + 4 * per_sampling + timing.output_cycles;
-  std::printf("golden frame cycles %lld, from the kernel %lld; left %d right %d\n",
-              ft.frame_cycles, expected, r.left, r.right);
+  const long long expected = timing.reset_cycles + 4 * per_sampling + timing.output_cycles;
+  std::printf("golden frame cycles %lld, from the kernel %lld; left %d right %d\n", ft.frame_cycles, expected, r.left,
+              r.right);
   bool ok = r.found && r.left == 100 && r.right == 103 && ft.frame_cycles == expected;
 
   // Elaborate the sc_module (and the verilated RTL) and clock them a little.

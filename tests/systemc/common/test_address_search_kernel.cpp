@@ -46,8 +46,8 @@ struct Case {
 };
 
 void PrintTo(const Case& c, std::ostream* os) {
-  *os << "columns " << c.config.columns << ", address_bits " << c.config.address_bits
-      << ", search_cycles " << c.search_cycles;
+  *os << "columns " << c.config.columns << ", address_bits " << c.config.address_bits << ", search_cycles "
+      << c.search_cycles;
 }
 
 class KernelRandomRows : public ::testing::TestWithParam<Case> {};
@@ -80,16 +80,17 @@ TEST_P(KernelRandomRows, MatchesReferenceAndSchedule) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Configs, KernelRandomRows,
-    ::testing::Values(Case{AddressSearchConfig{}, FrameTimingConfig{}.search_cycles},
-                      Case{AddressSearchConfig{16, 4, 2}, 2}, Case{AddressSearchConfig{1, 1, 2}, 1},
-                      Case{AddressSearchConfig{64, 6, 2}, 3}, Case{AddressSearchConfig{65, 7, 2}, 5}),
-    [](const ::testing::TestParamInfo<Case>& info) {
-      const Case& c = info.param;
-      return "columns" + std::to_string(c.config.columns) + "_bits" +
-             std::to_string(c.config.address_bits) + "_search" + std::to_string(c.search_cycles);
-    });
+INSTANTIATE_TEST_SUITE_P(Configs, KernelRandomRows,
+                         ::testing::Values(Case{AddressSearchConfig{}, FrameTimingConfig{}.search_cycles},
+                                           Case{AddressSearchConfig{16, 4, 2}, 2},
+                                           Case{AddressSearchConfig{1, 1, 2}, 1},
+                                           Case{AddressSearchConfig{64, 6, 2}, 3},
+                                           Case{AddressSearchConfig{65, 7, 2}, 5}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           const Case& c = info.param;
+                           return "columns" + std::to_string(c.config.columns) + "_bits" +
+                                  std::to_string(c.config.address_bits) + "_search" + std::to_string(c.search_cycles);
+                         });
 
 TEST(AddressSearchKernel, CycleCountMatchesFrameTiming) {
   // One sampling in golden/frame_timing.h: latch + search + addresses_per_sampling * bits.
@@ -101,8 +102,7 @@ TEST(AddressSearchKernel, CycleCountMatchesFrameTiming) {
   const long long before = k.edges();
   const rs::AddressSearchResult r = k.run(row);
   EXPECT_EQ(r.done_cycle, t.search_cycles + t.addresses_per_sampling * t.address_bits);
-  EXPECT_EQ(k.edges() - before,
-            t.latch_cycles + t.search_cycles + t.addresses_per_sampling * t.address_bits);
+  EXPECT_EQ(k.edges() - before, t.latch_cycles + t.search_cycles + t.addresses_per_sampling * t.address_bits);
   EXPECT_EQ(r.left, 120);
   EXPECT_EQ(r.right, 122);
 }

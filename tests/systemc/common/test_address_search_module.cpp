@@ -16,7 +16,6 @@ using rangesim::AddressSearchConfig;
 
 namespace {
 
-
 struct Bench : sc_core::sc_module {
   sc_core::sc_clock clk{"clk", 10, sc_core::SC_NS};
   sc_core::sc_signal<bool> rst{"rst", true}, start{"start"};
@@ -32,8 +31,7 @@ struct Bench : sc_core::sc_module {
   unsigned bits = 0;
 
   SC_HAS_PROCESS(Bench);
-  Bench(sc_core::sc_module_name n, const AddressSearchConfig& cfg)
-      : sc_core::sc_module(n), dut("dut", cfg, 2) {
+  Bench(sc_core::sc_module_name n, const AddressSearchConfig& cfg) : sc_core::sc_module(n), dut("dut", cfg, 2) {
     dut.clk_i(clk);
     dut.rst_i(rst);
     dut.start_i(start);
@@ -61,7 +59,8 @@ struct Bench : sc_core::sc_module {
       wait();
       start.write(false);
       // Wait for done_o on the output (not a fixed schedule: this tests the module's own pins).
-      do wait(); while (!done.read());
+      do wait();
+      while (!done.read());
       wait();
     }
     sc_core::sc_stop();

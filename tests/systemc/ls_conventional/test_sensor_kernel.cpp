@@ -228,8 +228,8 @@ TEST(LsConventionalSensorKernel, NoisyCentreMomentsAgreeWithGoldenPositionMoment
   struct Point {
     double sig, bg, x0;
   };
-  for (const Point pt : {Point{0.03, 0.002, 47.3}, Point{0.0125, 0.001, 40.81}, Point{0.2, 0.02, 50.5},
-                         Point{0.011, 0.0005, 44.07}}) {
+  for (const Point pt :
+       {Point{0.03, 0.002, 47.3}, Point{0.0125, 0.001, 40.81}, Point{0.2, 0.02, 50.5}, Point{0.011, 0.0005, 44.07}}) {
     const golden::RowModel row = golden::make_row_model(c, pt.sig, pt.bg);
     const golden::PositionMoments g = golden::position_moments(row, pt.x0);
     const Moments m = simulate_moments(c, {pt.sig, pt.bg, pt.x0}, 40, 21);
@@ -240,9 +240,10 @@ TEST(LsConventionalSensorKernel, NoisyCentreMomentsAgreeWithGoldenPositionMoment
     EXPECT_NEAR(m.mean, g.mean_px, 5 * std::sqrt(g.var_px2 / m.detected) + 1e-9);
     const double var_se = std::sqrt(std::max(0.0, m.m4 - m.var * m.var) / m.detected);
     EXPECT_NEAR(m.var, g.var_px2, 5 * var_se + 1e-9);
-    std::printf("  sig %.4g V bg %.4g V x0 %.2f: p_detect %.5f (golden %.5f), mean %.5f (golden %.5f), "
-                "var %.5f +- %.5f (golden %.5f)\n",
-                pt.sig, pt.bg, pt.x0, p_hat, g.p_detect, m.mean, g.mean_px, m.var, var_se, g.var_px2);
+    std::printf(
+        "  sig %.4g V bg %.4g V x0 %.2f: p_detect %.5f (golden %.5f), mean %.5f (golden %.5f), "
+        "var %.5f +- %.5f (golden %.5f)\n",
+        pt.sig, pt.bg, pt.x0, p_hat, g.p_detect, m.mean, g.mean_px, m.var, var_se, g.var_px2);
   }
 }
 

@@ -85,7 +85,8 @@ TEST(LsConventionalSensorModule, CycleBudgetBoundsTheRun) {
 TEST(LsConventionalSensorModule, TraceIsWrittenAndReadsBack) {
   REQUIRE_FRESH_ELABORATION();
   const LsConventionalConfig c = small_config(8, 96, 4);
-  const std::string dir = (std::filesystem::temp_directory_path() / ("rangesim-trace-" + std::to_string(::getpid()))).string();
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / ("rangesim-trace-" + std::to_string(::getpid()))).string();
   std::filesystem::create_directories(dir);
   rs::SensorRunOptions run;
   run.frames = 3;
@@ -126,7 +127,8 @@ TEST(LsConventionalSensorModule, TraceIsWrittenAndReadsBack) {
         }
       }
       if (vcd.sample("frame_done", t)) {
-        const rs::CentreProcessorPins& k = sc.frames[static_cast<std::size_t>(frame)].rows[static_cast<std::size_t>(row)];
+        const rs::CentreProcessorPins& k =
+            sc.frames[static_cast<std::size_t>(frame)].rows[static_cast<std::size_t>(row)];
         EXPECT_EQ(sum, k.sum) << "row " << row << " frame " << frame;
         EXPECT_EQ(count, k.count) << "row " << row << " frame " << frame;
         EXPECT_EQ(vcd.sample(p + "centre_q", t), k.centre_q) << "row " << row << " frame " << frame;

@@ -32,7 +32,8 @@ inline DemodStimulusSource spot_source(const LsDemodulationConfig& c, double sig
     for (int r = 0; r < c.pixel.rows; ++r)
       for (int col = 0; col < c.pixel.columns; ++col) {
         const double x = col - (x0 + r * shift_px + per_frame_px * static_cast<double>(f));
-        s.beam_A[static_cast<std::size_t>(r) * c.pixel.columns + col] = signal_A * std::exp(-x * x / (2 * sigma * sigma));
+        s.beam_A[static_cast<std::size_t>(r) * c.pixel.columns + col] =
+            signal_A * std::exp(-x * x / (2 * sigma * sigma));
       }
   };
 }

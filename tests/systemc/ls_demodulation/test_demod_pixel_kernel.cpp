@@ -23,8 +23,8 @@ const std::vector<Point> kPoints = {{7.4e-12, 1e-10}, {1.11e-10, 1e-10}, {1e-9, 
                                     {1e-11, 1e-7},    {0.0, 1e-8},       {2e-9, 1e-6}};
 
 // Runs one window; tick = step(1) every cycle, else jump edge to edge.
-DemodPixelKernel run_window(const LsDemodulationConfig& c, const DemodWindowSchedule& s, double beam, double bg, bool tick,
-                            const DemodNoiseSwitches& noise, std::uint64_t key) {
+DemodPixelKernel run_window(const LsDemodulationConfig& c, const DemodWindowSchedule& s, double beam, double bg,
+                            bool tick, const DemodNoiseSwitches& noise, std::uint64_t key) {
   DemodPixelKernel p(c, s);
   pcg32 rng = pixel_stream(key);
   p.reset(beam, bg, rng, noise);
@@ -59,7 +59,8 @@ TEST(DemodPixelKernel, NoiseFreeReproducesGoldenCorrelator) {
   const auto c = test::preset_config();
   const auto s = demod_window_schedule(c);
   for (const auto& pt : kPoints) {
-    const auto g = golden::correlate_periodic(c, golden::pixel_segments(c, pt.beam_A, pt.background_A), c.correlator.cycles);
+    const auto g =
+        golden::correlate_periodic(c, golden::pixel_segments(c, pt.beam_A, pt.background_A), c.correlator.cycles);
     for (bool tick : {false, true}) {
       const auto p = run_window(c, s, pt.beam_A, pt.background_A, tick, DemodNoiseSwitches::none(), 1);
       const double tol = 1e-10 + 1e-9 * std::max(std::fabs(g.plus_V), std::fabs(g.minus_V));

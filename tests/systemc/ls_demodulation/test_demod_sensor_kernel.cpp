@@ -31,7 +31,8 @@ TEST(DemodSensorKernel, FrameTimingEqualsGoldenCycleForCycle) {
     for (const auto& f : run.frames) {
       EXPECT_EQ(f.cycles, g.frame_cycles);
       ASSERT_EQ(f.phase_cycles.size(), g.phases.size());
-      for (std::size_t i = 0; i < g.phases.size(); ++i) EXPECT_EQ(f.phase_cycles[i], g.phases[i].cycles) << g.phases[i].name;
+      for (std::size_t i = 0; i < g.phases.size(); ++i)
+        EXPECT_EQ(f.phase_cycles[i], g.phases[i].cycles) << g.phases[i].name;
     }
     EXPECT_EQ(run.cycles, 2 * g.frame_cycles);
     EXPECT_DOUBLE_EQ(run.simulated_time_s / 2, g.frame_time_s);
@@ -111,7 +112,8 @@ TEST(DemodSensorKernel, NoiseFreeDecisionsAndCentresMatchGolden) {
           // LPF through every period: equal to rounding (plus and minus nearly cancel in D).
           EXPECT_NEAR(f.diff_V[i], g.diff_V, 1e-10 + 1e-9 * std::fabs(g.plus_V));
           const bool act = g.diff_V >= c.comparator.threshold_V;
-          EXPECT_EQ(f.activations[static_cast<std::size_t>(r)].test(col), act) << sig << " " << bg << " " << r << " " << col;
+          EXPECT_EQ(f.activations[static_cast<std::size_t>(r)].test(col), act)
+              << sig << " " << bg << " " << r << " " << col;
           if (act) last = col, first = first < 0 ? col : first;
         }
         const auto& rr = f.rows[static_cast<std::size_t>(r)];
@@ -172,10 +174,13 @@ TEST(DemodSensorKernel, DecisionProbabilityMatchesGolden) {
     DemodKernelOptions o;
     o.seed = 9;
     const int n = 3000;
-    const auto run = run_demod_kernel(c, o, [&](std::uint64_t, DemodStimulus& s) {
-      s.beam_A = {hi};
-      s.background_A = {bg};
-    }, n);
+    const auto run = run_demod_kernel(
+        c, o,
+        [&](std::uint64_t, DemodStimulus& s) {
+          s.beam_A = {hi};
+          s.background_A = {bg};
+        },
+        n);
     int hits = 0;
     for (const auto& f : run.frames) hits += f.rows[0].valid() ? 1 : 0;
     EXPECT_NEAR(static_cast<double>(hits) / n, p, 5 * std::sqrt(p * (1 - p) / n) + 1e-3) << offset_V;

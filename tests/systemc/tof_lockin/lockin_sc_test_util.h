@@ -15,12 +15,11 @@
 namespace rangesim::systemc::lockin::test {
 
 struct Edit {
-  std::string section, key, value; // [section] key = { value = <value>, ... }
+  std::string section, key, value;  // [section] key = { value = <value>, ... }
 };
 
 inline std::string preset_text() {
-  std::ifstream f(std::string(RANGESIM_SOURCE_DIR) +
-                  "/presets/tof-lockin.toml");
+  std::ifstream f(std::string(RANGESIM_SOURCE_DIR) + "/presets/tof-lockin.toml");
   std::stringstream ss;
   ss << f.rdbuf();
   return ss.str();
@@ -28,9 +27,9 @@ inline std::string preset_text() {
 
 // The preset with edits applied (value of `key` in `[section]`), validated like
 // a user preset.
-inline ParamSet edited_params(const std::vector<Edit> &edits) {
+inline ParamSet edited_params(const std::vector<Edit>& edits) {
   std::string t = preset_text();
-  for (const Edit &e : edits) {
+  for (const Edit& e : edits) {
     const std::size_t sec = t.find("[" + e.section + "]");
     const std::size_t at = t.find("\n" + e.key + " = { value = ", sec);
     const std::size_t v0 = t.find("value = ", at) + 8;
@@ -40,16 +39,13 @@ inline ParamSet edited_params(const std::vector<Edit> &edits) {
   return load_preset_text(t, "tof-lockin(test)");
 }
 
-inline TofLockinConfig edited_config(const std::vector<Edit> &edits) {
+inline TofLockinConfig edited_config(const std::vector<Edit>& edits) {
   return tof_lockin_from_params(edited_params(edits));
 }
 
-inline std::vector<LockinPixelStimulus>
-uniform(int n, double signal_A, double background_A, double distance_m) {
+inline std::vector<LockinPixelStimulus> uniform(int n, double signal_A, double background_A, double distance_m) {
   return std::vector<LockinPixelStimulus>(
-      static_cast<std::size_t>(n),
-      LockinPixelStimulus{signal_A, background_A,
-                          golden::round_trip_delay_s(distance_m)});
+      static_cast<std::size_t>(n), LockinPixelStimulus{signal_A, background_A, golden::round_trip_delay_s(distance_m)});
 }
 
-} // namespace rangesim::systemc::lockin::test
+}  // namespace rangesim::systemc::lockin::test

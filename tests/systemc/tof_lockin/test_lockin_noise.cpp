@@ -16,17 +16,14 @@ namespace {
 
 using test::Edit;
 
-void check_moments(const TofLockinConfig &cfg, bool aggregate, double is,
-                   double ib, double L, int columns, int maps,
+void check_moments(const TofLockinConfig& cfg, bool aggregate, double is, double ib, double L, int columns, int maps,
                    std::uint64_t seed) {
-  SCOPED_TRACE(fmt::format("I_s {:g} I_b {:g} L {:g} aggregate {}", is, ib, L,
-                           aggregate));
+  SCOPED_TRACE(fmt::format("I_s {:g} I_b {:g} L {:g} aggregate {}", is, ib, L, aggregate));
   const golden::LockinPoint pt = golden::evaluate_point(cfg, is, ib, L, 1);
   ASSERT_EQ(pt.detect, golden::LockinDetect::Detectable);
   const int per_map = cfg.readout.ambient_subtraction ? 2 : 1;
-  TofLockinSensorKernel k(cfg, LockinSimOptions{true, true, aggregate, seed}, 1,
-                          columns, test::uniform(columns, is, ib, L),
-                          static_cast<long long>(maps) * per_map);
+  TofLockinSensorKernel k(cfg, LockinSimOptions{true, true, aggregate, seed}, 1, columns,
+                          test::uniform(columns, is, ib, L), static_cast<long long>(maps) * per_map);
   k.run();
   double s1 = 0, s2 = 0;
   long long n = 0;
@@ -39,16 +36,12 @@ void check_moments(const TofLockinConfig &cfg, bool aggregate, double is,
     }
   const double mean = s1 / n;
   double m4 = 0;
-  for (double x : v)
-    s2 += (x - mean) * (x - mean), m4 += std::pow(x - mean, 4);
+  for (double x : v) s2 += (x - mean) * (x - mean), m4 += std::pow(x - mean, 4);
   const double var = s2 / (n - 1);
   m4 /= n;
-  const double se_mean = std::sqrt(var / n),
-               se_var = std::sqrt((m4 - var * var) / n);
-  EXPECT_NEAR(mean, pt.mean_m, 5 * se_mean)
-      << "std " << std::sqrt(var) << " golden " << pt.std_m;
-  EXPECT_NEAR(var, pt.std_m * pt.std_m, 5 * se_var)
-      << "mean " << mean << " golden " << pt.mean_m;
+  const double se_mean = std::sqrt(var / n), se_var = std::sqrt((m4 - var * var) / n);
+  EXPECT_NEAR(mean, pt.mean_m, 5 * se_mean) << "std " << std::sqrt(var) << " golden " << pt.std_m;
+  EXPECT_NEAR(var, pt.std_m * pt.std_m, 5 * se_var) << "mean " << mean << " golden " << pt.mean_m;
 }
 
 TEST(LockinNoise, MomentsMatchGoldenAggregated) {
@@ -63,30 +56,26 @@ TEST(LockinNoise, MomentsMatchGoldenPerAccumulation) {
 }
 
 TEST(LockinNoise, MomentsMatchGoldenNonIdealPixelNoAmbient) {
-  const TofLockinConfig cfg =
-      test::edited_config({{"pixel", "rows", "1"},
-                           {"pixel", "charge_separation", "0.9"},
-                           {"pixel", "drain_efficiency", "0.98"},
-                           {"source", "rise_time_s", "8e-9"},
-                           {"readout", "ambient_subtraction", "false"},
-                           {"readout", "offset_calibration_V", "0.015"}});
+  const TofLockinConfig cfg = test::edited_config({{"pixel", "rows", "1"},
+                                                   {"pixel", "charge_separation", "0.9"},
+                                                   {"pixel", "drain_efficiency", "0.98"},
+                                                   {"source", "rise_time_s", "8e-9"},
+                                                   {"readout", "ambient_subtraction", "false"},
+                                                   {"readout", "offset_calibration_V", "0.015"}});
   check_moments(cfg, true, 3e-10, 1e-10, 2.0, 50, 600, 14);
 }
 
 TEST(LockinNoise, CdsRemovesKtc) {
   // With CDS and no read noise, the ambient frame of a dark pixel reads the FD
   // offset + dark only.
-  const TofLockinConfig cfg =
-      test::edited_config({{"pixel", "rows", "1"},
-                           {"readout", "cds_enabled", "true"},
-                           {"noise", "read_noise_V", "0"},
-                           {"noise", "dark_current_A", "0"}});
-  TofLockinSensorKernel k(cfg, LockinSimOptions{true, true, true, 5}, 1, 8,
-                          test::uniform(8, 0, 0, 1.0), 2);
+  const TofLockinConfig cfg = test::edited_config({{"pixel", "rows", "1"},
+                                                   {"readout", "cds_enabled", "true"},
+                                                   {"noise", "read_noise_V", "0"},
+                                                   {"noise", "dark_current_A", "0"}});
+  TofLockinSensorKernel k(cfg, LockinSimOptions{true, true, true, 5}, 1, 8, test::uniform(8, 0, 0, 1.0), 2);
   k.run();
-  for (int c = 0; c < 8; ++c)
-    EXPECT_DOUBLE_EQ(k.adc_input_V(1, 0, c, 0), cfg.pixel.offset_voltage_V);
+  for (int c = 0; c < 8; ++c) EXPECT_DOUBLE_EQ(k.adc_input_V(1, 0, c, 0), cfg.pixel.offset_voltage_V);
 }
 
-} // namespace
-} // namespace rangesim::systemc::lockin
+}  // namespace
+}  // namespace rangesim::systemc::lockin

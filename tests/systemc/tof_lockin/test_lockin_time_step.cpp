@@ -26,19 +26,16 @@ TofLockinConfig ramp_config() {
 const double kDistances[] = {0.3, 3.7, 7.5, 11.0, 14.2};
 
 // Largest relative error of the noise-free ADC inputs against golden, over distances and taps.
-double max_relative_error(const TofLockinConfig &cfg, double step_s,
-                          bool aggregate) {
+double max_relative_error(const TofLockinConfig& cfg, double step_s, bool aggregate) {
   std::vector<LockinPixelStimulus> st;
-  for (double L : kDistances)
-    st.push_back({6e-10, 2e-11, golden::round_trip_delay_s(L)});
+  for (double L : kDistances) st.push_back({6e-10, 2e-11, golden::round_trip_delay_s(L)});
   LockinSimOptions o{false, true, aggregate, 1};
   o.time_step_s = step_s;
   TofLockinSensorKernel k(cfg, o, 1, static_cast<int>(st.size()), st, 1);
   k.run();
   double worst = 0;
   for (std::size_t i = 0; i < st.size(); ++i) {
-    const golden::FrameCharge c =
-        golden::frame_charge(cfg, st[i].signal_A, st[i].background_A, st[i].delay_s);
+    const golden::FrameCharge c = golden::frame_charge(cfg, st[i].signal_A, st[i].background_A, st[i].delay_s);
     for (int t = 0; t < 2; ++t) {
       const double exact = golden::tap_sample(cfg, t, c.total_e(t)).mean_V;
       const double v = k.adc_input_V(0, 0, static_cast<int>(i), t);
@@ -74,8 +71,7 @@ TEST(LockinTimeStep, PerPeriodAndAggregatedIntegrateAlike) {
     TofLockinSensorKernel ka(cfg, a, 1, 1, st, 1), kp(cfg, p, 1, 1, st, 1);
     ka.run(), kp.run();
     for (int t = 0; t < 2; ++t)
-      EXPECT_NEAR(ka.adc_input_V(0, 0, 0, t), kp.adc_input_V(0, 0, 0, t),
-                  1e-12 * kp.adc_input_V(0, 0, 0, t))
+      EXPECT_NEAR(ka.adc_input_V(0, 0, 0, t), kp.adc_input_V(0, 0, 0, t), 1e-12 * kp.adc_input_V(0, 0, 0, t))
           << "step " << step << " tap " << t;
   }
 }

@@ -22,8 +22,8 @@ double round_trip(double distance_m) { return 2 * distance_m / phys::kSpeedOfLig
 
 // Sum of the group's histograms (all columns flat) over `groups` independent groups vs
 // groups x N x s x event_prob (the golden P(our event in code i) per cycle).
-void expect_histogram_agrees(double signal_Hz, double background_Hz, double distance_m, double integration_s, int groups,
-                             double dead_time_s = -1) {
+void expect_histogram_agrees(double signal_Hz, double background_Hz, double distance_m, double integration_s,
+                             int groups, double dead_time_s = -1) {
   TofSpadConfig cfg = config_with_integration(integration_s);
   if (dead_time_s >= 0) cfg.spad.dead_time_s = dead_time_s;
   TofSpadKernelOptions opt;
@@ -37,9 +37,11 @@ void expect_histogram_agrees(double signal_Hz, double background_Hz, double dist
   const RateSource rates = test::flat(signal_Hz, background_Hz, round_trip(distance_m));
   for (int g = 0; g < groups; ++g) {
     const GroupHistogram gh = k.simulate_group(0, 0, g, rates);
-    for (int i = 0; i < k.codes(); ++i) armed[static_cast<size_t>(i)] += static_cast<double>(gh.armed[static_cast<size_t>(i)]);
+    for (int i = 0; i < k.codes(); ++i)
+      armed[static_cast<size_t>(i)] += static_cast<double>(gh.armed[static_cast<size_t>(i)]);
     for (const auto& ev : gh.events)
-      for (int i = 0; i < k.codes(); ++i) sim[static_cast<size_t>(i)] += static_cast<double>(ev[static_cast<size_t>(i)]);
+      for (int i = 0; i < k.codes(); ++i)
+        sim[static_cast<size_t>(i)] += static_cast<double>(ev[static_cast<size_t>(i)]);
   }
   const double n = static_cast<double>(k.laser_cycles()) * groups * cfg.tdc.columns_per_tdc;
   int worse_than_3 = 0;
@@ -103,7 +105,8 @@ TEST(SpadGolden, DeadTimeCorrelationBeyondGolden) {
       for (int i = 164; i <= 178; ++i) sim += static_cast<double>(ev[static_cast<size_t>(i)]);
   }
   for (int i = 164; i <= 178; ++i)
-    gold += h.event_prob[static_cast<size_t>(i)] * static_cast<double>(k.laser_cycles()) * groups * cfg.tdc.columns_per_tdc;
+    gold +=
+        h.event_prob[static_cast<size_t>(i)] * static_cast<double>(k.laser_cycles()) * groups * cfg.tdc.columns_per_tdc;
   const double excess = sim / gold - 1;
   EXPECT_GT(excess, 0.01) << sim << " vs " << gold;
   EXPECT_LT(excess, 0.12) << sim << " vs " << gold;
@@ -111,7 +114,8 @@ TEST(SpadGolden, DeadTimeCorrelationBeyondGolden) {
 
 // Estimator over repeated frames: column 0 of independent groups (other keys), vs the golden
 // closed-form moments (delta method) of the same operating point.
-void expect_moments_agree(double signal_Hz, double background_Hz, double distance_m, double integration_s, bool coates) {
+void expect_moments_agree(double signal_Hz, double background_Hz, double distance_m, double integration_s,
+                          bool coates) {
   TofSpadConfig cfg = config_with_integration(integration_s);
   cfg.histogram.coates_correction = coates;
   TofSpadKernelOptions opt;
@@ -137,8 +141,8 @@ void expect_moments_agree(double signal_Hz, double background_Hz, double distanc
   EXPECT_NEAR(mean, pr.moments.mean_s, 4.5 * se_mean) << "golden sd " << std::sqrt(pr.moments.var_s2);
   // Sample variance: chi2 with n-1 dof, +-5 sigma of sqrt(2/(n-1)), plus 10% for the delta method.
   const double rel = 5 * std::sqrt(2.0 / (n - 1)) + 0.10;
-  EXPECT_NEAR(var / pr.moments.var_s2, 1.0, rel) << "sim sd " << std::sqrt(var) << " golden sd "
-                                                 << std::sqrt(pr.moments.var_s2);
+  EXPECT_NEAR(var / pr.moments.var_s2, 1.0, rel)
+      << "sim sd " << std::sqrt(var) << " golden sd " << std::sqrt(pr.moments.var_s2);
 }
 
 TEST(SpadGolden, EstimatorMomentsCoates) { expect_moments_agree(4e4, 2e5, 2.0, 5e-3, true); }
