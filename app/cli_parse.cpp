@@ -211,6 +211,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), 'all', or a preset file (.toml)");
   co->add_option("--cycles", co_opt.cycles,
                  "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
+  co->add_option("--set", co_opt.settings,
+                 "With a preset: set a parameter after it, KEY=VALUE (repeatable), checked like a preset value")
+      ->type_name("KEY=VALUE");
   co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
   co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
   co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");

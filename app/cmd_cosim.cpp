@@ -247,7 +247,8 @@ std::string preset_path_of(const std::string& name) {
 // run in a child process on the same options as a built-in target.
 json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigned long long cycles,
                 const std::string& trace_file) {
-  const ParamSet preset = load_preset_file(path);
+  ParamSet preset = load_preset_file(path);
+  apply_settings(preset, opt.settings);
   const tb::PresetCosim* pc = nullptr;
   for (const auto& c : tb::preset_cosims())
     if (c.sensor == preset.sensor_id()) pc = &c;
@@ -272,7 +273,7 @@ json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigne
   const auto t0 = std::chrono::steady_clock::now();
   tb::CosimReport r;
   tb::RtlCoverage cov;
-  tb::run_rtl_cosim(exe, path, o, r, cov);
+  tb::run_rtl_cosim(exe, path, opt.settings, o, r, cov);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   require_fault_applied(r, opt.inject_fault);
   return report_json(r, cov, opt.inject_fault, wall);
@@ -337,6 +338,10 @@ int run_cosim(const CosimCommandOptions& opt) {
   const bool all = opt.target == "all";
   const tb::CosimTarget* target = all ? nullptr : find_target(opt.target);
   const std::string preset_path = all || target ? std::string() : preset_path_of(opt.target);
+  if (!opt.settings.empty() && preset_path.empty())
+    throw UserError(fmt::format("--set: {} is a built-in target with fixed parameters; --set applies to a preset "
+                                "file (rangesim cosim presets/<sensor>.toml --set KEY=VALUE)",
+                                opt.target));
   const unsigned long long cycles = opt.cycles.value_or(kDefaultCycles);
   if (cycles < 1 || cycles > kMaxCycles)
     throw UserError(fmt::format("cosim: --cycles {} out of range; allowed 1..{}", cycles, kMaxCycles));

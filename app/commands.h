@@ -97,6 +97,7 @@ int run_bench(const BenchOptions& opt);
 inline constexpr int kExitCosimMismatch = 4;  // the run completed and found mismatches
 struct CosimCommandOptions {
   std::string target;                        // sensor id, block name, "all" or a preset file ("" with --list)
+  std::vector<std::string> settings;         // --set KEY=VALUE after a preset (not for built-in targets)
   std::optional<unsigned long long> cycles;  // clock cycles (default 100000)
   unsigned long long seed = 1;
   std::string trace;         // RTL VCD file ("" = none)

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <sstream>
 #include <fmt/format.h>
 #include <thread>
 #include <unistd.h>
@@ -21,6 +23,7 @@
 #include "app/montecarlo/mc_sweep.h"
 #include "app/output_dir.h"
 #include "app/plot.h"
+#include "app/mpi_world.h"
 #include "app/sweep_journal.h"
 #include "core/user_error.h"
 #include "golden/common/evaluate_sensor.h"
@@ -101,18 +104,63 @@ mc::McSweepOptions sweep_options(const EvaluateOptions& opt) {
 
 }  // namespace
 
+// Under mpirun: rank r runs the points at positions k mod N = r into a journal of its own; rank 0
+// gathers every rank's journal records into the sweep's journal, from which the one output is
+// made exactly as after --resume (byte-identical to a one-process run). Returns the exit code of
+// an incomplete share (Ctrl-C, --max-seconds) on every rank, or -1 when all finished.
+int run_mpi_share(const mpi::World& world, const mc::McModel& model, const std::vector<mc::McSweepPoint>& points,
+                  const mc::McSweepOptions& sopt, const std::string& journal_dir, const std::string& fp, bool resume,
+                  SweepJournal* sweep_journal) {
+  std::vector<mc::McSweepPoint> mine;
+  for (std::size_t k = static_cast<std::size_t>(world.rank); k < points.size(); k += static_cast<std::size_t>(world.size))
+    mine.push_back(points[k]);
+  const std::string path = fmt::format("{}/evaluate.rank-{}-of-{}.journal", journal_dir, world.rank, world.size);
+  const std::string rank_fp = fmt::format("{}mpi rank {} of {}\n", fp, world.rank, world.size);
+  std::string records;
+  int code = -1;
+  {
+    SweepJournal share(path, rank_fp, resume);
+    const mc::McSweepResult r = mc::run_mc_sweep(model, mine, sopt, &share);
+    if (!r.complete) code = r.out_of_time ? kExitBudget : kExitInterrupted;
+  }
+  code = mpi::max_all(world, code);
+  if (code >= 0) return code;  // every rank keeps its journal for --resume
+  {
+    SweepJournal share(path, rank_fp, true);  // read back: every finished point of this rank
+    for (const auto& [index, payload] : share.done()) records += fmt::format("{} {}\n", index, payload);
+    share.remove();
+  }
+  const std::vector<std::string> all = mpi::gather(world, records);
+  if (!sweep_journal) return -1;  // ranks other than 0
+  for (const auto& part : all) {
+    std::istringstream in(part);
+    for (std::string line; std::getline(in, line);) {
+      const auto space = line.find(' ');
+      const long long index = std::stoll(line.substr(0, space));
+      if (!sweep_journal->done().count(index)) sweep_journal->append(index, line.substr(space + 1));
+    }
+  }
+  return -1;
+}
+
 int run_evaluate_mc(const EvaluateOptions& opt) {
+  const mpi::World world = mpi::init();
   // Validate everything before computing or touching the output directory.
   const ParamSet params = evaluate_params(opt);
   mc::McSweepOptions sopt = sweep_options(opt);
   const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(rangesim::mc::make_mc_model(params), sopt.seed);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
-  OutputDir out(dir, "--out");
+  OutputDir out(dir, "--out");  // every rank checks --out; only rank 0 commits
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
-  SweepJournal journal(journal_dir + "/evaluate.journal", fingerprint(params, sopt), opt.resume);
-  if (opt.resume) remove_stale_staging(dir);
-  if (opt.resume && !journal.done().empty())
-    fmt::print(stderr, "rangesim evaluate: resuming: {} points from {}\n", journal.done().size(), journal.path());
+  const std::string fp = fingerprint(params, sopt);
+  // Under mpirun only rank 0 keeps the sweep's journal (the ranks' shares have their own).
+  std::unique_ptr<SweepJournal> rank0_journal;
+  if (world.rank == 0)
+    rank0_journal = std::make_unique<SweepJournal>(journal_dir + "/evaluate.journal", fp, opt.resume || world.size > 1);
+  if (opt.resume && world.rank == 0) remove_stale_staging(dir);
+  if (opt.resume && rank0_journal && !rank0_journal->done().empty())
+    fmt::print(stderr, "rangesim evaluate: resuming: {} points from {}\n", rank0_journal->done().size(),
+               rank0_journal->path());
 
   const golden::EvalResult ev = golden::evaluate_sensor(params);
   std::vector<mc::McSweepPoint> points;
@@ -122,7 +170,21 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
 
   SigintGuard sigint;
   sopt.stop = &sigint_flag();
-  sopt.progress = &progress;
+  sopt.progress = world.rank == 0 ? &progress : nullptr;
+  if (world.size > 1) {
+    const int code = run_mpi_share(world, *model, points, sopt, journal_dir, fp, opt.resume, rank0_journal.get());
+    if (code >= 0) {
+      if (world.rank == 0)
+        fmt::print(stderr, "\nrangesim evaluate: {}: the finished points are kept in {}; to continue, run the same mpirun "
+                           "line with:\n  {}\n",
+                   code == kExitBudget ? fmt::format("--max-seconds {} exceeded", sopt.max_seconds) : "interrupted",
+                   journal_dir, resume_command(opt, dir));
+      return code;
+    }
+    if (world.rank != 0) return kExitOk;
+    sopt.progress = nullptr;  // everything comes from the journal now
+  }
+  SweepJournal& journal = *rank0_journal;
   const mc::McSweepResult r = mc::run_mc_sweep(*model, points, sopt, &journal);
   if (!r.complete) {
     long long have = 0;  // records in the journal (read only: abandoned workers may still append)

@@ -66,7 +66,7 @@ std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet& params
       accuracy_at_voltage_m(cfg, 0.2, L1, 10, 40e-9), "1 m assumed, 10 frames");
   res("pulse_width_100ns", "2.6 cm with T0 = 100 ns at 0.2 V, 10 frames averaged (thesis 4.1.1)", 0.026,
       accuracy_at_voltage_m(cfg, 0.2, L1, 10, 100e-9), "1 m assumed, 10 frames");
-  res("resolution_1p4V_10frames", "2.35 cm / sqrt(10) = 0.74 cm with 10 frames averaged (REFERENCE.md, derived)",
+  res("resolution_1p4V_10frames", "2.35 cm / sqrt(10) = 0.74 cm with 10 frames averaged (derived)",
       0.0235 / std::sqrt(10.0), accuracy_at_voltage_m(cfg, 1.4, L1, 10), "1 m, 10 frames");
 
   const double gain = accuracy_at_voltage_m(cfg, 0.25, L1, 1) / accuracy_at_voltage_m(cfg, 0.25, L1, 25);
@@ -76,7 +76,7 @@ std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet& params
        "1", gain, 0.01,
        "ratio of accuracies for 1 and 25 frames at 0.25 V, 1 m: frames are independent and the bias "
        "(second-order ratio bias only, with the ambient frame subtracted) is far below the noise"});
-  f.push_back({id, "max_range_t0_100ns", "maximum range c T0 / 2 = 15 m for T0 = 100 ns (REFERENCE.md, derived)", 15.0,
+  f.push_back({id, "max_range_t0_100ns", "maximum range c T0 / 2 = 15 m for T0 = 100 ns (derived)", 15.0,
                "m", max_range_m(cfg.source), 0.001, "c T0 / 2 with c = 299792458 m/s: 14.99 m"});
 
   // The thesis's best accuracy (Table 5.1, 12.6 mm; 4.1.3, 1.26 cm) is the pure signal shot noise

@@ -16,6 +16,7 @@ using nlohmann::json;
 
 struct ChildArgs {
   std::string preset, report;
+  std::vector<std::string> settings;  // --set KEY=VALUE after the preset
   CosimOptions options;
 };
 
@@ -35,6 +36,8 @@ ChildArgs parse_args(int argc, char** argv) {
       a.options.inject_fault = v;
     else if (k == "--trace")
       a.options.trace_path = v;
+    else if (k == "--set")
+      a.settings.push_back(v);
     else
       throw std::invalid_argument("cosim child: unknown argument " + k);
   }
@@ -127,7 +130,9 @@ int run_cosim_child(int argc, char** argv, PresetCosimRunner runner) {
     return 1;
   }
   try {
-    const CosimReport r = runner(load_preset_file(a.preset), a.options);
+    ParamSet preset = load_preset_file(a.preset);
+    apply_settings(preset, a.settings);
+    const CosimReport r = runner(preset, a.options);
     write_file(a.report, cosim_report_file_text(r, rtl_coverage()));
     return 0;
   } catch (const UserError& e) {

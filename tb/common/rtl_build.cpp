@@ -223,8 +223,8 @@ std::string rtl_cosim_executable(const RtlBuildSpec& s) {
   return exe.string();
 }
 
-void run_rtl_cosim(const std::string& exe, const std::string& preset, const CosimOptions& o, CosimReport& r,
-                   RtlCoverage& cov) {
+void run_rtl_cosim(const std::string& exe, const std::string& preset, const std::vector<std::string>& settings,
+                   const CosimOptions& o, CosimReport& r, RtlCoverage& cov) {
   std::string tmpl = (fs::temp_directory_path() / "rangesim_cosim_XXXXXX").string();
   if (!mkdtemp(tmpl.data())) throw std::runtime_error("cosim: cannot create a temporary folder");
   const std::string report = tmpl + "/report.json";
@@ -237,6 +237,7 @@ void run_rtl_cosim(const std::string& exe, const std::string& preset, const Cosi
                                 std::to_string(o.seed),
                                 "--report",
                                 report};
+  for (const auto& s : settings) args.insert(args.end(), {"--set", s});
   if (!o.inject_fault.empty()) args.insert(args.end(), {"--fault", o.inject_fault});
   if (!o.trace_path.empty()) args.insert(args.end(), {"--trace", o.trace_path});
   const int rc = run_program(args, "", "");

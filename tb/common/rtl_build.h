@@ -42,7 +42,9 @@ std::string rtl_cosim_executable(const RtlBuildSpec& spec);
 
 // Runs the executable on the preset (child arguments of tb/common/cosim_child.h); its stdout and
 // stderr go to this process's stderr. Errors of the child are rethrown (UserError stays UserError).
-void run_rtl_cosim(const std::string& executable, const std::string& preset_path, const CosimOptions& options,
+// `settings`: --set KEY=VALUE assignments the child applies after the preset (core/preset.h).
+void run_rtl_cosim(const std::string& executable, const std::string& preset_path,
+                   const std::vector<std::string>& settings, const CosimOptions& options,
                    CosimReport& report, RtlCoverage& coverage);
 
 }  // namespace rangesim::tb

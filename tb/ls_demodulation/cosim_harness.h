@@ -31,7 +31,14 @@
 namespace rangesim::tb {
 namespace ls_demodulation_harness {
 
-using namespace rangesim::systemc;
+// The clock-level model this harness drives (no using-directive in a header).
+using rangesim::systemc::ActivationRow;
+using rangesim::systemc::AddressSearchPins;
+using rangesim::systemc::DemodKernelOptions;
+using rangesim::systemc::DemodNoiseSwitches;
+using rangesim::systemc::DemodRowResult;
+using rangesim::systemc::DemodSensorKernel;
+using rangesim::systemc::DemodStimulus;
 
 constexpr const char* kMsgType = "rangesim/cosim/ls-demodulation";
 constexpr int kResetCycles = 3;
@@ -349,14 +356,12 @@ class DemodCosimTop : public sc_core::sc_module {
   std::uint64_t cycle_ = 0;
 };
 
-}  // namespace ls_demodulation_harness
 
 // Runs the sequencer RTL VTop, verilated with verilog_parameters(base), against the kernel on a
 // random setup drawn on `base`; `target` names the report.
 template <class VTop>
 CosimReport run_ls_demodulation_harness(const CosimOptions& o, const LsDemodulationConfig& base,
                                         const std::string& target) {
-  using namespace ls_demodulation_harness;
   CosimReport r;
   r.target = target;
   VerilatedContext* ctx = cosim_verilator_context(o);
@@ -386,5 +391,10 @@ CosimReport run_ls_demodulation_preset(const ParamSet& preset, const CosimOption
   verilog_parameters(cfg, preset.origin());  // the limits the RTL adds
   return run_ls_demodulation_harness<VTop>(o, cfg, preset_target_name(preset));
 }
+
+}  // namespace ls_demodulation_harness
+
+using ls_demodulation_harness::run_ls_demodulation_harness;
+using ls_demodulation_harness::run_ls_demodulation_preset;
 
 }  // namespace rangesim::tb

@@ -43,7 +43,16 @@
 namespace rangesim::tb {
 namespace tof_spad_harness {
 
-using namespace rangesim::systemc::spad;
+// The clock-level model this harness drives (no using-directive in a header).
+using rangesim::systemc::spad::GroupHistogram;
+using rangesim::systemc::spad::PixelRates;
+using rangesim::systemc::spad::SpadNoise;
+using rangesim::systemc::spad::SpadPixelKernel;
+using rangesim::systemc::spad::SpadTime;
+using rangesim::systemc::spad::TdcGroupKernel;
+using rangesim::systemc::spad::TdcHit;
+using rangesim::systemc::spad::TofSpadKernelOptions;
+using rangesim::systemc::spad::TofSpadKernel;
 
 constexpr const char* kMsgType = "rangesim/cosim/tof-spad";
 constexpr int kResetCycles = 3;
@@ -501,7 +510,6 @@ inline Setup random_rows(const TofSpadConfig& base, const TofSpadRtlShape& shape
   return s;
 }
 
-}  // namespace tof_spad_harness
 
 // Runs the TDC group RTL VTop, verilated with verilog_parameters(base), against the kernels on
 // random setups drawn on `base` (its timing redrawn within the ranges of random_setup).
@@ -510,7 +518,6 @@ inline Setup random_rows(const TofSpadConfig& base, const TofSpadRtlShape& shape
 template <class VTop>
 CosimReport run_tof_spad_harness(const CosimOptions& o, const TofSpadConfig& base, bool high_rates,
                                  const std::string& record, const std::string& target) {
-  using namespace tof_spad_harness;
   CosimReport r;
   r.target = target;
   VerilatedContext* ctx = cosim_verilator_context(o);
@@ -540,5 +547,10 @@ CosimReport run_tof_spad_preset(const ParamSet& preset, const CosimOptions& o) {
   verilog_parameters(cfg, preset.origin());  // the limits the RTL adds
   return run_tof_spad_harness<VTop>(o, cfg, false, "", preset_target_name(preset));
 }
+
+}  // namespace tof_spad_harness
+
+using tof_spad_harness::run_tof_spad_harness;
+using tof_spad_harness::run_tof_spad_preset;
 
 }  // namespace rangesim::tb
