@@ -181,6 +181,14 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sw->add_flag("--json", sw_opt.json, "Print sweep.json to stdout instead of the table");
   sw->add_flag("--no-plots", sw_opt.no_plots, "Skip the PNG/SVG plots");
   sw->add_flag("--resume", sw_opt.resume, "Continue the sweep whose journal is in --out (same options)");
+  sw->add_option("--trials", sw_opt.trials,
+                 "Also run the clock-level kernels with noise T times at every detectable grid point of each\n"
+                 "variant (2..10000000): mc_accuracy_min/max_m with their 95% confidence intervals");
+  sw->add_option("--seed", sw_opt.seed, "Key of the Monte Carlo and co-simulation streams (default 1)");
+  sw->add_flag("--cosim", sw_opt.cosim,
+               "Also co-simulate each variant's RTL (verilated at run time for its parameters, cached) against\n"
+               "its clock-level model: cosim_transactions, cosim_mismatches");
+  sw->add_option("--cosim-cycles", sw_opt.cosim_cycles, "Clock cycles of each --cosim run (default 20000)");
   sw->add_option("--pareto-accuracy", sw_opt.pareto_accuracy,
                  "The accuracy axis of the Pareto front: min (best over the detectable area, default) or max (worst)")
       ->check(CLI::IsMember({"min", "max"}));

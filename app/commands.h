@@ -71,6 +71,10 @@ struct SweepOptions {
   bool no_plots = false;
   bool resume = false;                  // continue the journal in --out
   std::string pareto_accuracy = "min";  // --pareto-accuracy min|max: best or worst accuracy on the front's axis
+  std::optional<long long> trials;          // --trials T: Monte Carlo accuracy with its CI per variant
+  unsigned long long seed = 1;              // --seed: key of the Monte Carlo and cosim streams
+  bool cosim = false;                       // --cosim: each variant's RTL against its model
+  unsigned long long cosim_cycles = 20000;  // --cosim-cycles
 };
 int run_sweep(const SweepOptions& opt);
 // rangesim merge: the shards of one sweep into its unsharded output.

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <thread>
 #include <sstream>
 
 #include "app/cli_common.h"
@@ -43,9 +44,28 @@ Shard parse_shard(const std::optional<std::string>& text) {
   return s;
 }
 
-// Everything that changes the rows: the resolved preset, the assignments and the variant list.
+// The Monte Carlo and co-simulation options of a sweep, checked.
+VariantChecks variant_checks(const SweepOptions& o) {
+  VariantChecks c;
+  if (o.trials) {
+    if (*o.trials < 2 || *o.trials > 10000000) throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", *o.trials));
+    c.trials = *o.trials;
+  }
+  c.seed = o.seed;
+  c.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  c.cosim = o.cosim;
+  if (o.cosim_cycles < 1 || o.cosim_cycles > 1000000000)
+    throw UserError(fmt::format("--cosim-cycles {}: allowed 1 .. 1000000000", o.cosim_cycles));
+  c.cosim_cycles = o.cosim_cycles;
+  c.settings = o.settings;
+  return c;
+}
+
+// Everything that changes the rows: the resolved preset, the assignments, the variant list and
+// the Monte Carlo and co-simulation options.
 std::string fingerprint(const ParamSet& base, const SweepHeader& h, const std::vector<std::vector<std::string>>& vars) {
-  std::string f = fmt::format("rangesim sweep 1\nsensor = {}\n", base.sensor_id());
+  std::string f = fmt::format("rangesim sweep 1\nsensor = {}\ntrials = {}\nseed = {}\ncosim = {} {}\n", base.sensor_id(),
+                              h.checks.trials, h.checks.seed, h.checks.cosim, h.checks.cosim_cycles);
   for (const auto& [key, v] : base.values())
     f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text)
                                    : fmt::format("{} = {:.17g}\n", key, v.number);
@@ -84,6 +104,8 @@ std::string resume_command(const SweepOptions& o, const std::string& dir) {
   if (o.json) c += " --json";
   if (o.no_plots) c += " --no-plots";
   if (o.pareto_accuracy != "min") c += " --pareto-accuracy " + o.pareto_accuracy;
+  if (o.trials) c += fmt::format(" --trials {} --seed {}", *o.trials, o.seed);
+  if (o.cosim) c += fmt::format(" --cosim --cosim-cycles {}", o.cosim_cycles);
   return c + " --out " + shell_quote(dir) + " --resume";
 }
 
@@ -107,12 +129,17 @@ int write_outputs(OutputDir& out, const SweepHeader& h, const std::vector<SweepR
 }
 
 nlohmann::json header_json(const SweepHeader& h) {
-  return {{"sensor", h.sensor}, {"preset", h.preset}, {"set", h.settings}, {"varied", h.keys}, {"zip", h.zip}};
+  return {{"sensor", h.sensor},     {"preset", h.preset},           {"set", h.settings},
+          {"varied", h.keys},       {"zip", h.zip},                 {"trials", h.checks.trials},
+          {"seed", h.checks.seed},  {"cosim", h.checks.cosim},      {"cosim_cycles", h.checks.cosim_cycles}};
 }
 
 SweepHeader header_from_json(const nlohmann::json& j) {
-  return {j.at("sensor"), j.at("preset"), j.at("set").get<std::vector<std::string>>(),
-          j.at("varied").get<std::vector<std::string>>(), j.at("zip").get<bool>()};
+  SweepHeader h{j.at("sensor"), j.at("preset"), j.at("set").get<std::vector<std::string>>(),
+                j.at("varied").get<std::vector<std::string>>(), j.at("zip").get<bool>()};
+  h.checks.trials = j.at("trials"), h.checks.seed = j.at("seed"), h.checks.cosim = j.at("cosim");
+  h.checks.cosim_cycles = j.at("cosim_cycles");
+  return h;
 }
 
 }  // namespace
@@ -124,6 +151,7 @@ int run_sweep(const SweepOptions& opt) {
   if (opt.vary.empty()) throw UserError("--vary is required: KEY=LO:HI:N[:log] or KEY=v1,v2,... (repeatable)");
   std::vector<VaryAxis> axes;
   SweepHeader h{base.sensor_id(), base.origin(), opt.settings, {}, opt.zip, "accuracy_" + opt.pareto_accuracy + "_m"};
+  h.checks = variant_checks(opt);
   for (const auto& v : opt.vary) {
     axes.push_back(parse_vary(v, schema));
     for (const auto& k : h.keys)
@@ -155,11 +183,11 @@ int run_sweep(const SweepOptions& opt) {
     if ((interrupted = sigint_flag())) break;
     const auto it = journal.done().find(i);
     if (it != journal.done().end()) {
-      rows.push_back(row_from_json(nlohmann::json::parse(it->second)));
+      rows.push_back(row_from_json(nlohmann::json::parse(it->second), h.checks));
       ++from_journal;
     } else {
-      rows.push_back(run_variant(base, i, vars[static_cast<std::size_t>(i)]));
-      journal.append(i, row_json(rows.back()).dump());
+      rows.push_back(run_variant(base, i, vars[static_cast<std::size_t>(i)], h.checks));
+      journal.append(i, row_json(rows.back(), h.checks).dump());
     }
     progress(static_cast<long long>(rows.size()), from_journal);
   }
@@ -172,13 +200,13 @@ int run_sweep(const SweepOptions& opt) {
   }
   if (world.size > 1) {  // rank 0 gathers every rank's rows, in variant order
     nlohmann::json mine = nlohmann::json::array();
-    for (const auto& r : rows) mine.push_back(row_json(r));
+    for (const auto& r : rows) mine.push_back(row_json(r, h.checks));
     const std::vector<std::string> parts = mpi::gather(world, mine.dump());
     journal.remove();
     if (world.rank != 0) return kExitOk;
     rows.clear();
     for (const auto& part : parts)
-      for (const auto& r : nlohmann::json::parse(part)) rows.push_back(row_from_json(r));
+      for (const auto& r : nlohmann::json::parse(part)) rows.push_back(row_from_json(r, h.checks));
     std::sort(rows.begin(), rows.end(), [](const SweepRow& a, const SweepRow& b) { return a.index < b.index; });
   } else if (shard.n > 1) {
     nlohmann::json part = {{"rangesim_sweep_shard", 1},
@@ -188,7 +216,7 @@ int run_sweep(const SweepOptions& opt) {
                            {"variants_total", vars.size()},
                            {"header", header_json(h)},
                            {"rows", nlohmann::json::array()}};
-    for (const auto& r : rows) part["rows"].push_back(row_json(r));
+    for (const auto& r : rows) part["rows"].push_back(row_json(r, h.checks));
     const std::string name = fmt::format("sweep.shard-{}-of-{}.json", shard.k, shard.n);
     out->write(name, part.dump(1) + "\n");
     out->commit();
@@ -232,7 +260,7 @@ int run_merge(const MergeOptions& opt) {
     if (seen[static_cast<std::size_t>(k - 1)])
       throw UserError(fmt::format("merge: {}: shard {}/{} given twice", path, k, n));
     seen[static_cast<std::size_t>(k - 1)] = true;
-    for (const auto& r : j.at("rows")) rows.push_back(row_from_json(r));
+    for (const auto& r : j.at("rows")) rows.push_back(row_from_json(r, h->checks));
   }
   std::string missing;
   for (std::size_t k = 0; k < seen.size(); ++k)

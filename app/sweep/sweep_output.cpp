@@ -59,7 +59,7 @@ std::string sweep_csv(const SweepHeader& h, const std::vector<SweepRow>& rows) {
   std::string s = "variant";
   for (const auto& k : h.keys) s += "," + k;
   s += ",valid";
-  for (const auto& f : figure_names()) s += "," + f;
+  for (const auto& f : figure_names(h.checks)) s += "," + f;
   s += ",pareto,reason\n";
   const std::vector<bool> front = pareto_front(rows, h.pareto_accuracy);
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -67,7 +67,7 @@ std::string sweep_csv(const SweepHeader& h, const std::vector<SweepRow>& rows) {
     s += fmt::format("{}", r.index);
     for (std::size_t k = 0; k < h.keys.size(); ++k) s += "," + csv_field(value_of(r, k));
     s += r.valid ? ",1" : ",0";
-    for (const auto& f : figure_names()) s += "," + num(figure(r, f));
+    for (const auto& f : figure_names(h.checks)) s += "," + num(figure(r, f));
     s += front[i] ? ",1," : ",0,";
     s += csv_field(r.reason) + "\n";
   }
@@ -78,7 +78,7 @@ nlohmann::json sweep_json(const SweepHeader& h, const std::vector<SweepRow>& row
   nlohmann::json variants = nlohmann::json::array();
   const std::vector<bool> front = pareto_front(rows, h.pareto_accuracy);
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    nlohmann::json j = row_json(rows[i]);
+    nlohmann::json j = row_json(rows[i], h.checks);
     for (std::size_t k = 0; k < h.keys.size(); ++k) j[h.keys[k]] = value_of(rows[i], k);
     j["pareto"] = static_cast<bool>(front[i]);
     variants.push_back(j);

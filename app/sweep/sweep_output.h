@@ -18,6 +18,7 @@ struct SweepHeader {
   std::vector<std::string> keys;      // the varied keys, in --vary order
   bool zip = false;
   std::string pareto_accuracy = "accuracy_min_m";  // the accuracy axis of the Pareto front: _min_ or _max_
+  VariantChecks checks = {};                       // Monte Carlo and co-simulation columns, when run
 };
 
 // Rows on the Pareto front: no other valid row has both a higher (or equal) range-map rate and a

@@ -78,6 +78,10 @@ VaryAxis parse_vary(const std::string& spec, const ParamSchema& schema) {
   } else {
     throw UserError(fmt::format("{}: expected KEY=LO:HI:N[:log] or KEY=v1,v2,...", where));
   }
+  // Each value must be a legal value of its key on its own (type, range, choices): exit 2 here,
+  // not an invalid row; only the cross-key checks make rows invalid.
+  ParamSet scratch("", schema.sensor_id);
+  for (const auto& v : axis.values) scratch.set_from_text(axis.key + "=" + v, "--vary", schema);
   return axis;
 }
 

@@ -90,6 +90,24 @@ TEST(Sweep, ThreeShardsMergeByteIdenticalToOneProcess) {
   EXPECT_FALSE(fs::exists(tmp + "/x/sweep.csv"));
 }
 
+TEST(Sweep, MonteCarloAccuracyWithItsIntervalPerVariant) {
+  const std::string dir = make_temp_dir() + "/mc";
+  const CommandResult r = rangesim("sweep ls-conventional --vary multisampling.samplings=1,4 --set evaluation.signal_points=3 "
+                                   "--set evaluation.background_points=2 --trials 300 --json --no-plots --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& v : j["variants"]) {
+    ASSERT_TRUE(v["mc_accuracy_min_m"].is_number()) << v;
+    const double lo = v["mc_accuracy_min_lo_m"], mid = v["mc_accuracy_min_m"], hi = v["mc_accuracy_min_hi_m"];
+    EXPECT_LE(lo, mid);
+    EXPECT_LE(mid, hi);
+    EXPECT_LE(v["mc_accuracy_min_m"].get<double>(), v["mc_accuracy_max_m"].get<double>());
+    EXPECT_EQ(v["mc_points"], v["points_detectable"]);
+  }
+  // Four samplings: a smaller Monte Carlo accuracy at the best point, as golden says.
+  EXPECT_LT(j["variants"][1]["mc_accuracy_min_m"].get<double>(), j["variants"][0]["mc_accuracy_min_m"].get<double>());
+}
+
 int journal_records(const std::string& dir) {
   std::ifstream in(dir + "/.staging-sweep/sweep.1-of-1.journal");
   int n = 0;
@@ -141,7 +159,9 @@ TEST(Sweep, BadVaryIsRefusedNamingTheKeyAndWritesNothing) {
            {"timing.clock_Hz=0:1e6:3:log", "needs LO > 0"},
            {"timing.clock_Hz=1e6:2e6:0", "N = 0 must be an integer in [1, 100000]"},
            {"comparator.threshold_mode=1:2:3", "is not a number; give a list"},
-           {"timing.clock_Hz=1e6,,2e6", "an empty value"}}) {
+           {"timing.clock_Hz=1e6,,2e6", "an empty value"},
+           {"multisampling.samplings=1,65", "--vary multisampling.samplings=65: multisampling.samplings = 65 is out of range; allowed: integer in [1, 64]"},
+           {"comparator.threshold_mode=tracking,best", "is not allowed; allowed: one of \"tracking\" \"fixed\""}}) {
     const CommandResult r = bad(vary);
     EXPECT_EQ(r.exit_code, 2) << vary;
     EXPECT_NE(r.err.find(fragment), std::string::npos) << vary << ": " << r.err;
