@@ -24,5 +24,9 @@ if(RANGESIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()
 
-# Optional: MPI for `mpirun -n N rangesim sweep` (app/mpi_world.h); built without it otherwise.
-find_package(MPI COMPONENTS CXX QUIET)
+# Optional: MPI for `mpirun -n N rangesim sweep|evaluate --trials` (app/mpi_world.h); on when
+# found, built without it otherwise (-DRANGESIM_WITH_MPI=OFF switches it off).
+option(RANGESIM_WITH_MPI "Build with MPI when it is found (mpirun -n N rangesim sweep|evaluate --trials)" ON)
+if(RANGESIM_WITH_MPI)
+  find_package(MPI COMPONENTS CXX QUIET)
+endif()

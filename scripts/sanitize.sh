@@ -14,7 +14,7 @@ build=${1:-$src/build-sanitize}
 start=$(date +%s)
 
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRANGESIM_SANITIZE=ON \
-  -DRANGESIM_WITH_RTL=OFF -DRANGESIM_BUILD_TESTS=ON >/dev/null
+  -DRANGESIM_WITH_RTL=OFF -DRANGESIM_WITH_MPI=OFF -DRANGESIM_BUILD_TESTS=ON >/dev/null
 
 # Test targets of the labels below that exist in this tree (other sensors' suites come and go).
 targets=(rangesim test_golden test_core test_cli test_badinput test_stress)
