@@ -5,18 +5,21 @@
 #include <ostream>
 
 #include "app/cli_common.h"
+#include "core/sensor_registry.h"
 
 namespace rangesim::app {
 
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App app{
       "rangesim: cycle-accurate simulator of 3-D range-finding smart image sensors.\n"
-      "Sensors (presets): ls-conventional, ls-demodulation, tof-lockin, tof-spad; a path to a\n"
-      "preset .toml file works wherever a sensor is expected.\n"
-      "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
-      "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out or cosim found\n"
-      "mismatches, 130 interrupted (Ctrl-C); evaluate's 4 and 130 keep the sweep journal and print\n"
-      "the command that resumes.",
+      "Sensors (presets): " +
+          sensor_ids() +
+          "; a path to a\n"
+          "preset .toml file works wherever a sensor is expected, and --set KEY=VALUE changes it.\n"
+          "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
+          "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out or cosim found\n"
+          "mismatches, 130 interrupted (Ctrl-C); evaluate's 4 and 130 and sweep's 130 keep the journal\n"
+          "and print the command that resumes.",
       "rangesim"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rangesim 0.1.0");
