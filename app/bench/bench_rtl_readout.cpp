@@ -36,7 +36,7 @@ Schedule schedule(const LsConventionalConfig& cfg) {
   Schedule s;
   const FrameTimingConfig& t = cfg.timing;
   const int N = cfg.multisampling.samplings;
-  s.frame_cycles = golden::frame_timing(t, N).frame_cycles;
+  s.frame_cycles = rangesim::frame_cycles(t, N);
   const long long P =
       t.latch_cycles + t.search_cycles + static_cast<long long>(t.addresses_per_sampling) * t.address_bits;
   for (int k = 1; k <= N; ++k) {

@@ -3,6 +3,8 @@
 // rising edge; both views are sampled on the falling edge.
 #include "tb/ls_conventional/block_cosim.h"
 
+#include "tb/common/cosim_run.h"
+
 #include <verilated.h>
 #include <verilated_vcd_sc.h>
 
@@ -49,15 +51,7 @@ void add(CosimReport& r, CosimMismatch m) { CosimScoreboard(r).add(std::move(m))
 
 template <class Top>
 void run_top(Top& top, const CosimOptions& o, sc_core::sc_time period, long long cycles) {
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
-  sc_core::sc_start(period * static_cast<double>(cycles + kResetEdges));
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, cycles + kResetEdges);
 }
 
 // ---------------- centre_processor ----------------

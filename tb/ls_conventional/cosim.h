@@ -50,7 +50,7 @@ inline const std::vector<std::string>& ls_conventional_faults() {
 // Whole frame accesses covering `cycles` (at least one), for a CosimOptions run.
 inline LsConventionalCosimOptions ls_conventional_options(const CosimOptions& o, const LsConventionalConfig& cfg) {
   LsConventionalCosimOptions lo;
-  const long long fc = golden::frame_timing(cfg.timing, cfg.multisampling.samplings).frame_cycles;
+  const long long fc = rangesim::frame_cycles(cfg.timing, cfg.multisampling.samplings);
   lo.frames = std::max<long long>(1, (static_cast<long long>(o.cycles) + fc - 1) / fc);
   lo.seed = o.seed;
   lo.inject_fault = o.inject_fault;

@@ -31,6 +31,7 @@
 #include "golden/ls_conventional/multisampling.h"
 #include "systemc/ls_conventional/sensor_kernel.h"
 #include "core/params.h"
+#include "tb/common/cosim_run.h"
 #include "tb/common/cosim_child.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
@@ -368,17 +369,9 @@ LsConventionalCosimResult run_ls_conventional_harness(const LsConventionalCosimO
   const sc_core::sc_time period(1.0 / cfg.timing.clock_Hz, sc_core::SC_SEC);
   LsCosimTop<VTop> top("cosim", o, target, cfg, kopt, period);
 
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);  // Verilator tracing starts after elaboration
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
-  const long long frame_cycles = golden::frame_timing(cfg.timing, cfg.multisampling.samplings).frame_cycles;
+  const long long fc = rangesim::frame_cycles(cfg.timing, cfg.multisampling.samplings);
   // Bounded: the run stops itself after the last frame; this is the safety net.
-  sc_core::sc_start(period * static_cast<double>(kResetEdges + 2 + frame_cycles * (o.frames + 1)));
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, kResetEdges + 2 + fc * (o.frames + 1));
   top.finish();
 
   LsConventionalCosimResult res;

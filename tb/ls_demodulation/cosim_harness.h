@@ -23,6 +23,7 @@
 #include "golden/ls_demodulation/front_end.h"
 #include "systemc/ls_demodulation/sensor_kernel.h"
 #include "core/params.h"
+#include "tb/common/cosim_run.h"
 #include "tb/common/cosim_child.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
@@ -369,15 +370,7 @@ CosimReport run_ls_demodulation_harness(const CosimOptions& o, const LsDemodulat
   Setup s = random_setup(base, o, rng);
   const sc_core::sc_time period(1.0 / s.cfg.readout.clock_Hz, sc_core::SC_SEC);
   DemodCosimTop<VTop> top("cosim", o, r, std::move(s), period);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
-  sc_core::sc_start(period * static_cast<double>(top.cycle_bound()));
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, top.cycle_bound());
   top.finish();
   finish_cosim_report(r, ctx);
   return r;

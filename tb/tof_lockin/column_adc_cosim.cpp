@@ -17,6 +17,7 @@
 #include "Vcolumn_adc.h"
 #include "core/tof_lockin/config.h"
 #include "systemc/tof_lockin/sensor_kernel.h"
+#include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
@@ -180,15 +181,7 @@ CosimReport run_column_adc_cosim(const CosimOptions& o, const std::string& recor
   VerilatedContext* ctx = cosim_verilator_context(o);
   const sc_core::sc_time period(1.0 / TofLockinConfig{}.readout.clock_Hz, sc_core::SC_SEC);
   AdcCosimTop top("cosim", o, r, record, period);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
-  sc_core::sc_start(period * static_cast<double>(o.cycles + 4200 + 100));  // + one conversion
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, o.cycles + 4200 + 100); // + one conversion
   finish_cosim_report(r, ctx);
   return r;
 }

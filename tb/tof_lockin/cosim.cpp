@@ -26,6 +26,7 @@
 #include "core/tof_lockin/config.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "systemc/tof_lockin/sensor_kernel.h"
+#include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
@@ -370,15 +371,7 @@ CosimReport run_tof_lockin_cosim(const CosimOptions& o) {
       10 + s.frames * (s.cfg.gates.accumulations_per_frame * 100 +
                        s.cfg.pixel.rows * (s.cfg.readout.adc_conversion_cycles + s.cfg.readout.output_cycles_per_row));
   LockinCosimTop top("cosim", o, r, std::move(s), period);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
-  sc_core::sc_start(period * static_cast<double>(bound));  // bounded by the schedule
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, bound); // bounded by the schedule
   top.finish();
   finish_cosim_report(r, ctx);
   return r;

@@ -18,6 +18,7 @@
 #include "Vlockin_gate_generator.h"
 #include "core/tof_lockin/config.h"
 #include "systemc/tof_lockin/sensor_kernel.h"
+#include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
 
@@ -226,16 +227,8 @@ CosimReport run_lockin_gate_generator_cosim(const CosimOptions& o, const std::st
   VerilatedContext* ctx = cosim_verilator_context(o);
   const sc_core::sc_time period(1.0 / TofLockinConfig{}.gates.clock_Hz, sc_core::SC_SEC);
   GateCosimTop top("cosim", o, r, record, period);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);  // Verilator tracing only after elaboration
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
   // Bounded: the requested cycles plus the longest operation (64 x 320) and slack.
-  sc_core::sc_start(period * static_cast<double>(o.cycles + 64 * 320 + 100));
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, o.cycles + 64 * 320 + 100);
   top.finish();
   finish_cosim_report(r, ctx);
   return r;

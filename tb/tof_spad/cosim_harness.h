@@ -35,6 +35,7 @@
 #include "systemc/tof_spad/tdc_kernel.h"
 #include "systemc/tof_spad/sensor_kernel.h"
 #include "core/params.h"
+#include "tb/common/cosim_run.h"
 #include "tb/common/cosim_child.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
@@ -525,15 +526,7 @@ CosimReport run_tof_spad_harness(const CosimOptions& o, const TofSpadConfig& bas
   Setup s = random_rows(base, shape, o, high_rates);
   const sc_core::sc_time period(s.cfg.tdc.lsb_s, sc_core::SC_SEC);
   SpadCosimTop<VTop> top("cosim", o, r, std::move(s), shape, record, period);
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  std::unique_ptr<VerilatedVcdSc> tf;
-  if (!o.trace_path.empty()) {
-    tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(tf.get(), 99);
-    tf->open(o.trace_path.c_str());
-  }
-  sc_core::sc_start(period * static_cast<double>(top.cycle_bound()));
-  if (tf) tf->close();
+  run_cosim_top(top, o.trace_path, period, top.cycle_bound());
   top.finish();
   finish_cosim_report(r, ctx);
   return r;
