@@ -87,6 +87,18 @@ struct SimulationReport {
 // frames) and whether every frame took the golden cycle counts.
 void set_timing(SimulationReport& r, const golden::FrameTiming& gt, nlohmann::json phases, long long first_frame_cycles,
                 double frame_time_s, long long frames_per_range_map, bool matches);
+// A frame's phases as the clock-level model measured them beside the clock schedule's: name,
+// cycles, time at `clock_Hz`, golden_cycles (`measured` in the schedule's phase order).
+template <class Cycles>
+nlohmann::json phases_json(const golden::FrameTiming& gt, const Cycles& measured, double clock_Hz) {
+  nlohmann::json phases = nlohmann::json::array();
+  for (std::size_t i = 0; i < gt.phases.size(); ++i)
+    phases.push_back({{"name", gt.phases[i].name},
+                      {"cycles", measured[i]},
+                      {"time_s", measured[i] / clock_Hz},
+                      {"golden_cycles", gt.phases[i].cycles}});
+  return phases;
+}
 // The summary's timing keys from a report set_timing filled: frame_time_s, frame_rate_Hz,
 // range_maps_per_s, phases, timing_matches_golden and golden {frame_cycles, frame_time_s,
 // frame_access_rate_Hz, range_maps_per_s} (a sensor may add its own golden keys).

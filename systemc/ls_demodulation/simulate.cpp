@@ -143,14 +143,7 @@ struct Run {
 };
 
 nlohmann::json phases_json(const Run& run) {
-  nlohmann::json phases = nlohmann::json::array();
-  const auto& first = run.res.frames.front();
-  for (std::size_t i = 0; i < run.gt.phases.size(); ++i)
-    phases.push_back({{"name", run.gt.phases[i].name},
-                      {"cycles", first.phase_cycles[i]},
-                      {"time_s", first.phase_cycles[i] / run.cfg.readout.clock_Hz},
-                      {"golden_cycles", run.gt.phases[i].cycles}});
-  return phases;
+  return systemc::phases_json(run.gt, run.res.frames.front().phase_cycles, run.cfg.readout.clock_Hz);
 }
 
 nlohmann::json summary(const Run& run, const SimulationReport& report) {

@@ -145,14 +145,7 @@ struct Run {
 };
 
 nlohmann::json phases_json(const Run& run) {
-  nlohmann::json phases = nlohmann::json::array();
-  const auto& first = run.res.frames.front();
-  for (std::size_t i = 0; i < run.gt.phases.size(); ++i)
-    phases.push_back({{"name", run.gt.phases[i].name},
-                      {"cycles", first.phase_cycles[i]},
-                      {"time_s", first.phase_cycles[i] / run.kernel.clock_Hz()},
-                      {"golden_cycles", run.gt.phases[i].cycles}});
-  return phases;
+  return systemc::phases_json(run.gt, run.res.frames.front().phase_cycles, run.kernel.clock_Hz());
 }
 
 // The sparse-path figures: which laser-cycle path ran, and the background-only pixels.
