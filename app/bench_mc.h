@@ -1,5 +1,5 @@
 #pragma once
-// Monte Carlo figures of `rangesim bench` (issue 6), measured in one run on an ls-conventional
+// Monte Carlo figures of `rangesim bench`, measured in one run on an ls-conventional
 // sweep of detectable grid points (the full sensor kernel, one row, noise on):
 //   mc_vs_bare_rng   random variates per second consumed by the Monte Carlo sweep on 1 thread over
 //                    those of a bare loop drawing the same variates (same streams, distributions

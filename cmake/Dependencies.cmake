@@ -6,7 +6,7 @@ find_package(tomlplusplus REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json REQUIRED)
 
-# libsystemc-dev ships only a pkg-config file (CONVENTIONS.md): wrap it in an imported target.
+# libsystemc-dev ships only a pkg-config file: wrap it in an imported target.
 pkg_check_modules(SYSTEMC REQUIRED IMPORTED_TARGET systemc)
 # An INTERFACE IMPORTED target (not an ALIAS) so exported targets refer to SystemC::systemc.
 if(NOT TARGET SystemC::systemc)

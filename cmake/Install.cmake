@@ -5,7 +5,7 @@
 # Headers install under include/rangesim/<folder>/ and are included as "core/...",
 # "golden/...", "systemc/..." (install interface include dir: include/rangesim). Verilated
 # headers go to include/rangesim/rtl/ (included by bare name, e.g. "Vaddress_search.h", since
-# they include each other that way) plus "rtl/address_search_params.h".
+# they include each other that way) plus "rtl/instance_presets.h" (the preset each was verilated from).
 include(CMakePackageConfigHelpers)
 
 set(RANGESIM_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/rangesim"
@@ -44,7 +44,7 @@ endforeach()
 install(FILES "${PROJECT_BINARY_DIR}/core/generated/core/sensor_list.h"
   DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/core")
 
-# Verilated model headers (generated at configure time) and the instance parameters.
+# Verilated model headers (generated at build time) and the instance presets.
 if(TARGET rangesim_rtl)
   get_property(_rtl_dirs GLOBAL PROPERTY RANGESIM_RTL_INCLUDE_DIRS)
   foreach(_d ${_rtl_dirs})

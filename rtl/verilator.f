@@ -1,8 +1,9 @@
-// Verilator flags shared by every verilate() call in rtl/CMakeLists.txt (read with -f).
-// verilate() itself adds --sc (SystemC model), --trace (VCD; TRACE_VCD is ignored on 5.006),
-// --prefix and --Mdir. Paths here are relative to rtl/, the WORKING_DIRECTORY of verilate().
+// Verilator flags shared by every verilation, the built-in instances of rtl/CMakeLists.txt and
+// the run-time ones of tb/common/rtl_build.cpp (read with -f). Those add --sc (SystemC model),
+// --trace (VCD), --prefix, --Mdir and the -G parameters. Paths here are relative to rtl/, the
+// working folder of both.
 
-// All lint warnings on, and fatal: a lint error fails `cmake` (verilate runs at configure time).
+// All lint warnings on, and fatal: a lint error fails the build.
 -Wall
 // Evaluate the immediate assertions (a_start_while_busy, ...); a failing one calls $error.
 --assert

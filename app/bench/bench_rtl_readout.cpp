@@ -12,7 +12,7 @@
 #include "app/bench/bench_util.h"
 #include "golden/ls_conventional/frame_timing.h"
 #include "tb/common/cosim_ports.h"
-#include "tb/common/instance_check.h"
+#include "tb/common/instance_preset.h"
 #include "tb/ls_conventional/readout_ports.h"
 #include "tb/ls_conventional/verilog_parameters.h"
 
@@ -46,14 +46,17 @@ Schedule schedule(const LsConventionalConfig& cfg) {
   return s;
 }
 
-// The verilated Vls_conventional_readout must be the preset's readout: verilog_parameters() of
-// its config are what rtl/CMakeLists.txt verilated (tb/common/instance_check.h).
+// The verilated Vls_conventional_readout must be the preset's readout: the Verilog parameters of
+// its config must be those of the instance preset it was verilated from
+// (rtl/ls_conventional/instances/full.toml).
 void check_instance(const LsConventionalConfig& cfg) {
-  try {
-    tb::check_instance_parameters("Vls_conventional_readout", tb::verilog_parameters(cfg, "bench"));
-  } catch (const std::logic_error& e) {
-    throw std::invalid_argument(std::string("bench: the preset differs from the verilated readout: ") + e.what());
-  }
+  const ParamSet built = tb::instance_preset("Vls_conventional_readout");
+  const tb::VerilogParameters want = tb::verilog_parameters(cfg, "bench");
+  const tb::VerilogParameters have = tb::verilog_parameters(ls_conventional_from_params(built), built.origin());
+  if (want != have)
+    throw std::invalid_argument("bench: the preset's readout (" + tb::parameters_text(want) +
+                                ") differs from the verilated one (" + tb::parameters_text(have) + ", " +
+                                built.origin() + ")");
 }
 
 class ReadoutTop : public sc_core::sc_module {

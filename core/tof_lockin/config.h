@@ -4,6 +4,8 @@
 // floating diffusions -> column ADC -> range reconstruction (eq. 2.25 / 4.9) -> frame averaging.
 // The same structs feed the golden model, the SystemC kernels and the RTL parameters. Names carry
 // a Lockin prefix where a plain name (PixelConfig) is already taken by another sensor.
+#include <cmath>
+
 #include "core/params.h"
 
 namespace rangesim {
@@ -87,5 +89,14 @@ struct TofLockinConfig {
 // Builds the config from a validated preset; throws UserError naming file and keys on cross-key
 // inconsistencies (rise time longer than the pulse, grid min > max, T0 off the gate clock grid).
 TofLockinConfig tof_lockin_from_params(const ParamSet& params);
+
+// Derived integers, computed here only: T0 and the repetition period T_rep = T0 / duty in
+// gate-clock cycles (rounded; the config and the gate generator kernel require whole numbers).
+inline long long gate_t0_cycles(const TofLockinConfig& c) {
+  return std::llround(c.source.pulse_width_s * c.gates.clock_Hz);
+}
+inline long long gate_period_cycles(const TofLockinConfig& c) {
+  return std::llround(c.source.pulse_width_s / c.source.duty_cycle * c.gates.clock_Hz);
+}
 
 }  // namespace rangesim

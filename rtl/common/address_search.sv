@@ -117,7 +117,7 @@ module address_search #(
   // ---- Parameter checks and assertions (simulation only) ----
   // Icarus 11 rejects labelled immediate assertions, so it gets the same checks as plain ifs.
 `ifndef SYNTHESIS
-  // Bad parameters: Verilator stops at elaboration (so `cmake` fails), Icarus at time 0.
+  // Bad parameters: Verilator stops at elaboration (so the build fails), Icarus at time 0.
   if (SEARCH_CYCLES < 1 || COLUMNS < 1 || ADDRESS_BITS < 1 || (1 << ADDRESS_BITS) < COLUMNS)
   begin : g_bad_parameters
 `ifdef VERILATOR

@@ -113,7 +113,7 @@ DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKer
   const double budget_s = (static_cast<double>(frames) + 1) * static_cast<double>(dut.frame_cycles()) * period_s;
   sc_core::sc_trace_file* tf = nullptr;
   if (!vcd_base.empty()) {
-    sc_core::sc_start(sc_core::SC_ZERO_TIME);  // tracing only after the zero-time start (CONVENTIONS.md)
+    sc_core::sc_start(sc_core::SC_ZERO_TIME);  // tracing only after the zero-time start
     tf = sc_core::sc_create_vcd_trace_file(vcd_base.c_str());
     tf->set_time_unit(1, sc_core::SC_NS);
     dut.trace(tf);

@@ -23,8 +23,8 @@ LockinGateGeneratorKernel::LockinGateGeneratorKernel(const TofLockinConfig& cfg)
   const double fg = cfg.gates.clock_Hz;
   const double t0 = cfg.source.pulse_width_s * fg;
   const double period = cfg.source.pulse_width_s / cfg.source.duty_cycle * fg;
-  t0_ = std::llround(t0);
-  period_ = std::llround(period);
+  t0_ = gate_t0_cycles(cfg);
+  period_ = gate_period_cycles(cfg);
   n_acc_ = cfg.gates.accumulations_per_frame;
   if (t0_ < 1 || std::fabs(t0 - static_cast<double>(t0_)) > 1e-6 * std::max(1.0, t0))
     throw UserError(

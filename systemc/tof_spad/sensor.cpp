@@ -93,7 +93,7 @@ SystemcRun run_tof_spad_systemc(const TofSpadKernel& kernel, const PixelSelectio
   SystemcRun r;
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
   sc_core::sc_trace_file* tf = nullptr;
-  if (!vcd_base.empty()) {  // tracing only after the zero-time start (CONVENTIONS.md)
+  if (!vcd_base.empty()) {  // tracing only after the zero-time start
     tf = sc_core::sc_create_vcd_trace_file(vcd_base.c_str());
     sc_core::sc_trace(tf, row, "row"), sc_core::sc_trace(tf, phase, "phase");
     sc_core::sc_trace(tf, valid, "word_valid"), sc_core::sc_trace(tf, word, "word");

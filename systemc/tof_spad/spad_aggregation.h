@@ -1,5 +1,5 @@
 #pragma once
-// Aggregated laser cycles of one tof-spad TDC group (issue 6; docs/tof-spad-clock.md
+// Aggregated laser cycles of one tof-spad TDC group (docs/tof-spad-clock.md
 // "Aggregation"): the L laser cycles of a row integration drawn at once from the exact
 // distribution of their sum, where successive cycles are independent and identically
 // distributed (up to the first and last two cycles, drawn apart).
@@ -40,7 +40,7 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
                                     const std::vector<PixelRates>& pixels, long long laser_cycles, std::uint64_t seed,
                                     std::uint64_t frame, int row, int first_column);
 
-// Background-only groups (issue 6 "sparse pixels"; docs/tof-spad-clock.md "Background-only
+// Background-only groups ("sparse pixels"; docs/tof-spad-clock.md "Background-only
 // pixels"): no pixel of the group receives an echo (signal 0) and all have the same background,
 // so every laser cycle of every such group has the same arrival rate and these groups form one
 // class. Where pure-background cycles are independent (empty blocker: no afterpulse, dead time 0,

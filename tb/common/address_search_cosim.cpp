@@ -20,7 +20,9 @@
 #include "Vaddress_search.h"
 #include "Vaddress_search_small.h"
 #include "core/ls_conventional/config.h"
-#include "rtl/address_search_params.h"
+#include "core/ls_conventional/config.h"
+#include "tb/common/cosim_coverage.h"
+#include "tb/common/instance_preset.h"
 #include "systemc/common/address_search.h"
 #include "tb/common/cosim_target.h"  // kKeptMismatches
 
@@ -125,8 +127,8 @@ class CosimTop : public sc_core::sc_module {
   rangesim::systemc::AddressSearch model;
 
   SC_HAS_PROCESS(CosimTop);
-  CosimTop(sc_core::sc_module_name name, const AddressSearchCosimOptions& options,
-           const rangesim::rtl::AddressSearchRtlParams& params, sc_core::sc_time period)
+  CosimTop(sc_core::sc_module_name name, const AddressSearchCosimOptions& options, const AddressSearchShape& params,
+           sc_core::sc_time period)
       : sc_core::sc_module(name),
         clk("clk", period),
         model("model", AddressSearchConfig{params.columns, params.address_bits, 2}, params.search_cycles),
@@ -287,7 +289,7 @@ class CosimTop : public sc_core::sc_module {
   }
 
   AddressSearchCosimOptions options_;
-  rangesim::rtl::AddressSearchRtlParams params_;
+  AddressSearchShape params_;
   std::mt19937_64 rng_;        // stimulus
   int operations_ = 0;         // frames * rows_per_frame
   long long cycle_ = 0;        // cycles seen by the monitor
@@ -297,8 +299,7 @@ class CosimTop : public sc_core::sc_module {
 };
 
 template <class VTop>
-AddressSearchCosimReport run(const AddressSearchCosimOptions& options,
-                             const rangesim::rtl::AddressSearchRtlParams& params) {
+AddressSearchCosimReport run(const AddressSearchCosimOptions& options, const AddressSearchShape& params) {
   VerilatedContext* ctx = Verilated::defaultContextp();
   ctx->randReset(2);  // random initial state: the reset must clear everything that matters
   ctx->randSeed(static_cast<int>(options.seed & 0x7fffffff));
@@ -331,6 +332,7 @@ AddressSearchCosimReport run(const AddressSearchCosimOptions& options,
   sc_core::sc_start(period * static_cast<double>(limit));  // bounded by the cycle limit
   if (rtl_tf) rtl_tf->close();
   if (sc_tf) sc_core::sc_close_vcd_trace_file(sc_tf);
+  capture_rtl_coverage();  // while the model is alive (tb/common/cosim_coverage.h)
 
   top.finish_report();
   AddressSearchCosimReport r = top.report();
@@ -341,12 +343,18 @@ AddressSearchCosimReport run(const AddressSearchCosimOptions& options,
 
 }  // namespace
 
+AddressSearchShape address_search_shape(AddressSearchInstance instance) {
+  const char* prefix = instance == AddressSearchInstance::Default ? "Vaddress_search" : "Vaddress_search_small";
+  const LsConventionalConfig c = ls_conventional_from_params(instance_preset(prefix));
+  return {prefix, c.search.columns, c.search.address_bits, c.timing.search_cycles};
+}
+
 AddressSearchCosimReport run_address_search_cosim(const AddressSearchCosimOptions& options) {
   switch (options.instance) {
-    case AddressSearchInstance::Default: return run<Vaddress_search>(options, rangesim::rtl::kAddressSearchDefault);
+    case AddressSearchInstance::Default: return run<Vaddress_search>(options, address_search_shape(options.instance));
     case AddressSearchInstance::Small: break;
   }
-  return run<Vaddress_search_small>(options, rangesim::rtl::kAddressSearchSmall);
+  return run<Vaddress_search_small>(options, address_search_shape(options.instance));
 }
 
 }  // namespace rangesim::tb

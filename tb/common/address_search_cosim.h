@@ -10,9 +10,18 @@
 namespace rangesim::tb {
 
 enum class AddressSearchInstance {
-  Default,  // Vaddress_search: COLUMNS 375, ADDRESS_BITS 9 (the ls-conventional preset)
-  Small,    // Vaddress_search_small: COLUMNS 16, ADDRESS_BITS 4 (corner cases come often)
+  Default,  // Vaddress_search: rtl/ls_conventional/instances/full.toml (375 columns, 9-bit addresses)
+  Small,    // Vaddress_search_small: rtl/ls_conventional/instances/small.toml (16 columns: corner cases come often)
 };
+
+// The sizes an instance was verilated with: those of its instance preset.
+struct AddressSearchShape {
+  const char* prefix;  // verilated class name
+  int columns;         // COLUMNS
+  int address_bits;    // ADDRESS_BITS
+  int search_cycles;   // SEARCH_CYCLES
+};
+AddressSearchShape address_search_shape(AddressSearchInstance instance);
 
 struct AddressSearchCosimOptions {
   AddressSearchInstance instance = AddressSearchInstance::Small;

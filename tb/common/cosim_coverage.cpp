@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -38,19 +39,28 @@ RtlCoverage parse_coverage_file(const std::string& path) {
   return cov;
 }
 
-RtlCoverage rtl_coverage(const std::string& path) {
-  std::string file = path;
-  if (file.empty()) {
-    char tmpl[] = "/tmp/rangesim_coverage_XXXXXX";
-    const int fd = mkstemp(tmpl);
-    if (fd < 0) throw std::runtime_error("cannot create a temporary coverage file");
-    close(fd);
-    file = tmpl;
-  }
-  Verilated::defaultContextp()->coveragep()->write(file.c_str());
-  RtlCoverage cov = parse_coverage_file(file);
-  if (path.empty()) std::remove(file.c_str());
+namespace {
+
+std::optional<RtlCoverage>& captured() {
+  static std::optional<RtlCoverage> c;
+  return c;
+}
+
+RtlCoverage read_live_counters() {
+  char tmpl[] = "/tmp/rangesim_coverage_XXXXXX";
+  const int fd = mkstemp(tmpl);
+  if (fd < 0) throw std::runtime_error("cannot create a temporary coverage file");
+  close(fd);
+  Verilated::defaultContextp()->coveragep()->write(tmpl);
+  RtlCoverage cov = parse_coverage_file(tmpl);
+  std::remove(tmpl);
   return cov;
 }
+
+}  // namespace
+
+void capture_rtl_coverage() { captured() = read_live_counters(); }
+
+RtlCoverage rtl_coverage() { return captured() ? *captured() : read_live_counters(); }
 
 }  // namespace rangesim::tb

@@ -1,6 +1,6 @@
 #pragma once
 // RTL coverage of the verilated models constructed in this process (those verilated with
-// --coverage: the small co-simulation instances, see rtl/CMakeLists.txt). Verilator's counters
+// --coverage: the small co-simulation instances, see rtl/<sensor>/instances.cmake). Verilator's counters
 // are written to a coverage data file and the percentages computed here from its points:
 //   line   = points of the pages v_line and v_branch (statement blocks and if/case branches)
 //   toggle = points of the page v_toggle (each bit of each signal, both directions)
@@ -21,7 +21,13 @@ struct RtlCoverage {
 // cannot be read.
 RtlCoverage parse_coverage_file(const std::string& path);
 
-// Writes this process's counters to `path` ("" = a temporary file, removed again) and parses them.
-RtlCoverage rtl_coverage(const std::string& path = "");
+// Reads the counters of the models alive now and keeps them for rtl_coverage(). The counters live
+// in the models: read after a model is destroyed they are freed memory, and the numbers change
+// with anything that moves the heap. Every co-simulation runner calls it before its top goes
+// (tb/common/cosim_run.h).
+void capture_rtl_coverage();
+
+// The counters captured last (or, if none were, those of the models alive now).
+RtlCoverage rtl_coverage();
 
 }  // namespace rangesim::tb

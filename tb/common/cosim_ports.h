@@ -1,6 +1,6 @@
 #pragma once
 // Reading and writing verilated SystemC ports whatever their C++ type: Verilator picks bool
-// (1 bit), uint32_t (2..32), uint64_t (33..64) or sc_bv<N> (wider) by width (CONVENTIONS.md 7),
+// (1 bit), uint32_t (2..32), uint64_t (33..64) or sc_bv<N> (wider) by width,
 // so harnesses that serve several instances of one module go through these overloads.
 #include <cstdint>
 #include <string>

@@ -1,12 +1,15 @@
 #pragma once
 // The one way every co-simulation top runs (the harnesses of tb/<sensor>/): elaborate, then open
 // the RTL's VCD (Verilator traces only an elaborated model), run a bounded number of clock
-// periods, close the trace. The top exposes its verilated model as `rtl`.
+// periods, close the trace, read the RTL's coverage counters while the model is alive. The top
+// exposes its verilated model as `rtl`.
 #include <verilated_vcd_sc.h>
 
 #include <memory>
 #include <string>
 #include <systemc>
+
+#include "tb/common/cosim_coverage.h"
 
 namespace rangesim::tb {
 
@@ -21,6 +24,7 @@ void run_cosim_top(Top& top, const std::string& trace_path, sc_core::sc_time per
   }
   sc_core::sc_start(period * static_cast<double>(cycles));  // the bound: each top also stops itself
   if (tf) tf->close();
+  capture_rtl_coverage();
 }
 
 }  // namespace rangesim::tb

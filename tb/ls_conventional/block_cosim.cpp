@@ -22,7 +22,7 @@
 #include "systemc/ls_conventional/multisampling_sequencer_kernel.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
-#include "tb/common/instance_check.h"
+#include "tb/common/instance_preset.h"
 #include "tb/common/verilog_parameters.h"
 #include "tb/ls_conventional/cosim.h"
 #include "tb/ls_conventional/verilog_parameters.h"
@@ -32,19 +32,11 @@ namespace {
 
 constexpr int kResetEdges = 3;
 
-// The blocks of the small readout instance: its config (tb/ls_conventional/cosim.cpp).
+// The blocks' instances share one instance preset (rtl/ls_conventional/instances/small.toml), so
+// both kernels run its configuration.
 const LsConventionalConfig& small_config() {
-  static const LsConventionalConfig c = ls_conventional_instance_config(false);
+  static const LsConventionalConfig c = ls_conventional_from_params(instance_preset("Vcentre_processor_small"));
   return c;
-}
-
-// verilog_parameters() of the small readout restricted to those a block takes; checked against
-// the block's verilated instance.
-void check_block_instance(const std::string& prefix, const std::vector<std::string>& names) {
-  VerilogParameters p;
-  for (const auto& x : verilog_parameters(small_config(), prefix))
-    if (std::find(names.begin(), names.end(), x.name) != names.end()) p.push_back(x);
-  check_instance_parameters(prefix, p);
 }
 
 void add(CosimReport& r, CosimMismatch m) { CosimScoreboard(r).add(std::move(m)); }
@@ -290,14 +282,7 @@ CosimReport run_block(const CosimOptions& o) {
 
 }  // namespace
 
-CosimReport run_centre_processor_cosim(const CosimOptions& options) {
-  check_block_instance("Vcentre_processor_small", {"ADDRESS_BITS", "SAMPLINGS"});
-  return run_block<CentreTop>(options);
-}
-CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options) {
-  check_block_instance("Vmultisampling_sequencer_small",
-                       {"SAMPLINGS", "RESET_CYCLES", "LATCH_CYCLES", "SEARCH_CYCLES", "ADDRESS_BITS", "OUTPUT_CYCLES"});
-  return run_block<SequencerTop>(options);
-}
+CosimReport run_centre_processor_cosim(const CosimOptions& options) { return run_block<CentreTop>(options); }
+CosimReport run_multisampling_sequencer_cosim(const CosimOptions& options) { return run_block<SequencerTop>(options); }
 
 }  // namespace rangesim::tb

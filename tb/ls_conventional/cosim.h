@@ -61,8 +61,8 @@ inline LsConventionalCosimOptions ls_conventional_options(const CosimOptions& o,
 // The built-in instances: Vls_conventional_readout_small, or with full_size Vls_conventional_readout.
 LsConventionalCosimResult run_ls_conventional_cosim(const LsConventionalCosimOptions& options);
 
-// The configs of the built-in instances (rtl/CMakeLists.txt verilates them with
-// verilog_parameters() of these): the small one, or the full-size 375 x 365 one.
+// The configs of the built-in instances, from the instance presets they were verilated from
+// (rtl/ls_conventional/instances/): the small one, or the full-size 375 x 365 one.
 LsConventionalConfig ls_conventional_instance_config(bool full_size);
 
 }  // namespace rangesim::tb

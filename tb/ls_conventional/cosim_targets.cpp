@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <string>
 
-#include "rtl/address_search_params.h"
 #include "tb/common/address_search_cosim.h"
 #include "tb/common/cosim_target.h"
 #include "tb/ls_conventional/block_cosim.h"
@@ -31,7 +30,7 @@ CosimReport run_ls_small(const CosimOptions& o) { return run_ls(o, false); }
 CosimReport run_ls_full(const CosimOptions& o) { return run_ls(o, true); }
 
 CosimReport run_address_search(const CosimOptions& o) {
-  const auto& p = rtl::kAddressSearchSmall;
+  const AddressSearchShape p = address_search_shape(AddressSearchInstance::Small);
   AddressSearchCosimOptions ao;
   ao.instance = AddressSearchInstance::Small;
   ao.seed = o.seed;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/user_error.h"
+#include "tb/common/rtl_tops.h"
 
 namespace rangesim::tb {
 
@@ -27,6 +28,37 @@ VerilogParameters verilog_parameters(const LsConventionalConfig& c, const std::s
           {"LATCH_CYCLES", c.timing.latch_cycles},
           {"SEARCH_CYCLES", c.timing.search_cycles},
           {"OUTPUT_CYCLES", c.timing.output_cycles}};
+}
+
+}  // namespace rangesim::tb
+
+namespace rangesim::tb {
+namespace {
+
+// The readout's parameters that one of its blocks takes (the block gets them from the readout
+// when it is instantiated inside it, rtl/ls_conventional/ls_conventional_readout.sv).
+VerilogParameters subset(const ParamSet& p, std::initializer_list<const char*> names) {
+  VerilogParameters out;
+  for (const auto& x : verilog_parameters(ls_conventional_from_params(p), p.origin()))
+    for (const char* n : names)
+      if (x.name == n) out.push_back(x);
+  return out;
+}
+
+VerilogParameters readout(const ParamSet& p) { return verilog_parameters(ls_conventional_from_params(p), p.origin()); }
+VerilogParameters address_search(const ParamSet& p) { return subset(p, {"COLUMNS", "ADDRESS_BITS", "SEARCH_CYCLES"}); }
+VerilogParameters centre_processor(const ParamSet& p) { return subset(p, {"ADDRESS_BITS", "SAMPLINGS"}); }
+VerilogParameters multisampling_sequencer(const ParamSet& p) {
+  return subset(p, {"SAMPLINGS", "RESET_CYCLES", "LATCH_CYCLES", "SEARCH_CYCLES", "ADDRESS_BITS", "OUTPUT_CYCLES"});
+}
+
+}  // namespace
+
+std::vector<RtlTop> ls_conventional_rtl_tops() {
+  return {{"ls_conventional_readout", &readout},
+          {"address_search", &address_search},
+          {"centre_processor", &centre_processor},
+          {"multisampling_sequencer", &multisampling_sequencer}};
 }
 
 }  // namespace rangesim::tb

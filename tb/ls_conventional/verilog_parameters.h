@@ -1,8 +1,8 @@
 #pragma once
 // The one map from an ls-conventional config to the Verilog parameters of
-// rtl/ls_conventional/ls_conventional_readout.sv. Used for the instances verilated at run time
-// (`rangesim cosim <preset.toml>`) and to check that the built-in instances of rtl/CMakeLists.txt
-// were verilated with the configs their harness runs (tb/ls_conventional/cosim.cpp).
+// rtl/ls_conventional/ls_conventional_readout.sv and, through ls_conventional_rtl_tops()
+// (tb/common/rtl_tops.h), of its blocks. Used for the built-in instances (at build time, from
+// rtl/ls_conventional/instances/) and for a preset's own (`rangesim cosim <preset.toml>`).
 #include <string>
 
 #include "core/ls_conventional/config.h"

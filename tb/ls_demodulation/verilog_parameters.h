@@ -1,9 +1,9 @@
 #pragma once
 // The one map from an ls-demodulation config to the Verilog parameters of
 // rtl/ls_demodulation/ls_demodulation_sequencer.sv (COLUMNS, ADDRESS_BITS, SEARCH_CYCLES; the
-// counter widths are the RTL's and bound its run-time inputs). Used for the instances verilated
-// at run time (`rangesim cosim <preset.toml>`); rtl/CMakeLists.txt verilates the built-in
-// Vls_demodulation_sequencer with those of the default LsDemodulationConfig.
+// counter widths are the RTL's and bound its run-time inputs). Used for the built-in instance (at
+// build time, from rtl/ls_demodulation/instances/readout.toml) and for a preset's own
+// (`rangesim cosim <preset.toml>`).
 #include <string>
 
 #include "core/ls_demodulation/config.h"

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/user_error.h"
+#include "tb/common/rtl_tops.h"
 
 namespace rangesim::tb {
 
@@ -36,6 +37,15 @@ VerilogParameters verilog_parameters(const TofSpadConfig& cfg, const std::string
           {"COUNT_BITS", s.count_bits},
           {"ROW_BITS", s.row_bits},
           {"LASER_BITS", s.laser_bits}};
+}
+
+}  // namespace rangesim::tb
+
+namespace rangesim::tb {
+
+std::vector<RtlTop> tof_spad_rtl_tops() {
+  return {{"tof_spad_sequencer",
+           [](const ParamSet& p) { return verilog_parameters(tof_spad_from_params(p), p.origin()); }}};
 }
 
 }  // namespace rangesim::tb

@@ -3,9 +3,9 @@
 // (tdc.sv + tdc_histogram.sv): the group's width comes from tdc.columns_per_tdc, the code range
 // from tdc.bits; the remaining widths are the RTL's (they bound its run-time inputs: rows per
 // run, laser cycles per row, interpolator and bin-correction inputs, saturating bin counters).
-// Used for the instances verilated at run time (`rangesim cosim <preset.toml>`) and by the
-// harness (tb/tof_spad/cosim_harness.h) for its field widths; rtl/CMakeLists.txt verilates the
-// built-in Vtof_spad_sequencer with the widths of the default config.
+// Used for the built-in instance (at build time, from rtl/tof_spad/instances/tdc_group.toml), for a
+// preset's own (`rangesim cosim <preset.toml>`) and by the harness (tb/tof_spad/cosim_harness.h)
+// for its field widths.
 #include <string>
 
 #include "core/tof_spad/config.h"

@@ -90,7 +90,7 @@ TEST_P(PresetTest, SchemaIsWellFormed) {
         EXPECT_LT(spec.min, spec.max);
       }
     }
-    // The unit is the key's suffix (SI units in key names, CONVENTIONS.md).
+    // The unit is the key's suffix (SI units in key names).
     if (!spec.unit.empty()) {
       EXPECT_TRUE(ends_with(lower(spec.key), "_" + lower(spec.unit))) << "unit " << spec.unit;
     }

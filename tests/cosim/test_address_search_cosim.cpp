@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/ls_conventional/config.h"
-#include "rtl/address_search_params.h"
+#include "core/preset.h"
 #include "tb/common/address_search_cosim.h"
 
 using rangesim::tb::AddressSearchCosimOptions;
@@ -46,15 +46,24 @@ void expect_clean(const AddressSearchCosimReport& r, int operations) {
 
 }  // namespace
 
-// The preset's instance must be the one the config structs describe (one source of truth).
-TEST(AddressSearchRtl, DefaultInstanceMatchesConfigDefaults) {
-  const rangesim::AddressSearchConfig search;
-  const rangesim::FrameTimingConfig timing;
-  EXPECT_EQ(rangesim::rtl::kAddressSearchDefault.columns, search.columns);
-  EXPECT_EQ(rangesim::rtl::kAddressSearchDefault.address_bits, search.address_bits);
-  EXPECT_EQ(rangesim::rtl::kAddressSearchDefault.address_bits, timing.address_bits);
-  EXPECT_EQ(rangesim::rtl::kAddressSearchDefault.search_cycles, timing.search_cycles);
-  EXPECT_EQ(search.addresses_per_sampling, timing.addresses_per_sampling);
+// The full-size instance is the chip: its sizes are those of presets/ls-conventional.toml (its
+// instance preset inherits them), and the small one is what rtl/ls_conventional/instances/small.toml
+// says.
+TEST(AddressSearchRtl, InstancesHaveTheirPresetsSizes) {
+  const rangesim::LsConventionalConfig chip =
+      rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
+  const rangesim::tb::AddressSearchShape full =
+      rangesim::tb::address_search_shape(rangesim::tb::AddressSearchInstance::Default);
+  EXPECT_STREQ(full.prefix, "Vaddress_search");
+  EXPECT_EQ(full.columns, chip.search.columns);
+  EXPECT_EQ(full.columns, 375);
+  EXPECT_EQ(full.address_bits, chip.search.address_bits);
+  EXPECT_EQ(full.search_cycles, chip.timing.search_cycles);
+  const rangesim::tb::AddressSearchShape small =
+      rangesim::tb::address_search_shape(rangesim::tb::AddressSearchInstance::Small);
+  EXPECT_EQ(small.columns, 16);
+  EXPECT_EQ(small.address_bits, 4);
+  EXPECT_EQ(small.search_cycles, 2);
 }
 
 TEST(AddressSearchCosim, SmallInstance500RowsMatch) {

@@ -3,6 +3,8 @@
 // RTL cannot take (UserError naming the key).
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/ls_conventional/config.h"
@@ -10,8 +12,12 @@
 #include "core/preset.h"
 #include "core/tof_spad/config.h"
 #include "core/user_error.h"
+#include "rtl/instance_presets.h"
+#include "tb/common/instance_preset.h"
+#include "tb/common/rtl_tops.h"
 #include "tb/ls_conventional/verilog_parameters.h"
 #include "tb/ls_demodulation/verilog_parameters.h"
+#include "tb/tof_lockin/verilog_parameters.h"
 #include "tb/tof_spad/verilog_parameters.h"
 
 namespace rangesim::tb {
@@ -62,6 +68,64 @@ TEST(VerilogParameters, ConfigsTheRtlCannotTakeNameTheKey) {
   LsDemodulationConfig demod;
   demod.readout.row_cycles = 15;  // 1 + 2 x 7 bits: no cycle left for the search
   EXPECT_NE(user_error_of([&] { verilog_parameters(demod, "p.toml"); }).find("readout.row_cycles = 15"),
+            std::string::npos);
+}
+
+// Every built-in instance was verilated with the Verilog parameters its instance preset maps to:
+// the .params.f the build wrote (rtl/CMakeLists.txt) holds exactly rtl_top_parameters() of the
+// preset the harness runs (tb/common/instance_preset.h).
+TEST(VerilogParameters, BuiltInInstancesAreTheirPresets) {
+  const std::pair<const char*, const char*> tops[] = {
+      {"Vls_conventional_readout_small", "ls_conventional_readout"},
+      {"Vls_conventional_readout", "ls_conventional_readout"},
+      {"Vcentre_processor_small", "centre_processor"},
+      {"Vmultisampling_sequencer_small", "multisampling_sequencer"},
+      {"Vaddress_search_small", "address_search"},
+      {"Vaddress_search", "address_search"},
+      {"Vls_demodulation_sequencer", "ls_demodulation_sequencer"},
+      {"Vtof_spad_sequencer", "tof_spad_sequencer"},
+      {"Vlockin_gate_generator", "lockin_gate_generator"},
+      {"Vcolumn_adc", "column_adc"},
+      {"Vtof_lockin_sequencer", "tof_lockin_sequencer"},
+  };
+  EXPECT_EQ(std::size(rtl::kInstancePresets), std::size(tops));
+  for (const auto& [prefix, top] : tops) {
+    std::ifstream in(std::string(RANGESIM_RTL_BINARY_DIR) + "/" + prefix + "/" + prefix + ".params.f");
+    ASSERT_TRUE(in) << prefix;
+    std::string built, line;
+    while (std::getline(in, line))
+      if (line.rfind("-G", 0) == 0) built += (built.empty() ? "" : " ") + line.substr(2);
+    EXPECT_EQ(built, parameters_text(rtl_top_parameters(instance_preset(prefix), top))) << prefix;
+  }
+  // The small readout is what its preset says, not the chip.
+  EXPECT_EQ(
+      parameters_text(rtl_top_parameters(instance_preset("Vls_conventional_readout_small"), "ls_conventional_readout")),
+      "ROWS=8 COLUMNS=16 ADDRESS_BITS=4 SAMPLINGS=4 RESET_CYCLES=3 LATCH_CYCLES=2 SEARCH_CYCLES=2 "
+      "OUTPUT_CYCLES=5");
+}
+
+TEST(VerilogParameters, TopsOfAnotherSensorAreRefused) {
+  const ParamSet spad = load_preset("tof-spad");
+  const std::string e = user_error_of([&] { rtl_top_parameters(spad, "ls_conventional_readout"); });
+  EXPECT_NE(e.find("has no RTL top 'ls_conventional_readout'"), std::string::npos) << e;
+  EXPECT_NE(e.find("tof_spad_sequencer"), std::string::npos) << e;
+}
+
+// tof-lockin's timing is a run-time input of its RTL: a preset must fit the counter widths.
+TEST(VerilogParameters, TofLockinTimingMustFitTheCounters) {
+  TofLockinConfig c = tof_lockin_from_params(load_preset("tof-lockin"));
+  EXPECT_EQ(tof_lockin_rtl_shape(c, "p.toml").cycle_bits, 16);
+  c.gates.accumulations_per_frame = 1LL << 20;
+  EXPECT_NE(user_error_of([&] { tof_lockin_rtl_shape(c, "p.toml"); })
+                .find("p.toml: gates.accumulations_per_frame gives N_acc = 1048576: the tof-lockin readout RTL counts "
+                      "it in 20 bits; allowed: 0..1048575"),
+            std::string::npos);
+  c = tof_lockin_from_params(load_preset("tof-lockin"));
+  c.readout.adc_bits = 14;
+  EXPECT_NE(user_error_of([&] { tof_lockin_rtl_shape(c, "p.toml"); }).find("readout.adc_bits = 14"), std::string::npos);
+  c = tof_lockin_from_params(load_preset("tof-lockin"));
+  c.source.duty_cycle = 1e-4;  // T_rep = 10^5 gate-clock cycles
+  EXPECT_NE(user_error_of([&] { tof_lockin_rtl_shape(c, "p.toml"); }).find("T_rep in gate-clock cycles = 100000"),
             std::string::npos);
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// SystemC allows one elaboration per process (CONVENTIONS.md #5). ctest runs every test in its
+// SystemC allows one elaboration per process. ctest runs every test in its
 // own process (gtest_discover_tests); run by hand, a second elaborating test in the same process
 // skips itself instead of failing. One flag for the whole binary (inline function, C++17).
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // GoogleTest entry point for binaries that link SystemC: libsystemc owns main() and calls
-// sc_main, so gtest_main cannot be used (CONVENTIONS.md #4). Each test that elaborates runs in
+// sc_main, so gtest_main cannot be used. Each test that elaborates runs in
 // its own process (gtest_discover_tests), since SystemC allows one elaboration per process.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,7 @@
 // Consumer of the installed rangesim package: golden frame timing, the SystemC-view kernel and
 // module, and (if packaged) the verilated RTL, in one sc_main. Prints "rangesim consumer OK".
 #include <cstdio>
+#include <string>
 #include <systemc>
 
 #include "core/ls_conventional/config.h"
@@ -9,7 +10,7 @@
 #include "systemc/common/address_search_kernel.h"
 #if CONSUMER_WITH_RTL
 #include "Vaddress_search_small.h"
-#include "rtl/address_search_params.h"
+#include "rtl/instance_presets.h"
 #endif
 
 int sc_main(int, char*[]) {
@@ -56,8 +57,8 @@ int sc_main(int, char*[]) {
   rtl.addr_valid_o(o[7]);
   rtl.addr_bit_o(o[8]);
   rtl.done_o(o[9]);
-  std::printf("RTL instance %s, %d columns\n", rangesim::rtl::kAddressSearchSmall.prefix,
-              rangesim::rtl::kAddressSearchSmall.columns);
+  for (const auto& i : rangesim::rtl::kInstancePresets)
+    if (std::string(i.prefix) == "Vaddress_search_small") std::printf("RTL instance %s from %s\n", i.prefix, i.file);
 #endif
   sc_core::sc_start(50, sc_core::SC_NS);
   ok = ok && sc_core::sc_report_handler::get_count(sc_core::SC_ERROR) == 0 && !o[0].read();

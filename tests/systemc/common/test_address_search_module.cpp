@@ -110,7 +110,7 @@ TEST(AddressSearchModule, WrongRowWidthIsAnScError) {
   REQUIRE_FRESH_ELABORATION();
   Bench bench("bench", AddressSearchConfig{16, 4, 2});
   bench.rows.push_back(rs::ActivationRow(15));  // one column short
-  // SC_REPORT_ERROR in a process comes out of sc_start as an exception (CONVENTIONS.md #8).
+  // SC_REPORT_ERROR in a process comes out of sc_start as an exception.
   EXPECT_THROW(sc_core::sc_start(1, sc_core::SC_US), sc_core::sc_report);
   EXPECT_EQ(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR), 1);
 }
