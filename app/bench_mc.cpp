@@ -83,7 +83,7 @@ McBenchFigures measure_mc_bench(bool quick) {
   // The bare loop: per point and trial, the same number of pixels (the sweep's count), each with
   // its own keyed stream, one kTC and one read normal (one pair) and N Poisson draws of the pixel's
   // mean per sampling interval (golden row model at a spot position drawn per trial), with the
-  // pixel array's own samplers (systemc/poisson_sampler.h).
+  // pixel array's own samplers (systemc/common/poisson_sampler.h).
   const int N = cfg.multisampling.samplings;
   long long drawn = 0;
   double sink = 0;

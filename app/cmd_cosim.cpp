@@ -1,4 +1,4 @@
-// `rangesim cosim`: runs the co-simulation targets of tb/cosim_targets.cpp and reports what their
+// `rangesim cosim`: runs the co-simulation targets of tb/common/cosim_targets.cpp and reports what their
 // scoreboards compared, the mismatches with their context and the RTL coverage.
 //
 // SystemC elaborates once per process, so `cosim all` runs each target in a child process (this

@@ -97,7 +97,7 @@ struct BenchOptions {
 // 0 when every identity check inside the bench passed (speed targets are reported, not
 // enforced), 1 when one failed; throws UserError for an unusable --out.
 int run_bench(const BenchOptions& opt);
-// `rangesim cosim` (app/cmd_cosim.cpp): RTL co-simulation targets of tb/cosim_targets.cpp.
+// `rangesim cosim` (app/cmd_cosim.cpp): RTL co-simulation targets of tb/common/cosim_targets.cpp.
 inline constexpr int kExitCosimMismatch = 4;  // the run completed and found mismatches
 struct CosimCommandOptions {
   std::string target;                        // sensor id, block name, "all" or a preset file ("" with --list)

@@ -5,7 +5,7 @@
 // builds its configuration from a validated preset (every derived integer computed there, every
 // cross-key check made there). The analytic, clock-level and co-simulation parts live in the
 // sensor's folders of golden/, systemc/ and tb/, each with a registry of its own keyed by the same
-// id (golden/common/golden_model.h, systemc/common/clock_model.h, tb/common/cosim_target.h).
+// id (golden/common/evaluate_sensor.h, systemc/common/simulate_entry.h, tb/common/cosim_target.h).
 // The shipped sensors come from core/sensor_list.h; register_sensor() adds more at run time
 // (tests/core/test_fifth_sensor.cpp registers one).
 #include <string>

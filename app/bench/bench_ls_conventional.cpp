@@ -283,7 +283,7 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
     mj["mismatches"] = rj["mismatches"];
     if (!rj["first_mismatch"].get<std::string>().empty()) mj["first_mismatch"] = rj["first_mismatch"];
     mj["rtl"] =
-        "rtl/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, searches, centres";
+        "rtl/ls_conventional/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, searches, centres";
     out["model_vs_rtl"] = mj;
   }
 #endif

@@ -1,5 +1,5 @@
 #pragma once
-// The verilated RTL of the whole ls-conventional readout (rtl/ls_conventional_readout.sv,
+// The verilated RTL of the whole ls-conventional readout (rtl/ls_conventional/ls_conventional_readout.sv,
 // instance Vls_conventional_readout: 365 x 375, the preset): its own frame sequencer, per-row
 // comparator latches, address searches and centre processors. Driven under SystemC with nothing
 // but reset and the comparator decisions cmp_i that the model's pixel array produced for the

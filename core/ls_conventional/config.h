@@ -51,7 +51,7 @@ struct AddressSearchConfig {
   int addresses_per_sampling = 2;  // left and right edge of the activated run
 };
 
-// Clock schedule of one frame access (see golden/frame_timing.h for the formula).
+// Clock schedule of one frame access (see golden/common/frame_timing.h for the formula).
 struct FrameTimingConfig {
   double clock_Hz = 39.45e6;
   int reset_cycles = 4;

@@ -2,7 +2,7 @@
 // Data flow: pulsed LED (T0, 10% duty) -> photogate PG -> TX1/TX2 to FD1/FD2 in PHASE1/PHASE2,
 // TXD drains in PHASE3 (eq. 2.17-2.19), repeated N times per frame -> source followers ->
 // column ADC (eq. 4.9) -> optional ambient-frame subtraction -> L = c T0 (V2 - V_off) /
-// (2 (V1 + V2 - 2 V_off)) (eq. 2.25) -> frame averaging. Config struct: core/tof_lockin_config.h.
+// (2 (V1 + V2 - 2 V_off)) (eq. 2.25) -> frame averaging. Config struct: core/tof_lockin/config.h.
 #include "core/tof_lockin/config.h"
 #include "core/schemas.h"
 #include "core/sensor_registry.h"

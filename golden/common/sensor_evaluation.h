@@ -1,8 +1,8 @@
 #pragma once
 // Sensor-independent result of an analytic evaluation over a signal x background grid (thesis
 // chapters 3-4), which the `rangesim evaluate` and `rangesim table` commands print, plot and
-// compare with Table 5.1. Each sensor's golden model fills one (ls-conventional through
-// golden/ls_conventional_adapter.h; the others in golden/<sensor>/).
+// compare with Table 5.1. Each sensor's golden model fills one
+// (golden/<sensor>/model.cpp).
 #include <limits>
 #include <string>
 #include <utility>

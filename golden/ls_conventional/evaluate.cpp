@@ -1,4 +1,4 @@
-// ls-conventional's evaluation (golden/ls_conventional_eval.h) as a sensor-independent
+// ls-conventional's evaluation (golden/ls_conventional/evaluation.h) as a sensor-independent
 // EvalResult, plus its published figures.
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Frame timing of ls-demodulation from the clock schedule of its clock-level model
-// (systemc/ls_demodulation/demod_sensor_kernel.h, docs/ls-demodulation-clock.md).
+// (systemc/ls_demodulation/sensor_kernel.h, docs/ls-demodulation-clock.md).
 //
 // One frame (one sheet-beam position) is, for each of the K = evaluation.detections decisions:
 //   integration  W = N x clock / f0 cycles (N = correlator.cycles periods; integrators reset at the

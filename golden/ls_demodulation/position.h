@@ -1,7 +1,7 @@
 #pragma once
 // Position estimate of the spot across a row from the comparator decisions, and its accuracy.
 //
-// Each pixel i at x_i sees the Gaussian spot (golden/spot.h) with beam-on current I_sig g(x_i - x0)
+// Each pixel i at x_i sees the Gaussian spot (golden/common/spot.h) with beam-on current I_sig g(x_i - x0)
 // and decides active with probability p_i (decision.h). The row readout reports the centre of the
 // activated run, (left + right) / 2 (the light-section readout shared with ls-conventional); no
 // active pixel is an explicit "no detection". Given the frame-common offset o the pixels are
@@ -28,7 +28,7 @@ struct DemodAccuracy {
 DemodAccuracy position_accuracy(const LsDemodulationConfig& cfg, double signal_A, double background_A, int detections,
                                 int frames_averaged);
 
-// Range change per pixel at optics.distance_m (golden/triangulation.h).
+// Range change per pixel at optics.distance_m (golden/common/triangulation.h).
 double demod_range_per_px_m(const LsDemodulationConfig& cfg);
 
 }  // namespace rangesim::golden

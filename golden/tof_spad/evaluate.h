@@ -1,6 +1,6 @@
 #pragma once
 // tof-spad evaluation over signal x background count rates (thesis 4.2.2, completed) and its
-// published figures, from a config (tests vary it) or a preset (golden/evaluate_sensor.h).
+// published figures, from a config (tests vary it) or a preset (golden/common/evaluate_sensor.h).
 #include <vector>
 
 #include "core/tof_spad/config.h"

@@ -1,7 +1,7 @@
 // address_search: row-parallel chained search with a bit-streamed column address (ls-conventional,
 // thesis [31]). One instance is the search/stream logic of ONE row; the chip has one per row and
-// starts them all with the same strobe. Views of the same block: systemc/address_search_kernel.h
-// (cycle kernel, bit- and cycle-exact to this file) and systemc/address_search.h (sc_module).
+// starts them all with the same strobe. Views of the same block: systemc/common/address_search_kernel.h
+// (cycle kernel, bit- and cycle-exact to this file) and systemc/common/address_search.h (sc_module).
 // Parameters come from rangesim::AddressSearchConfig (COLUMNS, ADDRESS_BITS) and
 // FrameTimingConfig::search_cycles (SEARCH_CYCLES).
 //
@@ -21,7 +21,7 @@
 //   k = S+2B         done_o = 1 (last stream cycle); next start_i allowed from k = S+2B+1
 //   found_o = 0:     no stream, done_o = 1 at k = S; next start_i allowed from k = S+1
 // So one sampling costs latch + S + 2B = 1 + 2 + 18 = 21 cycles at the defaults, which is what
-// golden/frame_timing.h counts (addresses_per_sampling = 2). found_o holds until the next start.
+// golden/common/frame_timing.h counts (addresses_per_sampling = 2). found_o holds until the next start.
 //
 // Reset is synchronous and active high. start_i while busy_o is a protocol error (assertion
 // a_start_while_busy); it is ignored by the logic.

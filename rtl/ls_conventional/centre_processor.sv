@@ -1,7 +1,7 @@
 // centre_processor: the row-parallel centre processor of ls-conventional (thesis [31]). One
 // instance listens to one row's address_search. Views of the same block:
-// systemc/centre_processor_kernel.h (cycle kernel, bit- and cycle-exact to this file) and
-// systemc/centre_processor.h (sc_module).
+// systemc/ls_conventional/centre_processor_kernel.h (cycle kernel, bit- and cycle-exact to this file) and
+// systemc/ls_conventional/centre_processor.h (sc_module).
 //
 // Every cycle with addr_valid_i it shifts in addr_bit_i (left address, then right, MSB first,
 // ADDRESS_BITS each); the edge that takes the last of the 2 B bits adds (left + right) to sum_q

@@ -3,8 +3,8 @@
 // latches, the chained address search (address_search) and the centre processor
 // (centre_processor). The pixel array (analog) stays outside: cmp_i carries the comparator
 // decisions of every pixel. View of the same composition in C++:
-// systemc/ls_conventional_sensor_kernel.h (and the sc_module systemc/ls_conventional_sensor.h),
-// which this file matches cycle for cycle (tb/ls_conventional_cosim.cpp checks it).
+// systemc/ls_conventional/sensor_kernel.h (and the sc_module systemc/ls_conventional/sensor.h),
+// which this file matches cycle for cycle (tb/ls_conventional/cosim.cpp checks it).
 //
 // Comparator latch of row r: act_q[r] <= act_q[r] | cmp_i[r] at the end of every latch cycle,
 // cleared in the reset phase, so an activated pixel stays activated for the frame access (the

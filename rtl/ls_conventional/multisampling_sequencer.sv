@@ -3,8 +3,8 @@
 // comparator latch strobe per sampling (the comparators decide at t_k = k T / N and the pixels
 // keep the decision), the search start of every row in the last latch cycle, the address-stream
 // phase of the rows, and the output phase. Views of the same block:
-// systemc/readout_sequencer_kernel.h (cycle kernel, whose header comment is this schedule; this
-// file is cycle-exact to it) and systemc/readout_sequencer.h (sc_module).
+// systemc/ls_conventional/multisampling_sequencer_kernel.h (cycle kernel, whose header comment is this schedule; this
+// file is cycle-exact to it) and systemc/ls_conventional/multisampling_sequencer.h (sc_module).
 //
 // Cycle c of a frame access (P = LATCH + SEARCH + 2 ADDRESS_BITS, F = RESET + N P + OUTPUT):
 //   [0, RESET)                       phase 0 reset    pix_reset_o

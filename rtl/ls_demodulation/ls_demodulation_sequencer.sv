@@ -6,7 +6,7 @@
 // starting the search on that row's comparator outputs (act_i, row_o) in its first cycle.
 // row_valid_o pulses in the cycle after a row's search ends, with found_o and the left / right
 // addresses deserialised from the stream. frames_i frames back to back.
-// Reference: systemc/ls_demodulation/demod_sensor_kernel.h (DemodSensorKernel ticking, whose
+// Reference: systemc/ls_demodulation/sensor_kernel.h (DemodSensorKernel ticking, whose
 // readout_row_cycles sets S = row_cycles - 1 - 2B) and golden/ls_demodulation/frame_timing.cpp.
 // phase_o follows DemodPhase: 0 integration, 1 decision, 2 row readout, 3 idle (Done).
 `timescale 1ns / 1ps

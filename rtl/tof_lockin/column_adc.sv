@@ -1,6 +1,6 @@
 // Column single-slope ADC controller of tof-lockin: a counter drives the ramp DAC while the
 // analog comparator (outside, in the testbench / pixel column) watches V_in against the ramp.
-// Reference: systemc/tof_lockin/lockin_kernel.h, LockinColumnAdcKernel: code = floor(V / LSB)
+// Reference: systemc/tof_lockin/column_adc_kernel.h, ColumnAdcKernel: code = floor(V / LSB)
 // clipped to 0 .. 2^bits_i - 1, conversion_cycles per conversion (>= 2^BITS for full range).
 //
 // Cycle c = 0 .. conversion_cycles_i - 1 of a conversion: ramp_o = c (ramp voltage (c+1) LSB in

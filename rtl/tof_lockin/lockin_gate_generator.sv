@@ -1,6 +1,6 @@
 // Lock-in gate timing generator of tof-lockin: PHASE1 (TX1), PHASE2 (TX2), PHASE3 (TXD) and the
 // light pulse, for `accumulations_i` repetition periods after one `start_i`.
-// Reference: systemc/tof_lockin/lockin_kernel.h, LockinGateKernel (cycle-exact to this file):
+// Reference: systemc/tof_lockin/lockin_gate_generator_kernel.h, LockinGateGeneratorKernel (cycle-exact to this file):
 // in cycle k of a period, tx1 = k < T0, tx2 = T0 <= k < 2 T0, txd = k >= 2 T0, light = tx1;
 // the period is T_rep = T0 / duty cycles (`period_cycles_i`, >= 2 T0).
 //

@@ -1,7 +1,7 @@
 // Frame sequencer of tof-lockin: per frame, N_acc gate periods (lockin_gate_generator), then
 // row by row one column-parallel ADC conversion (adc_start_o) and the row's output shift;
 // `frames_i` frames back to back (LED frame, ambient frame alternate when ambient_i is set).
-// Reference: systemc/tof_lockin/lockin_kernel.h, TofLockinSensorKernel in tick mode
+// Reference: systemc/tof_lockin/sensor_kernel.h, TofLockinSensorKernel in tick mode
 // (event_skipping = false, one step = one cycle; gate and readout cycles on one clock here)
 // and golden/tof_lockin/frame_timing.cpp. phase_o uses LockinPhase: 0 idle, 1-3 PHASE1-3,
 // 4 adc_conversion, 5 output.

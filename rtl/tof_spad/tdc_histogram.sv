@@ -1,7 +1,7 @@
 // Histogram memory of one tof-spad TDC group: one bin per (column, code), incremented by the
 // TDC's events during a row integration, then read out word by word (read-and-clear, so the
 // next row starts from zero) with each column's peak and centroid sums.
-// Reference: the events[column][code] of systemc/tof_spad/tof_spad_kernel.h (GroupHistogram);
+// Reference: the events[column][code] of systemc/tof_spad/sensor_kernel.h (GroupHistogram);
 // peak = first code of the largest count; centroid = num / den with num = sum code x count,
 // den = sum count over the column's codes.
 //

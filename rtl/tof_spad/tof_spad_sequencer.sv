@@ -3,8 +3,8 @@
 // laser_cycles_i laser periods of Np = phase_bins_i cycles with the TDC enabled, then
 // "histogram_readout", CPT x codes_i words of cycles_per_word_i cycles (read-and-clear).
 // Reference: golden/tof_spad/frame_timing.cpp (rows x (L Np + CPT Nc W) cycles) and
-// systemc/tof_spad/tof_spad_kernel.h (its schedule counters); the TDC and histogram against
-// TdcGroupKernel / GroupHistogram (tb/tof_spad_cosim.cpp).
+// systemc/tof_spad/sensor_kernel.h (its schedule counters); the TDC and histogram against
+// TdcGroupKernel / GroupHistogram (tb/tof_spad/cosim.cpp).
 //
 // Timing: start_i at a rising edge -> the next cycle is the first bin of row 0; the rows follow
 // each other without gaps. phase_o: 0 idle, 1 laser_cycles, 2 histogram_readout. start_i is

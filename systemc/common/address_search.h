@@ -1,6 +1,6 @@
 #pragma once
 // Clock-level view of the row address search: a thin sc_module around AddressSearchKernel.
-// Ports mirror rtl/address_search.sv (same names plus the _i/_o convention for clk/rst), with
+// Ports mirror rtl/common/address_search.sv (same names plus the _i/_o convention for clk/rst), with
 // the activation bits as one ActivationRow value instead of a COLUMNS-bit vector, because the
 // width is a run-time parameter here. All behaviour is in the kernel.
 #include <string>

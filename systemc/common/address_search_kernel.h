@@ -1,8 +1,8 @@
 #pragma once
 // Cycle kernel of the row address search (ls-conventional, thesis [31]): plain C++, no SystemC,
-// bit- and cycle-exact to rtl/address_search.sv (whose header comment is the cycle schedule).
+// bit- and cycle-exact to rtl/common/address_search.sv (whose header comment is the cycle schedule).
 // One kernel = the search/stream logic of one row. Sweeps drive it directly; the sc_module in
-// systemc/address_search.h only connects ports to it.
+// systemc/common/address_search.h only connects ports to it.
 #include <algorithm>
 #include <cstdint>
 #include <iosfwd>

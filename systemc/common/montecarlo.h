@@ -8,7 +8,7 @@
 // tof-lockin: N_p range maps (LED + ambient frames) averaged; tof-spad: one histogram of N_p
 // integrations of one TDC group), with every noise source of the kernel on.
 //
-// Random streams are keyed by (seed, grid point, trial) only (systemc/random_stream.h): a trial's
+// Random streams are keyed by (seed, grid point, trial) only (systemc/common/random_stream.h): a trial's
 // result never depends on which thread runs it or when.
 #include <cstdint>
 #include <limits>

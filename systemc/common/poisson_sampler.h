@@ -9,7 +9,7 @@
 //   rejection method for generating Poisson random variables", Insurance: Mathematics and
 //   Economics 12, 1993): a hat from a transformed uniform, two uniforms per trial, about 1.15
 //   trials; most are accepted by the squeeze without a log or lgamma.
-// Both are exact in distribution (up to double rounding); tests/systemc/test_poisson_sampler.cpp
+// Both are exact in distribution (up to double rounding); tests/skipping/test_poisson_sampler.cpp
 // checks moments and KS against the pmf, and that the test sees a 3 % change of mu.
 #include <cmath>
 

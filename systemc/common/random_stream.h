@@ -55,6 +55,6 @@ inline double standard_normal(pcg32& rng) {
 }
 
 // The ls-conventional pixel array draws its Poisson counts and its normal pair with
-// systemc/poisson_sampler.h (faster, library-independent); the other kernels use the above.
+// systemc/common/poisson_sampler.h (faster, library-independent); the other kernels use the above.
 
 }  // namespace rangesim::systemc

@@ -5,7 +5,7 @@
 // (left address, then right, MSB first, address_bits each); after the 2 B bits of one sampling it
 // adds (left + right) to an accumulator and counts the sampling as a detection. Samplings without
 // an activated pixel stream nothing and are not counted. The centre of the frame access is the
-// mean over the detecting samplings of (left + right) / 2 (golden/multisampling.h):
+// mean over the detecting samplings of (left + right) / 2 (golden/ls_conventional/multisampling.h):
 //   centre = sum / (2 n)                          (n = 0: no detection, valid = 0)
 // Output format: unsigned fixed point Q(address_bits).8 (kCentreFractionBits = 8), rounded to
 // nearest with ties up: centre_q = floor((sum * 2^8 + n) / (2 n)); centre_px = centre_q / 256.

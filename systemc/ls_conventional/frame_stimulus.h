@@ -3,7 +3,7 @@
 // per row, the swings at the end of integration (V = I t / C, thesis eq. 3.1) of the spot peak
 // and of the background, and the spot centre on the row. The pixel swing of column i is then
 //   v_i(t) = (signal_V g(i - centre_px) + background_V + V_dark) t / T,
-// g the Gaussian spot profile of the preset (peak 1), exactly as golden/row_model.h has it.
+// g the Gaussian spot profile of the preset (peak 1), exactly as golden/common/row_model.h has it.
 // Plain data, no SystemC: scene/ produces it, systemc/pixel_array consumes it.
 #include <cstdint>
 #include <functional>

@@ -73,7 +73,7 @@ class Runner : public McPointRunner {
 }  // namespace
 
 LsConventionalMc::LsConventionalMc(LsConventionalConfig cfg, SpotPlacement spot) : cfg_(std::move(cfg)), spot_(spot) {
-  // The clock-level pixel array has the in-pixel comparator only (systemc/pixel_array_kernel.h).
+  // The clock-level pixel array has the in-pixel comparator only (systemc/ls_conventional/pixel_array_kernel.h).
   if (cfg_.comparator.adc_bits != 1)
     throw UserError(
         fmt::format("--adc-bits {} (comparator.adc_bits): --trials runs the clock-level model, which has "

@@ -1,6 +1,6 @@
 #pragma once
 // Clock-level view of the readout sequencer: a thin sc_module around MultisamplingSequencerKernel
-// (systemc/readout_sequencer_kernel.h has the schedule). All behaviour is in the kernel.
+// (systemc/ls_conventional/multisampling_sequencer_kernel.h has the schedule). All behaviour is in the kernel.
 #include <systemc>
 
 #include "core/ls_conventional/config.h"

@@ -6,13 +6,13 @@
 // address search.
 //
 // Noise (shot, kTC at reset, read, dark; docs/simulate.md), sampled here from counter-based streams keyed by (seed,
-// frame, row, column) (systemc/random_stream.h):
+// frame, row, column) (systemc/common/random_stream.h):
 //   - shot noise: the electrons integrated up to t_k are a Poisson process of mean
 //     mu(t_k) = C v(t_k) / q (signal + background + dark current), drawn as increments per sampling;
 //   - kTC reset noise sqrt(kT/C): drawn once at the pixel reset, frozen for the frame access;
 //   - read noise (source follower / comparator, input-referred): once per frame access.
 // Comparator input: A_sf (min(n q / C + v_kTC, V_sat) + v_read), activated when >= theta
-// (golden/quantiser.h: tracking theta = A_sf (V_bg + V_dark) + Delta V_ADC, or fixed).
+// (golden/common/quantiser.h: tracking theta = A_sf (V_bg + V_dark) + Delta V_ADC, or fixed).
 // Without noise the swing is the golden expression itself, so the activations equal
 // golden::direct_estimate's bit for bit.
 //

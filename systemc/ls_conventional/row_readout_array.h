@@ -1,7 +1,7 @@
 #pragma once
 // Clock-level view of the row-parallel part of the ls-conventional readout: every row's address
 // search and centre processor (AddressSearchKernel, CentreProcessorKernel), connected as in
-// rtl/ls_conventional_readout.sv and as LsConventionalSensorKernel::tick connects them. The
+// rtl/ls_conventional/ls_conventional_readout.sv and as LsConventionalSensorKernel::tick connects them. The
 // per-row sc_modules AddressSearch and CentreProcessor model the same blocks one instance each;
 // this module is their array form for the sensor top: one clocked process for all rows and one
 // output signal carrying every row's pins (a vector payload), written only when a pin changed.

@@ -4,7 +4,7 @@
 // array (spot-peak and background swings at the end of integration, V = I t / C, and the spot
 // centre), and the exact ground truth of every (beam position, row).
 //
-// Geometry (golden/triangulation.h, in 3-D): camera lens at x = -d/2, projector at x = +d/2, both
+// Geometry (golden/common/triangulation.h, in 3-D): camera lens at x = -d/2, projector at x = +d/2, both
 // at y = 0 looking along z (depth). Image coordinates x_e = (column - c_x) pitch and
 // y_e = (row - c_y) pitch with the principal point at the array centre c = (n - 1) / 2. A pixel
 // row sees the points with y = z y_e / f. The beam of position b is the vertical plane

@@ -7,7 +7,7 @@
 //          |--pix_reset (clear)---------------------------------------> -> CentreProcessor[r]
 //
 // The rows' searches and centre processors are one module with one clocked process and one
-// vector-payload output (systemc/row_readout_array.h) rather than 2 x 365 modules with per-row
+// vector-payload output (systemc/ls_conventional/row_readout_array.h) rather than 2 x 365 modules with per-row
 // signals: the same kernels at a fraction of the scheduler's and the elaboration's cost.
 //
 // The module counts cycles by phase, collects one FrameResult per frame access at frame_done

@@ -1,7 +1,7 @@
 #pragma once
 // The clock-level ls-conventional sensor as one plain C++ kernel: the readout sequencer, the pixel
 // array with its comparators, one address search and one centre processor per row, connected
-// exactly as the sc_modules are in systemc/ls_conventional_sensor.h (same kernels, same order of
+// exactly as the sc_modules are in systemc/ls_conventional/sensor.h (same kernels, same order of
 // evaluation), so the bare kernel and the SystemC model give identical outputs cycle for cycle.
 //
 // Per clock edge (tick()): every block reads its inputs as they were during the ending cycle,

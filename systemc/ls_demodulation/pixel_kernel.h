@@ -15,7 +15,7 @@
 // (a sum of independent Gaussians: exact). O(S + log N) time and memory per window.
 // Per period (aggregate = false, and always when ticking): every segment of every period stepped.
 //
-// Noise (all from the counter-based stream of the pixel and decision, systemc/random_stream.h):
+// Noise (all from the counter-based stream of the pixel and decision, systemc/common/random_stream.h):
 //   draws in this order at reset: kTC of C1, kTC of C2, fixed-pattern offset, the LPF's memory of
 //   the shot noise before the window; then, per period, one Gaussian shot-noise charge per segment,
 //   drawn at the segment's last edge with the closed-form variance of golden front_end (the same

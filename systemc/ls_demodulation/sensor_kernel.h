@@ -1,7 +1,7 @@
 #pragma once
 // Cycle kernel of the ls-demodulation sensor (thesis [27]): plain C++, no SystemC. The composition
 // of the demodulating pixel array (demod_pixel_kernel.h), the comparators, the row readout through
-// the chained address search (systemc/address_search_kernel.h, reused from ls-conventional) with
+// the chained address search (systemc/common/address_search_kernel.h, reused from ls-conventional) with
 // the centre (left + right) / 2, and the readout sequencer.
 //
 // Clock schedule of one frame (golden::frame_timing_ls_demodulation, docs/ls-demodulation-clock.md),
@@ -100,7 +100,7 @@ class DemodSensorKernel {
   bool row_valid() const { return row_strobe_; }  // a row result completed at the last edge
   const DemodRowResult& last_row() const { return last_row_; }
   // Pins of the row search in the current cycle (the address stream; co-simulation compares
-  // them with rtl/ls_demodulation_sequencer.sv cycle by cycle).
+  // them with rtl/ls_demodulation/ls_demodulation_sequencer.sv cycle by cycle).
   AddressSearchPins search_pins() const { return search_.pins(); }
   long long cycle() const { return cycle_; }  // edges since construction
   const DemodFrameResult& result() const { return res_; }

@@ -9,7 +9,7 @@
 // resolution of an arrival is ulp(period), not ulp(integration time), however long the
 // integration (docs/numerical-stability.md).
 //
-// Randomness (systemc/random_stream.h): three counter-based streams per pixel, keyed by
+// Randomness (systemc/common/random_stream.h): three counter-based streams per pixel, keyed by
 // (seed ^ salt, frame, row, column): signal photons, uniform photons, SPAD (afterpulse + jitter).
 // A switched-off source still consumes its draws, so switching one does not move the others.
 #include <cstdint>

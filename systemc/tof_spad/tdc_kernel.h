@@ -3,8 +3,8 @@
 // already picked the hit (the caller presents the group's avalanches in time order), this
 // decides lost / event / overflow, keeps the dead time (block bins) and the stop-until-START
 // rule, and accumulates the histogram and the armed counts. TofSpadKernel::simulate_group runs
-// it on the event-driven avalanches; the co-simulation (tb/tof_spad_cosim.cpp) uses it as the
-// per-hit reference of rtl/tdc.sv, whose clock cycle is one absolute bin.
+// it on the event-driven avalanches; the co-simulation (tb/tof_spad/cosim.cpp) uses it as the
+// per-hit reference of rtl/tof_spad/tdc.sv, whose clock cycle is one absolute bin.
 #include <cstdint>
 #include <vector>
 

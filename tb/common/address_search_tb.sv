@@ -1,4 +1,4 @@
-// Self-checking Icarus testbench of rtl/address_search.sv (ctest label `rtl`): proves the RTL
+// Self-checking Icarus testbench of rtl/common/address_search.sv (ctest label `rtl`): proves the RTL
 // also runs on a second simulator and re-checks the documented cycle schedule independently of
 // the C++ kernel. Back-to-back operations (start in the cycle after done_o), random rows plus the
 // corner cases (empty, full, single column at each end). Prints "PASS" or "$fatal"s.

@@ -3,7 +3,7 @@
 // ctest cosim suites. Each target drives its verilated RTL beside its SystemC model (and the
 // golden model where it is exact) on randomised stimulus drawn from the seed, and reports what
 // its scoreboard compared. Targets live in tb/<block>_cosim.cpp and are listed in
-// tb/cosim_targets.cpp (one line each).
+// tb/common/cosim_targets.cpp (one line each).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -52,7 +52,7 @@ struct CosimTarget {
   CosimRunner run;
 };
 
-// All targets, sensors first. Defined in tb/cosim_targets.cpp.
+// All targets, sensors first. Defined in tb/common/cosim_targets.cpp.
 const std::vector<CosimTarget>& cosim_targets();
 
 }  // namespace rangesim::tb

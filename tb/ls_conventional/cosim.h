@@ -29,7 +29,7 @@ struct LsConventionalCosimOptions {
   std::uint64_t seed = 1;    // scenes, noise on (even seeds) or off (odd), Verilator's initial state
   std::string inject_fault;  // "", "address_bit_flip", "dropped_row", "centre_off_by_one"
   std::string trace_path;    // RTL VCD ("" = none)
-  // Icarus replay (tb/ls_conventional_readout_tb.sv): the inputs of every clock period as
+  // Icarus replay (tb/ls_conventional/ls_conventional_readout_tb.sv): the inputs of every clock period as
   // $readmemh lines {rst, cmp_i}, and the outputs from the reset edge on as %h fields.
   std::string record_stimulus_path, record_outputs_path;
   std::function<void(long long frames_done)> progress;  // after each frame access

@@ -1,5 +1,5 @@
 // Icarus replay bench of ls_conventional_readout: applies the inputs recorded from a Verilator
-// co-simulation run (tb/ls_conventional_cosim.cpp, one $readmemh line {rst, cmp_i} per clock
+// co-simulation run (tb/ls_conventional/cosim.cpp, one $readmemh line {rst, cmp_i} per clock
 // period) and dumps the outputs of every period from the reset edge on, in the same %h format
 // as the Verilator side. tests/cosim compares the two dumps byte for byte.
 //   iverilog -g2012 -P ls_conventional_readout_tb.ROWS=.. (etc.) ... ; vvp sim +stim=F +out=F +cycles=N

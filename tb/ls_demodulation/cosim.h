@@ -1,5 +1,5 @@
 #pragma once
-// Co-simulation of the ls-demodulation readout: rtl/ls_demodulation_sequencer.sv (frame
+// Co-simulation of the ls-demodulation readout: rtl/ls_demodulation/ls_demodulation_sequencer.sv (frame
 // sequencer + the chained address search, preset instance 120 columns, B = 7, S = 26) against
 // DemodSensorKernel ticking cycle by cycle (systemc/ls_demodulation). Per cycle: phase, integrator
 // reset, decision latch, row, search start and the address stream; per row and decision: found,

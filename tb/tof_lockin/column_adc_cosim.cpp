@@ -1,4 +1,4 @@
-// Co-simulation of rtl/column_adc.sv against ColumnAdcKernel.
+// Co-simulation of rtl/tof_lockin/column_adc.sv against ColumnAdcKernel.
 //
 // The analog side (V_in against the ramp) is the testbench's: in every conversion cycle the
 // falling-edge monitor reads the RTL's ramp DAC code c and drives cmp_i = V_in < (c + 1) LSB,

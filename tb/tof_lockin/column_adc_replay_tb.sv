@@ -1,4 +1,4 @@
-// Icarus replay of a Verilator co-simulation run of rtl/column_adc.sv (ctest label iverilog):
+// Icarus replay of a Verilator co-simulation run of rtl/tof_lockin/column_adc.sv (ctest label iverilog):
 // the recorded per-cycle inputs (including the comparator the testbench computed) and the
 // outputs Verilator produced; the same RTL under Icarus must give identical outputs in every
 // cycle after reset. +record=<file>. Prints PASS.

@@ -1,5 +1,5 @@
-// Co-simulation of the tof-lockin readout: rtl/tof_lockin_sequencer.sv (with its
-// lockin_gate_generator) and one rtl/column_adc.sv per simulated column and tap, against
+// Co-simulation of the tof-lockin readout: rtl/tof_lockin/tof_lockin_sequencer.sv (with its
+// lockin_gate_generator) and one rtl/tof_lockin/column_adc.sv per simulated column and tap, against
 // TofLockinSensorKernel in tick mode (one step = one clock cycle; the co-simulation runs gate
 // and readout phases on one clock, the schedule counts cycles).
 //

@@ -1,4 +1,4 @@
-// Co-simulation of rtl/lockin_gate_generator.sv against LockinGateGeneratorKernel (tick by tick).
+// Co-simulation of rtl/tof_lockin/lockin_gate_generator.sv against LockinGateGeneratorKernel (tick by tick).
 //
 // Timing: stimulus drives right after a rising edge; one SC_METHOD on the falling edge samples
 // the RTL pins, compares them with the kernel's state for this cycle, then advances the kernel

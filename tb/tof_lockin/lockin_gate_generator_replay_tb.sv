@@ -1,4 +1,4 @@
-// Icarus replay of a Verilator co-simulation run of rtl/lockin_gate_generator.sv (ctest label
+// Icarus replay of a Verilator co-simulation run of rtl/tof_lockin/lockin_gate_generator.sv (ctest label
 // iverilog): reads the per-cycle inputs and the outputs Verilator produced, recorded by
 // run_lockin_gate_generator_cosim(..., record_path), drives the same inputs into the same RTL
 // and requires identical outputs in every cycle after reset. +record=<file>. Prints PASS.

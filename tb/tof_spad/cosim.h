@@ -1,5 +1,5 @@
 #pragma once
-// Co-simulation of the tof-spad readout RTL: rtl/tof_spad_sequencer.sv (rtl/tdc.sv +
+// Co-simulation of the tof-spad readout RTL: rtl/tof_spad/tof_spad_sequencer.sv (rtl/tof_spad/tdc.sv +
 // tdc_histogram.sv, one TDC group of 4 columns) against the SystemC kernels
 // (systemc/tof_spad: SpadPixelKernel avalanches, TdcGroupKernel per hit, TofSpadKernel
 // histograms and schedule). Elaborates SystemC: one run per process.

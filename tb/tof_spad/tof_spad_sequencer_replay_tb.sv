@@ -1,5 +1,5 @@
-// Icarus replay of a Verilator co-simulation run of rtl/tof_spad_sequencer.sv with rtl/tdc.sv
-// and rtl/tdc_histogram.sv (ctest label iverilog): the recorded per-cycle inputs (hits, fine
+// Icarus replay of a Verilator co-simulation run of rtl/tof_spad/tof_spad_sequencer.sv with rtl/tof_spad/tdc.sv
+// and rtl/tof_spad/tdc_histogram.sv (ctest label iverilog): the recorded per-cycle inputs (hits, fine
 // phases, corrections) and the outputs Verilator produced (TDC codes, grants, lost hits,
 // histogram words, peaks, centroid sums); the same RTL under Icarus must give identical
 // outputs in every cycle after reset. +record=<file>. Prints PASS.

@@ -1,4 +1,4 @@
-// The pixel kernels' own samplers (systemc/poisson_sampler.h) against independent references:
+// The pixel kernels' own samplers (systemc/common/poisson_sampler.h) against independent references:
 // PoissonSampler against std::poisson_distribution and the exact mean and variance mu, on both of
 // its paths (inversion below mu = 10, PTRS above) and at the boundary; standard_normal_pair
 // against std::normal_distribution, its two values uncorrelated. Same decision rule as the

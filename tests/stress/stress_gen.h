@@ -1,6 +1,6 @@
 #pragma once
 // RapidCheck generators of extreme but legal ls-conventional inputs (every value inside the
-// preset schema's range, core/schema_ls_conventional.cpp), shared by the stress properties.
+// preset schema's range, core/ls_conventional/schema.cpp), shared by the stress properties.
 //
 // The cost of one closed-form operating point grows as samplings^3 x activation window (exact
 // 1-bit moments) and samplings x 2^adc_bits (multi-bit codes); the generators keep every legal

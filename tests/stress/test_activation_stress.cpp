@@ -1,4 +1,4 @@
-// Stress tests of the activation probability (golden/activation_cdf.cpp), the building block of
+// Stress tests of the activation probability (golden/common/activation_cdf.cpp), the building block of
 // every closed-form noise result, from a fraction of an electron to the largest photo-electron
 // counts a legal preset can produce (label: stress).
 //
@@ -102,7 +102,7 @@ TEST(ActivationStress, TinyMeansDoNotUnderflowIntoNaN) {
   }
 }
 
-// FINDING (golden/activation_cdf.cpp, reported, not fixed here): a legal preset can make the
+// FINDING (golden/common/activation_cdf.cpp, reported, not fixed here): a legal preset can make the
 // threshold in electrons overflow to +inf: theta / A_sf x C / q with source_follower_gain = 1e-300
 // (schema: (0, 10]), threshold_above_background_V = 10 and pd_capacitance_F = 1e-9 gives
 // 10 / 1e-300 x 6.2e9 = inf. activation_probability(mu, inf, s > 0) then skips its Chernoff exit

@@ -33,7 +33,7 @@ using stress::log_uniform_or_zero;
 bool finite(double v) { return std::isfinite(v); }
 
 // A legal configuration with every physical key at an extreme-but-legal value (schema ranges of
-// core/schema_ls_demodulation.cpp). Integration 1 ns .. 1 s with N = 1 .. 1e9 periods.
+// core/ls_demodulation/schema.cpp). Integration 1 ns .. 1 s with N = 1 .. 1e9 periods.
 rc::Gen<LsDemodulationConfig> demod_config_gen() {
   return rc::gen::exec([] {
     LsDemodulationConfig c;

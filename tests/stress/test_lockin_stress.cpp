@@ -32,7 +32,7 @@ using stress::log_uniform_or_zero;
 
 bool finite(double v) { return std::isfinite(v); }
 
-// Legal configuration (core/schema_tof_lockin.cpp ranges), T0 1 ps .. 1 ms.
+// Legal configuration (core/tof_lockin/schema.cpp ranges), T0 1 ps .. 1 ms.
 rc::Gen<TofLockinConfig> lockin_config_gen() {
   return rc::gen::exec([] {
     TofLockinConfig c;

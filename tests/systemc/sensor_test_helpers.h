@@ -10,7 +10,7 @@
 
 namespace rangesim::systemc::test {
 
-// The preset defaults (core/ls_conventional_config.h mirrors presets/ls-conventional.toml) with
+// The preset defaults (core/ls_conventional/config.h mirrors presets/ls-conventional.toml) with
 // a smaller array for fast tests.
 inline LsConventionalConfig small_config(int rows = 24, int columns = 96, int samplings = 4) {
   LsConventionalConfig c;

@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(Configs, KernelRandomRows,
                          });
 
 TEST(AddressSearchKernel, CycleCountMatchesFrameTiming) {
-  // One sampling in golden/frame_timing.h: latch + search + addresses_per_sampling * bits.
+  // One sampling in golden/common/frame_timing.h: latch + search + addresses_per_sampling * bits.
   const FrameTimingConfig t;
   rs::AddressSearchKernel k(AddressSearchConfig{}, t.search_cycles);
   rs::ActivationRow row(AddressSearchConfig{}.columns);

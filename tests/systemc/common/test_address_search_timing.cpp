@@ -1,4 +1,4 @@
-// The kernel's cycle count is what the analytic frame timing (golden/frame_timing.h) charges
+// The kernel's cycle count is what the analytic frame timing (golden/common/frame_timing.h) charges
 // for one sampling: latch + search + addresses_per_sampling * address_bits.
 #include <gtest/gtest.h>
 
