@@ -81,8 +81,8 @@ const char* shape_name(TargetShape s);
 // Throws UserError naming the origin (and line), the key and the allowed range on any problem:
 // syntax, unknown section or key, a key of another sensor, missing key, wrong type, range, image.
 // Never throws anything else for any text (fuzz/ calls it).
-Scene load_scene_text(std::string_view text, const std::string& origin, const std::string& sensor = "ls-conventional");
+Scene load_scene_text(std::string_view text, const std::string& origin, const std::string& sensor);
 // The same for a file (a missing or unreadable file is a UserError naming --scene).
-Scene load_scene(const std::string& path, const std::string& sensor = "ls-conventional");
+Scene load_scene(const std::string& path, const std::string& sensor);
 
 }  // namespace rangesim::scene

@@ -37,7 +37,7 @@ struct Setup {
 Setup make_setup() {
   Setup s;
   s.cfg = ls_conventional_from_params(load_preset_file(resolve_preset("ls-conventional")));
-  s.scene = scene::load_scene(scene_path("plane.toml"));
+  s.scene = scene::load_scene(scene_path("plane.toml"), "ls-conventional");
   s.optics = std::make_unique<scene::SceneOptics>(s.cfg, s.scene);
   return s;
 }

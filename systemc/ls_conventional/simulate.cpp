@@ -202,7 +202,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   if (req.tick && !req.kernel_only)
     throw UserError(
         "--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
-  const scene::Scene sc = scene::load_scene(req.scene);
+  const scene::Scene sc = scene::load_scene(req.scene, "ls-conventional");
   const scene::SceneOptics optics(c.cfg, sc);
   host.open_output(sc.name);
   const SensorRunResult res = run_model(req, c.cfg, optics, c.frames, vcd_base, host);

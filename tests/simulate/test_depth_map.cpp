@@ -214,9 +214,10 @@ TEST(SceneOptics, FlatDepthMapGivesThePlaneGroundTruth) {
       "[scene]\nname = \"m\"\n[target]\nshape = \"depth_map\"\ndepth_map_file = \"flat.pgm\"\n"
       "depth_near_m = 1.0\ndepth_far_m = 1.2\n" +
           radiometry,
-      (d / "m.toml").string());
-  const sc::Scene plane = sc::load_scene_text(
-      "[scene]\nname = \"p\"\n[target]\nshape = \"plane\"\ndistance_m = 1.1\n" + radiometry, (d / "p.toml").string());
+      (d / "m.toml").string(), "ls-conventional");
+  const sc::Scene plane =
+      sc::load_scene_text("[scene]\nname = \"p\"\n[target]\nshape = \"plane\"\ndistance_m = 1.1\n" + radiometry,
+                          (d / "p.toml").string(), "ls-conventional");
   const sc::SceneOptics om(cfg, map), op(cfg, plane);
   int visible = 0;
   for (int b = 0; b < om.beam_positions(); b += 37)
@@ -238,7 +239,7 @@ TEST(SceneOptics, DepthMapTruthLiesOnTheMap) {
   // (the fixed point of the triangulation), within the bisection's tolerance.
   const rangesim::LsConventionalConfig cfg =
       rangesim::ls_conventional_from_params(rangesim::load_preset("ls-conventional"));
-  const sc::Scene s = sc::load_scene(kScenes + "/depth-map.toml");
+  const sc::Scene s = sc::load_scene(kScenes + "/depth-map.toml", "ls-conventional");
   const sc::SceneOptics o(cfg, s);
   int visible = 0;
   double zmin = 1e9, zmax = 0;
@@ -265,10 +266,10 @@ TEST(SceneOptics, CameraRadiometryComesFromThePresetUnlessTheSceneOverridesIt) {
   const std::string base =
       "[scene]\nname = \"c\"\n[target]\nshape = \"plane\"\ndistance_m = 1.0\nreflectance = 0.5\n"
       "[beam]\npower_W = 0.5\nreference_distance_m = 1.1\n[background]\nirradiance_W_per_m2 = 5.0\n";
-  const sc::Scene preset_only = sc::load_scene_text(base, "c.toml");
-  const sc::Scene same =
-      sc::load_scene_text(base + "[camera]\nf_number = 1.4\nfill_factor = 0.5\nresponsivity_A_per_W = 0.4\n", "c.toml");
-  const sc::Scene slower = sc::load_scene_text(base + "[camera]\nf_number = 2.8\n", "c.toml");
+  const sc::Scene preset_only = sc::load_scene_text(base, "c.toml", "ls-conventional");
+  const sc::Scene same = sc::load_scene_text(
+      base + "[camera]\nf_number = 1.4\nfill_factor = 0.5\nresponsivity_A_per_W = 0.4\n", "c.toml", "ls-conventional");
+  const sc::Scene slower = sc::load_scene_text(base + "[camera]\nf_number = 2.8\n", "c.toml", "ls-conventional");
   ASSERT_DOUBLE_EQ(cfg.optics.f_number, 1.4);  // presets/ls-conventional.toml
   ASSERT_DOUBLE_EQ(cfg.pixel.fill_factor, 0.5);
   ASSERT_DOUBLE_EQ(cfg.pixel.responsivity_A_per_W, 0.4);

@@ -38,7 +38,7 @@ std::string write_temp(const std::string& text) {
 
 std::string error_of(const std::string& text) {
   try {
-    sc::load_scene(write_temp(text));
+    sc::load_scene(write_temp(text), "ls-conventional");
   } catch (const rangesim::UserError& e) {
     return e.what();
   }
@@ -73,7 +73,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 
 TEST(Scene, ExampleScenesLoad) {
   for (const char* name : {"plane", "tilted", "step"}) {
-    const sc::Scene s = sc::load_scene(kScenes + "/" + name + ".toml");
+    const sc::Scene s = sc::load_scene(kScenes + "/" + name + ".toml", "ls-conventional");
     EXPECT_EQ(s.name, name);
   }
   EXPECT_EQ(error_of(kGood), "");
@@ -97,13 +97,13 @@ TEST(Scene, BadInputNamesFileKeyAndRange) {
   EXPECT_NE(e.find("must be < target.distance_m"), std::string::npos) << e;
   e = error_of("[scene\nname=");
   EXPECT_NE(e.find("TOML syntax error"), std::string::npos) << e;
-  EXPECT_THROW(sc::load_scene("/nonexistent/scene.toml"), rangesim::UserError);
+  EXPECT_THROW(sc::load_scene("/nonexistent/scene.toml", "ls-conventional"), rangesim::UserError);
 }
 
 TEST(SceneOptics, GroundTruthAgreesWithGoldenTriangulation) {
   const LsConventionalConfig c = preset();
   for (const char* name : {"plane", "tilted", "step"}) {
-    const sc::Scene s = sc::load_scene(kScenes + "/" + name + ".toml");
+    const sc::Scene s = sc::load_scene(kScenes + "/" + name + ".toml", "ls-conventional");
     const sc::SceneOptics o(c, s);
     int visible = 0;
     for (int b = 0; b < o.beam_positions(); b += 17)
@@ -125,7 +125,7 @@ TEST(SceneOptics, GroundTruthAgreesWithGoldenTriangulation) {
 
 TEST(SceneOptics, PlaneAtTheReferenceDistancePutsTheStripeOnItsColumn) {
   const LsConventionalConfig c = preset();
-  sc::Scene s = sc::load_scene(kScenes + "/plane.toml");
+  sc::Scene s = sc::load_scene(kScenes + "/plane.toml", "ls-conventional");
   s.distance_m = s.reference_distance_m;
   const sc::SceneOptics o(c, s);
   for (int b : {0, 100, 374}) EXPECT_NEAR(o.truth(b, 50).centre_px, b + s.column_offset_px, 1e-9);
@@ -136,7 +136,7 @@ TEST(SceneOptics, PlaneAtTheReferenceDistancePutsTheStripeOnItsColumn) {
   EXPECT_NEAR(of.truth(10, 0).signal_V * 4, o.truth(10, 0).signal_V, 1e-12);
   EXPECT_EQ(of.truth(10, 0).background_V, o.truth(10, 0).background_V);
   // The example plane: about 0.68 V over 0.010 V at 1.0 m (docs/simulate.md).
-  const sc::SceneOptics ex(c, sc::load_scene(kScenes + "/plane.toml"));
+  const sc::SceneOptics ex(c, sc::load_scene(kScenes + "/plane.toml", "ls-conventional"));
   EXPECT_NEAR(ex.truth(100, 0).signal_V, 0.684, 0.01);
   EXPECT_NEAR(ex.truth(100, 0).background_V, 0.0101, 0.0005);
 }
@@ -146,7 +146,7 @@ TEST(SceneOptics, NoiseFreeKernelRunEqualsGoldenEstimateOfTheScene) {
   // golden::noise_free_estimate at the scene's operating point, and the rms error is the
   // quantisation error only (well under a pixel).
   const LsConventionalConfig c = preset();
-  const sc::SceneOptics o(c, sc::load_scene(kScenes + "/tilted.toml"));
+  const sc::SceneOptics o(c, sc::load_scene(kScenes + "/tilted.toml", "ls-conventional"));
   rangesim::systemc::SensorKernelOptions k;
   k.pixel.noise = rangesim::systemc::PixelNoiseConfig::none();
   rangesim::systemc::SensorRunOptions run;
