@@ -24,10 +24,12 @@ struct EvaluateOptions {
   std::vector<std::string> settings;  // --set KEY=VALUE, in order, after the preset
   std::optional<std::string> signal;  // "LO:HI:N" volts
   std::optional<std::string> background;
-  std::optional<int> samplings;
-  std::optional<int> adc_bits;
-  std::optional<int> frames;  // frames averaged
-  std::string out;            // output directory ("" -> rangesim-out/<sensor>)
+  // Integer flags are held wide: the sensor's own range is checked when they are applied, so
+  // --frames 1e12 is refused naming that range instead of failing to convert.
+  std::optional<long long> samplings;
+  std::optional<long long> adc_bits;
+  std::optional<long long> frames;  // frames averaged
+  std::string out;                  // output directory ("" -> rangesim-out/<sensor>)
   bool json = false;
   bool no_plots = false;
   // Monte Carlo on the clock-level kernels (app/montecarlo/, docs/evaluate-montecarlo.md); any of
@@ -46,7 +48,7 @@ int run_evaluate_mc(const EvaluateOptions& opt);
 
 struct FrameRateOptions {
   std::string sensor;
-  std::optional<int> samplings;
+  std::optional<long long> samplings;
   bool json = false;
   std::vector<std::string> settings = {};  // --set KEY=VALUE, in order
 };
@@ -69,8 +71,8 @@ struct SweepOptions {
   std::string out;                    // --out DIR ("" -> rangesim-out/sweep/<sensor>)
   bool json = false;
   bool no_plots = false;
-  bool resume = false;                  // continue the journal in --out
-  std::string pareto_accuracy = "min";  // --pareto-accuracy min|max: best or worst accuracy on the front's axis
+  bool resume = false;                      // continue the journal in --out
+  std::string pareto_accuracy = "min";      // --pareto-accuracy min|max: best or worst accuracy on the front's axis
   std::optional<long long> trials;          // --trials T: Monte Carlo accuracy with its CI per variant
   unsigned long long seed = 1;              // --seed: key of the Monte Carlo and cosim streams
   bool cosim = false;                       // --cosim: each variant's RTL against its model
