@@ -1,9 +1,11 @@
 #include "app/cli_common.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
 
+#include "core/grid_rules.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 
@@ -37,6 +39,11 @@ GridAxis parse_grid_axis(const std::string& text, const std::string& flag) {
         fmt::format("{} {}: LO = {:g} must be > 0 (log-spaced grid); allowed: 0 < LO <= HI", flag, text, g.lo));
   if (g.lo > g.hi)
     throw UserError(fmt::format("{} {}: LO = {:g} > HI = {:g}; allowed: 0 < LO <= HI", flag, text, g.lo, g.hi));
+  if (const std::string problem = log_grid_problem(g.lo, g.hi); !problem.empty())
+    throw UserError(
+        fmt::format("{} {}: the log-spaced grid has points that are not finite ({}); allowed: {} <= LO "
+                    "and HI / LO <= {}",
+                    flag, text, problem, DBL_MIN, DBL_MAX));
   if (!(n >= 1 && n <= 10000 && n == std::floor(n)))
     throw UserError(fmt::format("{} {}: N = {:g} must be an integer in [1, 10000]", flag, text, n));
   g.n = static_cast<int>(n);

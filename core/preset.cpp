@@ -7,6 +7,7 @@
 #include <optional>
 #include <toml++/toml.h>
 
+#include "core/grid_rules.h"
 #include "core/input_file.h"
 #include "core/user_error.h"
 
@@ -241,6 +242,7 @@ ParamSet load_preset_text(const std::string& text, const std::string& path) {
 }
 
 void validate_preset(const ParamSet& set) {
+  check_log_grids(set);
   if (const SensorInfo* s = find_sensor(set.sensor_id())) s->validate(set);
 }
 
