@@ -350,6 +350,8 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (all && !opt.inject_fault.empty())
     throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
   if (target) check_fault(opt.inject_fault, *target, opt.target);
+  if (!opt.junit.empty()) check_output_file(opt.junit, "--junit");
+  if (!opt.trace.empty() && !all) check_output_file(opt.trace, "--trace");
   // Output files are staged next to their destination and appear only when complete.
   std::unique_ptr<OutputDir> junit_dir, trace_dir;
   std::string junit_name, trace_file;

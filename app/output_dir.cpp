@@ -11,6 +11,17 @@ namespace fs = std::filesystem;
 
 namespace rangesim::app {
 
+void check_output_file(const std::string& path, const std::string& flag) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw UserError(fmt::format("{} {}: cannot use it as an output file ({}); allowed: a new or regular file", flag,
+                                path, ec.message()));
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw UserError(fmt::format("{} {}: exists and is {}; allowed: a new or regular file (which is replaced)", flag,
+                                path, fs::is_directory(st) ? "a directory" : "not a regular file"));
+}
+
 OutputDir::OutputDir(const std::string& dir, const std::string& flag) : dir_(dir) {
   std::error_code ec;
   if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec))

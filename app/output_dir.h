@@ -7,6 +7,11 @@
 
 namespace rangesim::app {
 
+// A single output file the user names (--trace, --junit): refused before any work when it exists
+// as anything but a regular file (a directory, a device, a FIFO, a symbolic-link loop), which the
+// rename at the end would otherwise fail on or, as root, replace. Throws UserError naming `flag`.
+void check_output_file(const std::string& path, const std::string& flag);
+
 class OutputDir {
  public:
   // Creates DIR if needed and a staging folder in it; throws UserError naming `flag` and DIR.

@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "app/output_dir.h"
 #include "core/user_error.h"
 
 extern char** environ;
@@ -66,6 +67,7 @@ TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path
     throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
   if (!ends_with(path_, ".vcd") && !ends_with(path_, ".fst"))
     throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd or .fst", path_));
+  check_output_file(path_, "--trace");
   const fs::path parent = fs::absolute(path_).parent_path();
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
     throw UserError(fmt::format("--trace {}: directory {} does not exist or is not writable", path_, parent.string()));
