@@ -1,14 +1,13 @@
 // rangesim table: thesis Table 5.1 for the four seed sensors beside rangesim's values, and the
 // chips' published figures with their status.
 #include <cmath>
-#include <cstdio>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "app/progress_line.h"
 #include "core/preset.h"
 #include "golden/common/evaluate_sensor.h"
 #include "golden/common/table_5_1.h"
@@ -54,11 +53,10 @@ std::string difference(double ours, double thesis, const std::string& unit) {
   return fmt::format("{:+.3g}x", ours / thesis);
 }
 
-int g_sensor_index = 0, g_sensor_count = 0;
+// Golden models report progress through a plain function pointer, hence the one line here.
+ProgressLine* g_progress = nullptr;
 void table_progress(int done, int total) {
-  if (done == total || done % 200 == 0)
-    std::fprintf(stderr, "%stable: sensor %d/%d, %d/%d operating points%s", isatty(fileno(stderr)) ? "\r" : "",
-                 g_sensor_index, g_sensor_count, done, total, isatty(fileno(stderr)) && done != total ? "" : "\n");
+  if (g_progress) g_progress->update(done, total);
 }
 
 Column build_column(const golden::ThesisColumn& tc) {
@@ -205,10 +203,11 @@ int run_table(const TableOptions& opt) {
     if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column)
       thesis.push_back(m->table_column);
   std::vector<Column> cols;
-  g_sensor_count = static_cast<int>(thesis.size());
   for (const golden::ThesisColumn* tc : thesis) {
-    ++g_sensor_index;
+    ProgressLine progress(fmt::format("table: sensor {}/{}", cols.size() + 1, thesis.size()), "operating points");
+    g_progress = &progress;
     cols.push_back(build_column(*tc));
+    g_progress = nullptr;
   }
 
   nlohmann::json j;

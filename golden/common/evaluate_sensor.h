@@ -13,6 +13,8 @@
 
 namespace rangesim::golden {
 
+// Progress of a grid evaluation in operating points (done of total); called from the evaluating
+// thread, possibly more than once with the same count.
 using ProgressFn = void (*)(int done, int total);
 
 struct GoldenModel {
