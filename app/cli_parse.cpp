@@ -58,6 +58,28 @@ CLI::Validator schema_integer(const std::string& suffix) {
       "");
 }
 
+// --max-memory of a long command: its resident size is watched and the run refused up front when
+// its estimate exceeds it (app/run_control.h).
+void add_max_memory(CLI::App* sub, ParsedCommand& c) {
+  sub->add_option("--max-memory", c.max_memory,
+                  "Memory budget, e.g. 512M or 2G (16M..1024T): a run whose estimate exceeds it is refused up\n"
+                  "front, one that grows beyond it ends writing nothing (exit 4); default: the memory available")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            std::uint64_t bytes = 0;
+            return check_memory_text(s, bytes);
+          },
+          ""));
+}
+
+void add_budgets(CLI::App* sub, ParsedCommand& c) {
+  sub->add_option("--max-seconds", c.max_seconds,
+                  "Wall-time budget of the command: when exceeded the run ends writing nothing and exits 4\n"
+                  "(a sweep keeps its journal and prints how to resume)")
+      ->check(real_in(0, true, 1e9, "s"));
+  add_max_memory(sub, c);
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -115,6 +137,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)")
       ->transform(schema_integer("evaluation.frames_averaged"));
   ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)")->check(kPath);
+  ev->add_flag("--force", ev_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_max_memory(ev, c);
   ev->add_flag("--json", ev_opt.json, "Print summary.json to stdout instead of the table");
   ev->add_flag("--no-plots", ev_opt.no_plots, "Skip the PNG/SVG heat maps");
   // Monte Carlo evaluation (app/montecarlo/, docs/evaluate-montecarlo.md).
@@ -135,7 +160,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   ev->add_option("--seed", ev_opt.seed, "Monte Carlo: key of the random streams, 0..2^64-1 (default 1)")
       ->transform(unsigned_in(0, kMaxU64));
   ev->add_option("--max-seconds", ev_opt.max_seconds,
-                 "Monte Carlo: wall-time budget; when exceeded the sweep stops, keeps its journal and exits 4")
+                 "Wall-time budget of the command: when exceeded the run ends writing nothing and exits 4 (a\n"
+                 "grid that would take longer is refused once its pace is known); Monte Carlo: the sweep stops,\n"
+                 "keeps its journal and exits 4")
       ->check(real_in(0, true, 1e9, "s"));
   ev->add_flag("--resume", ev_opt.resume,
                "Monte Carlo: continue the interrupted sweep whose journal is in --out (same options required);\n"
@@ -176,6 +203,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
                   "gtkwave package); off by default");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)")->check(kPath);
+  sim->add_flag("--force", sim_opt.force,
+                "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(sim, c);
   sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");
   sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");
   sim->add_flag("--tick,--no-event-skip", sim_opt.tick,
@@ -206,6 +236,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   tb->add_option("--out", tb_opt.out,
                  "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory")
       ->check(kPath);
+  tb->add_flag("--force", tb_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(tb, c);
 
   BenchOptions& bench_opt = c.bench;
   auto* bench = app.add_subcommand(
@@ -221,6 +254,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Fewer frames for the slow references: the same keys in under two minutes");
   bench->add_flag("--json", bench_opt.json, "Print bench.json to stdout instead of the tables");
   bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)")->check(kPath);
+  bench->add_flag("--force", bench_opt.force,
+                  "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(bench, c);
   bench->add_flag("--resume", bench_opt.resume,
                   "Continue a killed or interrupted bench: every finished Pareto row and figure group is kept in a\n"
                   "journal under --out and not measured again");
@@ -246,6 +282,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                  "K/N: compute only the variants i with i mod N = K-1 and write sweep.shard-K-of-N.json\n"
                  "(batch arrays; `rangesim merge` combines the N shards into the unsharded output)");
   sw->add_option("--out", sw_opt.out, "Output directory (default: rangesim-out/sweep/<sensor>)")->check(kPath);
+  sw->add_flag("--force", sw_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(sw, c);
   sw->add_flag("--json", sw_opt.json, "Print sweep.json to stdout instead of the table");
   sw->add_flag("--no-plots", sw_opt.no_plots, "Skip the PNG/SVG plots");
   sw->add_flag("--resume", sw_opt.resume, "Continue the sweep whose journal is in --out (same options)");
@@ -270,6 +309,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                                 "sweep; refuses shards of different sweeps, missing or repeated shards");
   mg->add_option("parts", mg_opt.parts, "The sweep.shard-K-of-N.json files")->required();
   mg->add_option("--out", mg_opt.out, "Output directory (default: rangesim-out/sweep/merged)")->check(kPath);
+  mg->add_flag("--force", mg_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
   mg->add_flag("--json", mg_opt.json, "Print sweep.json to stdout instead of the table");
   mg->add_flag("--no-plots", mg_opt.no_plots, "Skip the PNG/SVG plots");
   mg->add_option("--pareto-accuracy", mg_opt.pareto_accuracy, "min (default) or max, as for sweep")

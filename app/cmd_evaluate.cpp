@@ -83,7 +83,7 @@ int run_evaluate(const EvaluateOptions& opt) {
   // Validate everything before computing or touching the output directory.
   const ParamSet params = evaluate_params(opt);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
-  OutputDir out(dir, "--out");
+  OutputDir out(dir, "--out", {"evaluate", opt.force});
 
   ProgressLine progress("evaluate", "operating points");
   g_progress = &progress;

@@ -195,7 +195,7 @@ nlohmann::json json_num(double v) { return std::isfinite(v) ? nlohmann::json(v) 
 
 int run_table(const TableOptions& opt) {
   std::unique_ptr<OutputDir> out;
-  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out");
+  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out", OutputFolder{"table", opt.force});
 
   // The columns of the registered sensors that have one in the thesis's table, in registry order.
   std::vector<const golden::ThesisColumn*> thesis;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/output_dir.h"
+#include "app/run_control.h"
 #include "core/user_error.h"
 
 extern char** environ;
@@ -77,9 +78,12 @@ TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path
                     "or name the trace .vcd",
                     path_));
   vcd_base_ = fmt::format("{}.partial-{}", path_, ::getpid());
+  vcd_slot_ = register_cleanup(vcd_base_ + ".vcd", false);
 }
 
 TraceOutput::~TraceOutput() {
+  unregister_cleanup(vcd_slot_);
+  unregister_cleanup(finished_slot_);
   if (committed_ || path_.empty()) return;
   std::error_code ec;
   fs::remove(vcd_base_ + ".vcd", ec);
@@ -95,6 +99,7 @@ void TraceOutput::finish() {
     return;
   }
   finished_ = vcd_base_ + ".fst";
+  finished_slot_ = register_cleanup(finished_, false);
   const int rc = run_quiet({"vcd2fst", vcd, finished_});
   std::error_code ec;
   fs::remove(vcd, ec);

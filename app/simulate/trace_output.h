@@ -31,6 +31,7 @@ class TraceOutput {
   std::string vcd_base_;  // temporary VCD without ".vcd"
   std::string finished_;  // temporary in the final format, ready to rename
   bool committed_ = false;
+  int vcd_slot_ = -1, finished_slot_ = -1;  // app/run_control.h: removed when the run is ended
 };
 
 }  // namespace rangesim::app

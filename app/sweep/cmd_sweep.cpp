@@ -200,21 +200,25 @@ int run_sweep(const SweepOptions& opt) {
   }
   const std::string dir = opt.out.empty() ? "rangesim-out/sweep/" + base.sensor_id() : opt.out;
   std::unique_ptr<OutputDir> out;  // rank 0 writes; the other ranks only journal their share
-  if (world.rank == 0) out = std::make_unique<OutputDir>(dir, "--out");
+  // A shard's file is not the sweep's output: shards into one folder are refused, not replaced.
+  const std::string kind =
+      shard.n > 1 && world.size == 1 ? fmt::format("sweep --shard {}/{}", shard.k, shard.n) : "sweep";
+  if (world.rank == 0) out = std::make_unique<OutputDir>(dir, "--out", OutputFolder{kind, opt.force});
   const std::string fp = fingerprint(base, h, vars);
   SweepJournal journal(
       (fs::path(dir) / ".staging-sweep" / fmt::format("sweep.{}-of-{}.journal", shard.k, shard.n)).string(), fp,
       opt.resume);
-  if (opt.resume && world.rank == 0) remove_stale_staging(dir);
   SigintGuard sigint;
   SweepProgress progress;
   progress.quiet = world.rank != 0;
   std::vector<SweepRow> rows;
   for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()); i += shard.n) ++progress.total;
   long long from_journal = 0;
-  bool interrupted = false;
-  for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()) && !interrupted; i += shard.n) {
-    if ((interrupted = sigint_flag())) break;
+  int stopped = 0;  // exit code of a stop between variants (a signal, a budget), 0 while running
+  for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()); i += shard.n) {
+    if (sigint_flag()) stopped = stop_exit_code();
+    if (time_budget_left() <= 0) stopped = kExitBudget;
+    if (stopped) break;
     const auto it = journal.done().find(i);
     if (it != journal.done().end()) {
       rows.push_back(row_from_json(nlohmann::json::parse(it->second), h.checks));
@@ -225,12 +229,15 @@ int run_sweep(const SweepOptions& opt) {
     }
     progress(static_cast<long long>(rows.size()), from_journal);
   }
-  if (mpi::max_all(world, interrupted ? 1 : 0)) {
+  if (const int code = mpi::max_all(world, stopped); code != 0) {
+    const std::string why = stopped == kExitBudget && !sigint_flag()
+                                ? fmt::format("--max-seconds {} exceeded", run_budget().max_seconds_text)
+                                : stop_reason();
     if (world.rank == 0)
-      fmt::print(stderr, "rangesim sweep: interrupted; finished variants kept in {}; continue with:\n  {}{}\n",
+      fmt::print(stderr, "rangesim sweep: {}; finished variants kept in {}; continue with:\n  {}{}\n", why,
                  fs::path(journal.path()).parent_path().string(), world.size > 1 ? "mpirun ... " : "",
                  resume_command(opt, dir));
-    return kExitInterrupted;
+    return code;
   }
   if (world.size > 1) {  // rank 0 gathers every rank's rows, in variant order
     nlohmann::json mine = nlohmann::json::array();
@@ -268,7 +275,7 @@ int run_merge(const MergeOptions& opt) {
   if (opt.parts.empty())
     throw UserError("merge: give the shard files, e.g. rangesim merge --out DIR part1/sweep.shard-1-of-2.json ...");
   // The output folder first: a bad --out is refused before the shards are read.
-  OutputDir out(opt.out.empty() ? "rangesim-out/sweep/merged" : opt.out, "--out");
+  OutputDir out(opt.out.empty() ? "rangesim-out/sweep/merged" : opt.out, "--out", OutputFolder{"sweep", opt.force});
   std::vector<SweepRow> rows;
   std::optional<SweepHeader> h;
   std::uint64_t hash = 0;
