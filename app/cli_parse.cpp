@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <ostream>
 
@@ -224,7 +225,17 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "tof-lockin: integrate the received pulse's overlap with the gate windows numerically at this\n"
                   "step in seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default)\n"
                   "= exact. Error falls and cost rises as the step shrinks")
-      ->check(real_in(0, false, 1, "s"));
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            // Any number passes: the model's check names the range of its preset (T0 / 1e5 .. T0).
+            char* end = nullptr;
+            std::strtod(s.c_str(), &end);
+            return !s.empty() && *end == '\0' ? std::string()
+                                              : "'" + s +
+                                                    "' is not a number; allowed 0 (exact) or a step in seconds "
+                                                    "from source.pulse_width_s / 1e5 to source.pulse_width_s";
+          },
+          ""));
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(

@@ -49,8 +49,10 @@ int stop_exit_code();       // 128 + signal, or kExitBudget
 std::string stop_reason();  // "interrupted (SIGINT, Ctrl-C)", "--max-memory 1G exceeded (...)", ...
 
 // The budgets of this run, counted from the start of the process. The memory budget is watched
-// for every run (resident size, every 0.1 s); the time budget only ends runs outside a StopGuard:
-// a guarded sweep checks time_budget_left() between its points itself.
+// for every run (resident size, every 0.1 s; without --max-memory, 90% of the memory available at
+// the start, so a run that would be killed for memory ends with a message instead); the time
+// budget only ends runs outside a StopGuard: a guarded sweep checks time_budget_left() between its
+// points itself.
 struct RunBudget {
   double max_seconds = 0;                         // 0: none
   std::uint64_t max_memory_bytes = 0;             // 0: none
@@ -61,7 +63,8 @@ const RunBudget& run_budget();
 double seconds_since_start();
 double time_budget_left();  // seconds; +inf without a time budget
 std::uint64_t resident_bytes();
-std::string bytes_text(double bytes);  // "1.5 GiB"
+std::uint64_t available_memory_bytes();  // MemAvailable of /proc/meminfo (0 when unknown)
+std::string bytes_text(double bytes);    // "1.5 GiB"
 
 // The command line of this run (main()), for lock files and messages.
 void set_command_line(int argc, const char* const* argv);
