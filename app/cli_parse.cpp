@@ -202,7 +202,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->type_name("KEY=VALUE");
   sim->add_option("--trace", sim_opt.trace,
                   "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
-                  "gtkwave package); off by default");
+                  "gtkwave package); off by default")
+      ->check(kPath);
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)")->check(kPath);
   sim->add_flag("--force", sim_opt.force,
                 "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");

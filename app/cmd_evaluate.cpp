@@ -11,6 +11,7 @@
 #include "app/output_dir.h"
 #include "app/plot.h"
 #include "app/progress_line.h"
+#include "app/run_control.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 #include "golden/common/evaluate_sensor.h"
@@ -21,8 +22,24 @@ namespace {
 
 // Golden models report progress through a plain function pointer, hence the one line here.
 ProgressLine* g_progress = nullptr;
+double g_grid_start_s = 0;  // seconds since the start of the process when the grid began
+
+// A run that cannot finish within --max-seconds at the pace of its first points ends at once
+// rather than when the budget is spent.
+void check_pace(int done, int total) {
+  const double budget = run_budget().max_seconds, spent = seconds_since_start() - g_grid_start_s;
+  if (budget <= 0 || done <= 0 || done >= total || (spent < 1.0 && 100.0 * done < total)) return;
+  const double projected = g_grid_start_s + spent * total / done;
+  if (projected > budget)
+    end_run_over_budget(
+        fmt::format("--max-seconds {}: the grid would take ~{:.0f} s ({} points, {} done in {:.1f} s); "
+                    "raise --max-seconds or reduce --signal/--background N",
+                    run_budget().max_seconds_text, projected, total, done, spent));
+}
+
 void report_progress(int done, int total) {
   if (g_progress) g_progress->update(done, total);
+  check_pace(done, total);
 }
 
 // The schema key that starts with `prefix` (e.g. "evaluation.signal_min_"), or "".
@@ -107,6 +124,7 @@ int run_evaluate(const EvaluateOptions& opt) {
 
   ProgressLine progress("evaluate", "operating points");
   g_progress = &progress;
+  g_grid_start_s = seconds_since_start();
   // The grid goes to its files row by row: memory stays bounded for any grid.
   GridWriter grid(out);
   const golden::EvalResult ev = golden::evaluate_sensor_streamed(params, grid, &report_progress);

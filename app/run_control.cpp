@@ -235,6 +235,12 @@ void start_budget(const RunBudget& budget) {
 
 const RunBudget& run_budget() { return g_budget; }
 
+void end_run_over_budget(const std::string& message) {
+  static std::string text;
+  text = "\nrangesim: " + message + "; temporary files removed, nothing written\n";
+  end_now(kExitBudget, text.c_str());
+}
+
 double seconds_since_start() { return std::chrono::duration<double>(Clock::now() - g_start).count(); }
 
 double time_budget_left() {

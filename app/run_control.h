@@ -59,6 +59,9 @@ struct RunBudget {
   std::string max_seconds_text, max_memory_text;  // as given, for messages
 };
 void start_budget(const RunBudget& budget);
+// Ends the run now as a budget that ran out does (cleanup, `message`, kExitBudget): for a run whose
+// pace shows it cannot finish within --max-seconds.
+[[noreturn]] void end_run_over_budget(const std::string& message);
 const RunBudget& run_budget();
 double seconds_since_start();
 double time_budget_left();  // seconds; +inf without a time budget
