@@ -91,9 +91,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
           "; a path to a\n"
           "preset .toml file works wherever a sensor is expected, and --set KEY=VALUE changes it.\n"
           "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
-          "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out or cosim found\n"
-          "mismatches, 130 interrupted (Ctrl-C); evaluate's 4 and 130 and sweep's 130 keep the journal\n"
-          "and print the command that resumes.",
+          "3 sensor not modelled yet for the command, 4 a budget ran out (--max-seconds, --max-memory) or\n"
+          "cosim found mismatches, 128 + the signal when stopped by one (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP);\n"
+          "a journaled sweep (evaluate --trials, sweep, bench, cosim all) keeps its journal and prints the\n"
+          "command that resumes. An output folder has one writer at a time; another command's results in it\n"
+          "are replaced only with --force.",
       "rangesim"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rangesim 0.1.0");
@@ -167,7 +169,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->check(real_in(0, true, 1e9, "s"));
   ev->add_flag("--resume", ev_opt.resume,
                "Monte Carlo: continue the interrupted sweep whose journal is in --out (same options required);\n"
-               "the output is byte-identical to an uninterrupted run. Exit codes: 130 interrupted (Ctrl-C), 4 budget");
+               "the output is byte-identical to an uninterrupted run. Exit codes: 130, 143, 129 stopped by Ctrl-C,\n"
+               "SIGTERM, SIGHUP; 4 a budget ran out");
 
   FrameRateOptions& fr_opt = c.frame_rate;
   auto* fr = app.add_subcommand("frame-rate", "Frame time from the clock schedule, by phase, and the rates");
