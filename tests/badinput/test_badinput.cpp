@@ -125,7 +125,9 @@ TEST_P(BadInput, ExitsWithCode2AndAClearMessageAndWritesNothing) {
   if (!c.preset.empty() || c.text) std::ofstream(file, std::ios::binary) << edited_preset(c);
   if (!c.make_file.empty()) std::ofstream(tmp + "/" + c.make_file) << "not a directory\n";
   if (!c.make_dir.empty()) fs::create_directory(tmp + "/" + c.make_dir);
-  if (!c.make_fifo.empty()) ASSERT_EQ(::mkfifo((tmp + "/" + c.make_fifo).c_str(), 0644), 0);
+  if (!c.make_fifo.empty()) {
+    ASSERT_EQ(::mkfifo((tmp + "/" + c.make_fifo).c_str(), 0644), 0);
+  }
   if (!c.make_loop.empty()) fs::create_symlink(c.make_loop, tmp + "/" + c.make_loop);
   const std::string args = substitute(c.args, vars);
 
@@ -147,7 +149,9 @@ TEST_P(BadInput, ExitsWithCode2AndAClearMessageAndWritesNothing) {
                 name == c.make_loop)
         << "left behind: " << e.path();
   }
-  if (!c.make_dir.empty()) EXPECT_TRUE(fs::is_empty(tmp + "/" + c.make_dir)) << "written into " << c.make_dir;
+  if (!c.make_dir.empty()) {
+    EXPECT_TRUE(fs::is_empty(tmp + "/" + c.make_dir)) << "written into " << c.make_dir;
+  }
   fs::remove_all(tmp);
 }
 

@@ -1,10 +1,9 @@
 #include "child_process.h"
+#include "run_command.h"
 
 #include <chrono>
 #include <csignal>
 #include <fcntl.h>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -12,13 +11,6 @@
 #include <unistd.h>
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 pid_t spawn(const std::vector<std::string>& argv, const std::string& cwd, const std::string& out,
             const std::string& err, unsigned long long address_space) {
@@ -65,8 +57,8 @@ ChildResult collect(pid_t pid, const std::string& out, const std::string& err, d
   r.max_rss_kib = usage.ru_maxrss;
   if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = read_text_file(out);
+  r.err = read_text_file(err);
   ::unlink(out.c_str());
   ::unlink(err.c_str());
   return r;
