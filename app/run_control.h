@@ -19,7 +19,8 @@ namespace rangesim::app {
 
 inline constexpr int kExitBudget = 4;  // --max-seconds or --max-memory ran out
 
-// Installs the handlers of SIGINT, SIGTERM and SIGHUP (main(), once).
+// Installs the handlers of SIGINT, SIGTERM and SIGHUP (main(), once); a signal ignored by the
+// caller (nohup) stays ignored.
 void install_stop_handlers();
 
 // Paths removed when a run is ended at once; `tree` removes a folder with its contents, otherwise

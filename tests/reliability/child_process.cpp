@@ -26,6 +26,10 @@ pid_t spawn(const std::vector<std::string>& argv, const std::string& cwd, const 
     const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (o < 0 || e < 0) ::_exit(127);
     ::dup2(o, 1), ::dup2(e, 2);
+    // A test run from a background job inherits ignored signals; the child must see them.
+    struct sigaction dfl {};
+    dfl.sa_handler = SIG_DFL;
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &dfl, nullptr);
     if (address_space > 0) {
       struct rlimit r {
         address_space, address_space
