@@ -217,6 +217,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "tof-spad, ls-demodulation): its Verilog parameters come from the preset, the RTL is verilated\n"
       "and compiled at run time (needs verilator) and cached in $RANGESIM_RTL_CACHE (default\n"
       "$XDG_CACHE_HOME/rangesim/rtl, else ~/.cache/rangesim/rtl).\n"
+      "--rtl FILE.sv co-simulates your own Verilog instead: its modules replace the rangesim blocks of\n"
+      "the same name inside the readout (ports as in docs/rtl-contract.md, checked first), same\n"
+      "harness and scoreboard; with a sensor target it runs that target's instance, with a preset file\n"
+      "that preset's architecture.\n"
       "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input,\n"
       "130 interrupted (Ctrl-C; 'all' keeps its journal and prints the command that resumes).");
   co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), 'all', or a preset file (.toml)");
@@ -228,6 +232,14 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
   co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
   co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");
+  co->add_option("--coverage-out", co_opt.coverage_out,
+                 "Write the RTL coverage counters in Verilator's coverage.dat format to this file, for\n"
+                 "verilator_coverage --annotate ('all': FILE_<target>.dat)");
+  co->add_option("--rtl", co_opt.rtl,
+                 "Your Verilog file (repeatable): its modules replace the rangesim blocks of the same name in a\n"
+                 "sensor's readout (ls-conventional, tof-spad, ls-demodulation or a preset file of one)")
+      ->type_name("FILE.sv");
+  co->add_option("--top", co_opt.top, "With --rtl: the block your files implement (default: every block they define)");
   co->add_option(
       "--inject-fault", co_opt.inject_fault,
       "Run with this named fault of the target (see --list; a preset takes its sensor's); it must be reported");

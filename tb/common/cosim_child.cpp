@@ -83,7 +83,9 @@ std::string cosim_report_file_text(const CosimReport& r, const RtlCoverage& cov)
                {"line_points", cov.line_points},
                {"line_hit", cov.line_hit},
                {"toggle_points", cov.toggle_points},
-               {"toggle_hit", cov.toggle_hit}};
+               {"toggle_hit", cov.toggle_hit},
+               {"uncovered_lines", cov.uncovered_lines},
+               {"data", cov.data}};
   return json{{"report", rep}, {"coverage", c}}.dump();
 }
 
@@ -119,6 +121,8 @@ void parse_cosim_report_file(const std::string& text, CosimReport& r, RtlCoverag
   cov.line_hit = c.at("line_hit").get<long long>();
   cov.toggle_points = c.at("toggle_points").get<long long>();
   cov.toggle_hit = c.at("toggle_hit").get<long long>();
+  cov.uncovered_lines = c.at("uncovered_lines").get<std::map<std::string, std::set<int>>>();
+  cov.data = c.at("data").get<std::string>();
 }
 
 int run_cosim_child(int argc, char** argv, PresetCosimRunner runner) {

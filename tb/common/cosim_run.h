@@ -15,6 +15,8 @@ namespace rangesim::tb {
 
 template <class Top>
 void run_cosim_top(Top& top, const std::string& trace_path, sc_core::sc_time period, long long cycles) {
+  // Each top ends its run with sc_stop(): SystemC's "Simulation stopped by user" says nothing.
+  sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
   std::unique_ptr<VerilatedVcdSc> tf;
   if (!trace_path.empty()) {

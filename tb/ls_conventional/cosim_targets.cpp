@@ -22,9 +22,12 @@ CosimReport run_ls(const CosimOptions& o, bool full) {
 
 // `rangesim cosim <ls-conventional preset>`: the readout at the preset's parameters.
 RtlBuildSpec preset_readout(const ParamSet& preset) {
-  return {"ls_conventional", "ls_conventional_readout",
+  return {"ls_conventional",
+          "ls_conventional_readout",
           verilog_parameters(ls_conventional_from_params(preset), preset.origin()),
-          "tb/ls_conventional/cosim_harness.h", "rangesim::tb::run_ls_conventional_preset"};
+          "tb/ls_conventional/cosim_harness.h",
+          "rangesim::tb::run_ls_conventional_preset",
+          {}};
 }
 CosimReport run_ls_small(const CosimOptions& o) { return run_ls(o, false); }
 CosimReport run_ls_full(const CosimOptions& o) { return run_ls(o, true); }
@@ -103,7 +106,7 @@ std::vector<CosimTarget> ls_conventional_cosim_targets() {
 }
 
 std::vector<PresetCosim> ls_conventional_preset_cosims() {
-  return {{"ls-conventional", "ls-conventional", &preset_readout}};
+  return {{"ls-conventional", "ls-conventional", "rtl/ls_conventional/instances/small.toml", &preset_readout}};
 }
 
 }  // namespace rangesim::tb
