@@ -112,6 +112,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_option("--trace", sim_opt.trace,
                   "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
                   "gtkwave package); off by default");
+  sim->add_option("--trace-rows", sim_opt.trace_rows,
+                  "With --trace: the rows whose address search and centre processor the waveform shows, e.g. 0,5,9\n"
+                  "(ls-conventional; default: first, quarter, middle, last)")
+      ->delimiter(',')
+      ->type_name("LIST");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)");
   sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");
   sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");

@@ -80,6 +80,11 @@ int run_simulate(const SimulateOptions& opt) {
         fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
                     "step; allowed with {} (or 0)",
                     params.sensor_id(), allowed(&SimulateEntry::time_step)));
+  if (!opt.trace_rows.empty() && !entry->trace_rows)
+    throw UserError(fmt::format("--trace-rows: the {} waveform has no per-row blocks to choose; allowed with {}",
+                                params.sensor_id(), allowed(&SimulateEntry::trace_rows)));
+  if (!opt.trace_rows.empty() && opt.trace.empty())
+    throw UserError("--trace-rows chooses what --trace writes; add --trace");
   return run_and_render(opt, params, *entry);
 }
 

@@ -18,6 +18,7 @@ struct SimulateOptions {
   std::optional<long long> frames;    // --frames N: frame accesses (default: one range map = beam_positions)
   std::uint64_t seed = 1;             // --seed S: key of the noise streams
   std::string trace;                  // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
+  std::vector<int> trace_rows;        // --trace-rows: rows the waveform shows (empty: the sensor's choice)
   std::string out;                    // --out DIR ("" -> rangesim-out/simulate/<scene name>)
   bool json = false;                  // --json: summary.json to stdout instead of the table
   bool kernel_only = false;           // --kernel-only: bare C++ kernels, no SystemC elaboration

@@ -28,6 +28,7 @@ systemc::SimulationRequest request(const SimulateOptions& opt) {
   r.dense = opt.dense;
   r.no_aggregate = opt.no_aggregate;
   r.time_step_s = opt.time_step_s;
+  r.trace_rows = opt.trace_rows;
   return r;
 }
 

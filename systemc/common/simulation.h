@@ -29,6 +29,7 @@ struct SimulationRequest {
   bool dense = false;               // --dense: every pixel (no sparse window)
   bool no_aggregate = false;        // --no-aggregate: periods / laser cycles one by one
   double time_step_s = 0;           // --time-step S (0 = exact closed form)
+  std::vector<int> trace_rows;      // --trace-rows: rows whose blocks the waveform shows (empty: the sensor's choice)
 };
 
 // What the run asks of the command around it, at the points where the sensor's checks allow:

@@ -50,7 +50,13 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
   SensorRunOptions run;
   run.frames = frames;
   run.vcd_base = vcd_base;
-  for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
+  run.traced_rows = req.trace_rows;
+  if (run.traced_rows.empty())
+    for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
+  for (int r : run.traced_rows)
+    if (r < 0 || r >= cfg.pixel.rows)
+      throw UserError(
+          fmt::format("--trace-rows {}: allowed 0..{} (pixel.rows = {})", r, cfg.pixel.rows - 1, cfg.pixel.rows));
   run.progress = host.progress("frame access", frames);
   const StimulusSource source = [&optics](std::uint64_t f, FrameStimulus& s) { optics.stimulus(f, s); };
   SensorRunResult res =
@@ -224,7 +230,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_conventional_simulate_entry() {
-  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false};
+  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false, true};
   return e;
 }
 
