@@ -136,6 +136,13 @@ void bind_address_search(py::module_& k) {
             // The row is read only when this edge latches it; then it must be given and fit.
             if (!rst && start && s.idle()) {
               if (act.is_none()) bad_argument("act", "act: start on an idle search latches a row; give it");
+              if (py::isinstance<ActivationRow>(act)) {  // no copy: the common case of a testbench loop
+                const auto& row = act.cast<const ActivationRow&>();
+                if (row.columns() == s.config().columns) {
+                  s.tick(rst, start, row);
+                  return s.pins();
+                }
+              }
               s.tick(rst, start, row_for(s, act));
             } else {
               static const ActivationRow unused;

@@ -1,5 +1,7 @@
 """The example scripts of examples/python run: the testbench passes, and each of its faults is
-caught; the accuracy map is drawn with matplotlib and written as arrays without it."""
+caught; the accuracy map is drawn with matplotlib and written as arrays without it; the overhead
+benchmark (python/bench) runs."""
+import json
 import os
 import subprocess
 import sys
@@ -69,6 +71,18 @@ class Examples(unittest.TestCase):
             self.assertEqual(arrays["accuracy_mm"].shape, (9, 9))
             self.assertEqual(str(arrays["reasons"][0]), "detectable")
             self.assertTrue(np.any(np.isfinite(arrays["accuracy_mm"])))
+
+    def test_kernel_step_bench_runs(self):
+        # The overhead benchmark of docs/python.md, tiny: every step has both its numbers.
+        script = os.path.join(SOURCE, "python", "bench", "kernel_step_bench.py")
+        p = subprocess.run([sys.executable, "-B", script, "--steps", "2000", "--cpp-steps", "20000", "--json"],
+                           capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        rows = json.loads(p.stdout)["rows"]
+        self.assertEqual(len(rows), 6)
+        for r in rows:
+            self.assertGreater(r["cpp_ns"], 0, r)
+            self.assertGreater(r["python_ns"], 0, r)
 
 
 if __name__ == "__main__":
