@@ -1,6 +1,8 @@
 """Bad input raises rangesim.Error (a ValueError) with the command line's message, naming the key
 (Error.key and the text); nothing is written anywhere."""
 import os
+import subprocess
+import sys
 import tempfile
 import unittest
 
@@ -100,6 +102,24 @@ class Errors(unittest.TestCase):
         self.same_as_cli(lambda: lc.simulate(os.path.join(SCENES, "plane.toml"), no_aggregate=True), "no_aggregate",
                          "simulate", "ls-conventional", "--scene", os.path.join(SCENES, "plane.toml"),
                          "--no-aggregate", "--kernel-only")
+
+    def test_systemc_once_per_process(self):
+        # In a child process: the SystemC run equals the kernels' and a second one is refused.
+        child = (
+            "import os, sys, rangesim\n"
+            "s = rangesim.load('tof-spad')\n"
+            "scene = os.path.join(sys.argv[1], 'tof-spad-plane.toml')\n"
+            "k, m = s.simulate(scene, seed=2), s.simulate(scene, seed=2, systemc=True)\n"
+            "assert m.summary['harness'] == 'systemc' and k.summary['harness'] == 'kernel'\n"
+            "assert m.points_csv == k.points_csv and m.frames_csv == k.frames_csv\n"
+            "assert m.summary['cycles'] == k.summary['cycles']\n"
+            "try:\n"
+            "    s.simulate(scene, systemc=True)\n"
+            "except rangesim.Error as e:\n"
+            "    print('refused', e.key, e)\n")
+        p = subprocess.run([sys.executable, "-B", "-c", child, SCENES], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn("refused systemc systemc=True: SystemC elaborates once per process", p.stdout)
 
     def test_kernel_arguments(self):
         lc = rangesim.load("ls-conventional")
