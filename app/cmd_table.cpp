@@ -55,7 +55,8 @@ std::string difference(double ours, double thesis, const std::string& unit) {
   return fmt::format("{:+.3g}x", ours / thesis);
 }
 
-int g_sensor_index = 0, g_sensor_count = 0;
+// Per thread: the Python module may build tables on several threads at once.
+thread_local int g_sensor_index = 0, g_sensor_count = 0;
 void table_progress(int done, int total) {
   if (done == total || done % 200 == 0)
     std::fprintf(stderr, "%stable: sensor %d/%d, %d/%d operating points%s", isatty(fileno(stderr)) ? "\r" : "",

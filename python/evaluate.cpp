@@ -48,7 +48,7 @@ std::optional<std::string> grid_text(const py::object& values, const std::string
                                        "points (expected {:g}); {}",
                                        axis, k, v(k), lo, hi, n, grid[static_cast<std::size_t>(k)], allowed));
   }
-  return fmt::format("{:.17g}:{:.17g}:{}", lo, hi, n);
+  return fmt::format("{}:{}:{}", lo, hi, n);  // the shortest text that reads back exactly
 }
 
 py::dict axis_fields(const golden::EvalResult& ev) {

@@ -68,7 +68,7 @@ class Errors(unittest.TestCase):
         self.same_as_cli(lambda: s.evaluate(signal=np.array([0.0, 0.5, 1.0])), "signal", "evaluate",
                          "ls-conventional", "--signal", "0:1:3")
         self.same_as_cli(lambda: s.evaluate(background=np.geomspace(1.0, 0.1, 4)), "background", "evaluate",
-                         "ls-conventional", "--background", "1:0.10000000000000001:4")
+                         "ls-conventional", "--background", "1:0.1:4")
         self.same_as_cli(lambda: s.evaluate(trials=1), "trials", "evaluate", "ls-conventional", "--trials", "1")
         self.same_as_cli(lambda: s.evaluate(trials=5, max_trials=3), "max_trials", "evaluate", "ls-conventional",
                          "--trials", "5", "--max-trials", "3")

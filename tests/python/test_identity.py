@@ -15,13 +15,19 @@ from rangesim_test_util import SCENES, cli_json, g6, g9, grid, read_csv, run_cli
 WALL_CLOCK_KEYS = {"wall_time_s", "simulation_wall_time_s", "simulated_cycles_per_s", "photons_per_s"}
 
 
-class Identity(unittest.TestCase):
+class CommandCase(unittest.TestCase):
+    """A scratch folder for the command's output files."""
+
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
         self.addCleanup(self.tmp.cleanup)
 
     def out(self, name):
         return os.path.join(self.tmp.name, name)
+
+
+class Identity(CommandCase):
+    """list, show, frame-rate and evaluate (golden)."""
 
     def test_presets_is_list_json(self):
         self.assertEqual(rangesim.presets(), cli_json("list", "--json"))
@@ -51,11 +57,6 @@ class Identity(unittest.TestCase):
                 if "multisampling.samplings" in s.show()["parameters"]:
                     self.assertEqual(s.frame_rate(samplings=3),
                                      cli_json("frame-rate", s.id, "--samplings", "3", "--json"))
-
-    def test_table_is_table_json(self):
-        py = rangesim.table()
-        self.assertEqual(py, cli_json("table", "--json"))
-        self.assertGreater(py["published_total"], 0)
 
     def check_evaluation(self, r, folder):
         """Arrays against the command's CSV files, as the command formats them."""
@@ -94,6 +95,16 @@ class Identity(unittest.TestCase):
                 # The same grid given as the command's text, and through `set`, gives the same result.
                 self.assertEqual(s.evaluate(signal=sig_text, background=bg_text).summary, summary)
 
+
+
+class IdentityTable(CommandCase):
+    def test_table_is_table_json(self):
+        py = rangesim.table()
+        self.assertEqual(py, cli_json("table", "--json"))
+        self.assertGreater(py["published_total"], 0)
+
+
+class IdentityMonteCarlo(CommandCase):
     def test_evaluate_monte_carlo_is_evaluate_trials_files(self):
         for s in sensors():
             sig, bg, sig_text, bg_text = grid(s, 3, 2)
@@ -121,6 +132,9 @@ class Identity(unittest.TestCase):
                         self.assertEqual(row[name], g9(getattr(mc, name)[b, sg]), f"{name} at ({b}, {sg})")
                 self.assertTrue(np.all(np.isnan(mc.accuracy_m[mc.trials == 0])))
 
+
+
+class IdentitySimulate(CommandCase):
     def test_simulate_is_simulate_kernel_only_files(self):
         for s in sensors():
             with self.subTest(sensor=s.id):
