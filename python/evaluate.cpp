@@ -26,14 +26,11 @@ namespace {
 std::optional<std::string> grid_text(const py::object& values, const std::string& axis) {
   if (values.is_none()) return std::nullopt;
   if (py::isinstance<py::str>(values)) return values.cast<std::string>();
-  const std::string allowed = fmt::format(
+  const std::string allowed =
       "allowed: a 1-D array of ascending values > 0, log-spaced as on the command line "
-      "(numpy.geomspace(lo, hi, n), 1 <= n <= 10000), or \"LO:HI:N\"");
-  py::array_t<double, py::array::c_style | py::array::forcecast> a;
-  try {
-    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-  } catch (const py::error_already_set&) {
-  }
+      "(numpy.geomspace(lo, hi, n), 1 <= n <= 10000), or \"LO:HI:N\"";
+  // Null (the Python error cleared) when `values` is not convertible to numbers.
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
   if (!a || a.ndim() != 1 || a.size() == 0) bad_argument(axis, fmt::format("{}: {}", axis, allowed));
   const auto v = a.unchecked<1>();
   const py::ssize_t n = a.size();

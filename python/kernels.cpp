@@ -41,11 +41,8 @@ void require_range(const std::string& key, long long v, long long lo, long long 
 // An activation row from a Python value: an ActivationRow, or a sequence / array of truth values.
 ActivationRow to_row(const py::handle& act) {
   if (py::isinstance<ActivationRow>(act)) return act.cast<ActivationRow>();
-  py::array_t<bool, py::array::c_style | py::array::forcecast> bits;
-  try {
-    bits = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(act);
-  } catch (const py::error_already_set&) {
-  }
+  // Null (the Python error cleared) when `act` is not convertible to truth values.
+  const auto bits = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(act);
   if (!bits || bits.ndim() != 1)
     bad_argument("act", "act: allowed an ActivationRow or a 1-D sequence of truth values, one per column");
   ActivationRow row(static_cast<int>(bits.size()));

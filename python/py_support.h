@@ -74,7 +74,6 @@ class Interruption {
   static Interruption* current();
 
  private:
-  friend class CurrentInterruption;
   PyObject* type_ = nullptr;  // the exception a signal handler raised (owned references)
   PyObject* value_ = nullptr;
   PyObject* traceback_ = nullptr;
