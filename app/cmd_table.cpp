@@ -7,6 +7,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "app/command_data.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "core/preset.h"
@@ -54,20 +55,21 @@ std::string difference(double ours, double thesis, const std::string& unit) {
   return fmt::format("{:+.3g}x", ours / thesis);
 }
 
-int g_sensor_index = 0, g_sensor_count = 0;
+// Per thread: the Python module may build tables on several threads at once.
+thread_local int g_sensor_index = 0, g_sensor_count = 0;
 void table_progress(int done, int total) {
   if (done == total || done % 200 == 0)
     std::fprintf(stderr, "%stable: sensor %d/%d, %d/%d operating points%s", isatty(fileno(stderr)) ? "\r" : "",
                  g_sensor_index, g_sensor_count, done, total, isatty(fileno(stderr)) && done != total ? "" : "\n");
 }
 
-Column build_column(const golden::ThesisColumn& tc) {
+Column build_column(const golden::ThesisColumn& tc, golden::ProgressFn progress) {
   Column c{tc.sensor, tc.reference, false, {}, {}};
   const ParamSet params = load_preset(tc.sensor);
   c.modelled = golden::golden_model(tc.sensor) != nullptr;
   golden::EvalResult ev;
   if (c.modelled) {
-    ev = golden::evaluate_sensor(params, &table_progress);
+    ev = golden::evaluate_sensor(params, progress);
     c.published = golden::published_figures(params);
   }
   const bool total_sbr = tc.sbr_total;  // eq. 3.11, or eq. 3.23/4.11
@@ -193,24 +195,23 @@ std::string num_or_empty(double v) { return std::isfinite(v) ? fmt::format("{:.6
 
 nlohmann::json json_num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-}  // namespace
-
-int run_table(const TableOptions& opt) {
-  std::unique_ptr<OutputDir> out;
-  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out");
-
-  // The columns of the registered sensors that have one in the thesis's table, in registry order.
+// The columns of the registered sensors that have one in the thesis's table, in registry order.
+std::vector<Column> build_columns(golden::ProgressFn progress) {
   std::vector<const golden::ThesisColumn*> thesis;
   for (const auto& s : sensors())
     if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column)
       thesis.push_back(m->table_column);
   std::vector<Column> cols;
   g_sensor_count = static_cast<int>(thesis.size());
+  g_sensor_index = 0;
   for (const golden::ThesisColumn* tc : thesis) {
     ++g_sensor_index;
-    cols.push_back(build_column(*tc));
+    cols.push_back(build_column(*tc, progress));
   }
+  return cols;
+}
 
+nlohmann::json columns_json(const std::vector<Column>& cols) {
   nlohmann::json j;
   j["table_5_1"] = nlohmann::json::array();
   for (const auto& c : cols) {
@@ -249,6 +250,19 @@ int run_table(const TableOptions& opt) {
     }
   j["published_reproduced"] = reproduced;
   j["published_total"] = total;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json table_json(golden::ProgressFn progress) { return columns_json(build_columns(progress)); }
+
+int run_table(const TableOptions& opt) {
+  std::unique_ptr<OutputDir> out;
+  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out");
+  const std::vector<Column> cols = build_columns(&table_progress);
+  const nlohmann::json j = columns_json(cols);
+  const int reproduced = j["published_reproduced"].get<int>(), total = j["published_total"].get<int>();
 
   if (out) {
     std::ostringstream csv;

@@ -9,4 +9,8 @@ namespace rangesim::app {
 
 ParamSet evaluate_params(const EvaluateOptions& opt);
 
+// The grid and model flags of `evaluate` (--samplings, --adc-bits, --frames, --signal,
+// --background; the rest of `opt` is not read) applied to a loaded preset, with the same checks.
+void apply_evaluate_flags(ParamSet& params, const EvaluateOptions& opt);
+
 }  // namespace rangesim::app

@@ -13,6 +13,9 @@
 
 namespace rangesim::golden {
 
+// Called by the evaluating thread as points finish. It may throw to cancel the evaluation (the
+// Python module does on Ctrl-C): every model then stops handing out points, joins its threads and
+// lets the exception through.
 using ProgressFn = void (*)(int done, int total);
 
 struct GoldenModel {

@@ -54,7 +54,13 @@ void parallel_for(int n, F f, ProgressFn progress, int unit) {
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < std::min<unsigned>(hw, static_cast<unsigned>(n)); ++t) pool.emplace_back(work, false);
-  work(true);
+  try {
+    work(true);
+  } catch (...) {  // the progress callback cancelled the run: hand out nothing more, join, pass it on
+    next.store(n);
+    for (auto& t : pool) t.join();
+    throw;
+  }
   for (auto& t : pool) t.join();
 }
 

@@ -88,6 +88,7 @@ void add_point(Reconstruction& out, const scene::SceneOptics& optics, const Fram
   }
   if (t.visible) {
     ++out.visible;
+    out.map.truth_m[static_cast<std::size_t>(r)][f] = t.range_m;
     if (p.valid) {
       ++out.detected;
       err_px = p.centre_px() - t.centre_px;
@@ -110,6 +111,7 @@ Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics&
                            const golden::FrameTiming& gt) {
   Reconstruction out;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
+  out.map.truth_m = out.map.range_m;
   out.points =
       "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_"
       "m\n";

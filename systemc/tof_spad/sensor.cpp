@@ -115,12 +115,13 @@ SystemcRun run_tof_spad_systemc(const TofSpadKernel& kernel, const PixelSelectio
 }
 
 SystemcRun run_tof_spad_kernel(const TofSpadKernel& kernel, const PixelSelection& sel, const RateSource& rates,
-                               long long frames) {
+                               long long frames, const std::function<void(long long)>& progress) {
   SystemcRun r;
   for (long long fr = 0; fr < frames; ++fr) {
     r.frames.push_back(kernel.run_frame(static_cast<std::uint64_t>(fr), sel, rates));
     append_words(r.frames.back(), kernel.config().tdc.columns_per_tdc, r.words);
     r.measured_cycles += r.frames.back().cycles;
+    if (progress) progress(fr + 1);
   }
   r.simulated_time_s = static_cast<double>(r.measured_cycles) / kernel.clock_Hz();
   return r;
