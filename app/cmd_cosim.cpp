@@ -103,6 +103,10 @@ json report_json(const tb::CosimReport& r, const tb::RtlCoverage& cov, const std
                   {"expected", m.expected},
                   {"actual", m.actual}});
   j["first_mismatches"] = ms;
+  json checks = json::object();
+  for (const auto& [name, c] : r.checks)
+    checks[name] = {{"transactions", c.transactions}, {"mismatches", c.mismatches}};
+  j["checks"] = checks;
   j["wall_time_s"] = wall_s;
   return j;
 }
@@ -172,33 +176,85 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
+// One JUnit testcase: passes, or fails with `failures` (readable lines) as its text.
+struct JunitCase {
+  std::string classname, name;
+  double time_s = 0;
+  std::uint64_t failures = 0;
+  std::string text, out;
+};
+
+// The testcases of one run: one per check its scoreboard compared (classname the target), and
+// one "run" for what no check owns (a fault not applied, a stall); a run whose harness names no
+// checks is one testcase.
+std::vector<JunitCase> junit_cases(const json& r) {
+  const std::string target = r["target"].get<std::string>();
+  const double time_s = r["wall_time_s"].get<double>();
+  const std::string out =
+      fmt::format("cycles {} transactions {} mismatches {} golden_checks {}", r["cycles"].get<unsigned long long>(),
+                  r["transactions"].get<unsigned long long>(), r["mismatches"].get<unsigned long long>(),
+                  r["golden_checks"].get<unsigned long long>());
+  std::string fault_line;
+  if (!r["fault"].is_null())
+    fault_line =
+        "injected fault " + r["fault"]["name"].get<std::string>() + ": " + r["fault"]["site"].get<std::string>() + "\n";
+  const json checks = r.value("checks", json::object());
+  if (checks.empty()) {
+    std::string body;
+    for (const auto& m : r["first_mismatches"]) body += mismatch_line(m) + "\n";
+    return {{"rangesim.cosim", target, time_s, passed(r) ? 0 : r["mismatches"].get<std::uint64_t>(), body + fault_line,
+             out}};
+  }
+  std::vector<JunitCase> cases;
+  std::uint64_t owned = 0;
+  for (const auto& [name, c] : checks.items()) {
+    JunitCase k{"rangesim.cosim." + target,
+                name,
+                0,
+                c["mismatches"].get<std::uint64_t>(),
+                "",
+                fmt::format("transactions {} mismatches {}", c["transactions"].get<unsigned long long>(),
+                            c["mismatches"].get<unsigned long long>())};
+    for (const auto& m : r["first_mismatches"])
+      if (m["check"] == name) k.text += mismatch_line(m) + "\n";
+    if (k.failures && !fault_line.empty()) k.text += fault_line;
+    owned += k.failures;
+    cases.push_back(std::move(k));
+  }
+  const std::uint64_t rest =
+      r["mismatches"].get<std::uint64_t>() - std::min(owned, r["mismatches"].get<std::uint64_t>());
+  if (rest > 0 || (!r["fault"].is_null() && owned == 0)) {
+    JunitCase run{"rangesim.cosim." + target, "run", 0, std::max<std::uint64_t>(rest, 1), fault_line, out};
+    for (const auto& m : r["first_mismatches"])
+      if (!checks.contains(m["check"].get<std::string>())) run.text += mismatch_line(m) + "\n";
+    cases.push_back(std::move(run));
+  }
+  cases.front().time_s = time_s;  // the run's wall time, once
+  cases.front().out = out + "; " + cases.front().out;
+  return cases;
+}
+
 std::string junit_xml(const std::vector<json>& runs) {
-  int failures = 0;
+  std::vector<JunitCase> cases;
   double total = 0;
   for (const auto& r : runs) {
-    failures += passed(r) ? 0 : 1;
+    for (auto& c : junit_cases(r)) cases.push_back(std::move(c));
     total += r["wall_time_s"].get<double>();
   }
+  int failures = 0;
+  for (const auto& c : cases) failures += c.failures > 0;
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", runs.size(),
+  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", cases.size(),
                    failures, total);
   x += fmt::format("  <testsuite name=\"rangesim.cosim\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
-                   runs.size(), failures, total);
-  for (const auto& r : runs) {
-    x += fmt::format("    <testcase classname=\"rangesim.cosim\" name=\"{}\" time=\"{:.3f}\">\n",
-                     xml_escape(r["target"].get<std::string>()), r["wall_time_s"].get<double>());
-    if (!passed(r)) {
-      std::string body;
-      for (const auto& m : r["first_mismatches"]) body += mismatch_line(m) + "\n";
-      if (!r["fault"].is_null())
-        body += "injected fault " + r["fault"]["name"].get<std::string>() + ": " +
-                r["fault"]["site"].get<std::string>() + "\n";
-      x += fmt::format("      <failure message=\"{} mismatches\" type=\"mismatch\">{}</failure>\n",
-                       r["mismatches"].get<unsigned long long>(), xml_escape(body));
-    }
-    x += fmt::format("      <system-out>cycles {} transactions {} mismatches {} golden_checks {}</system-out>\n",
-                     r["cycles"].get<unsigned long long>(), r["transactions"].get<unsigned long long>(),
-                     r["mismatches"].get<unsigned long long>(), r["golden_checks"].get<unsigned long long>());
+                   cases.size(), failures, total);
+  for (const auto& c : cases) {
+    x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{:.3f}\">\n", xml_escape(c.classname),
+                     xml_escape(c.name), c.time_s);
+    if (c.failures)
+      x += fmt::format("      <failure message=\"{} mismatches\" type=\"mismatch\">{}</failure>\n", c.failures,
+                       xml_escape(c.text));
+    x += fmt::format("      <system-out>{}</system-out>\n", xml_escape(c.out));
     x += "    </testcase>\n";
   }
   x += "  </testsuite>\n</testsuites>\n";

@@ -60,6 +60,8 @@ void write_file(const std::string& path, const std::string& text) {
 }  // namespace
 
 std::string cosim_report_file_text(const CosimReport& r, const RtlCoverage& cov) {
+  json checks = json::object();
+  for (const auto& [name, c] : r.checks) checks[name] = {c.transactions, c.mismatches};
   json ms = json::array();
   for (const auto& m : r.first_mismatches)
     ms.push_back({{"check", m.check},
@@ -78,7 +80,8 @@ std::string cosim_report_file_text(const CosimReport& r, const RtlCoverage& cov)
                  {"rtl_assertions_failed", r.rtl_assertions_failed},
                  {"sc_errors", r.sc_errors},
                  {"fault_injected", r.fault_injected},
-                 {"fault_site", r.fault_site}};
+                 {"fault_site", r.fault_site},
+                 {"checks", checks}};
   const json c{{"available", cov.available},
                {"line_points", cov.line_points},
                {"line_hit", cov.line_hit},
@@ -115,6 +118,8 @@ void parse_cosim_report_file(const std::string& text, CosimReport& r, RtlCoverag
   r.sc_errors = p.at("sc_errors").get<int>();
   r.fault_injected = p.at("fault_injected").get<bool>();
   r.fault_site = p.at("fault_site").get<std::string>();
+  for (const auto& [name, c] : p.at("checks").items())
+    r.checks[name] = {c.at(0).get<std::uint64_t>(), c.at(1).get<std::uint64_t>()};
   const json& c = j.at("coverage");
   cov.available = c.at("available").get<bool>();
   cov.line_points = c.at("line_points").get<long long>();

@@ -47,6 +47,10 @@ std::string instance_preset_path(const PresetCosim& pc);
 // preset's parameters (tb/common/rtl_ports.h). UserError naming the file, module and port.
 std::vector<std::string> check_user_rtl(const RtlBuildSpec& spec, const ParamSet& preset, const std::string& top);
 
+// Keeps the cache under $RANGESIM_RTL_CACHE_MAX_MB (default 2048): removes the entries of
+// `root` used longest ago (a use touches its folder), never `keep`. UserError for a bad bound.
+void bound_rtl_cache(const std::string& root, const std::string& keep);
+
 // Path of the co-simulation executable of `spec`, verilated and compiled now unless cached.
 // Progress on stderr. UserError (exit 2) when verilator or the C++ compiler is missing or the
 // build fails (the last lines of its log are printed).

@@ -188,7 +188,7 @@ class LsCosimTop : public sc_core::sc_module {
       StreamRecord& m = rec_[0][static_cast<std::size_t>(r)];
       StreamRecord& g = rec_[1][static_cast<std::size_t>(r)];
       if (m.bits == 0 && g.bits == 0) continue;
-      report_.transactions += 2;  // left and right address
+      board_.count("address", 2);  // left and right address
       if (m.bits != g.bits || m.value != g.value || m.first_cycle != g.first_cycle || m.last_cycle != g.last_cycle) {
         const long long col = m.bits == 2 * address_bits_
                                   ? static_cast<long long>((m.value >> address_bits_) & low_mask(address_bits_))
@@ -299,7 +299,7 @@ class LsCosimTop : public sc_core::sc_module {
         report_.fault_injected = true;
         report_.fault_site = site(frame_no, r, cycle, "centre + 1 LSB");
       }
-      ++report_.transactions;
+      board_.count("centre");
       if (m != g)
         add({"centre", frame_no, r, -1, static_cast<std::uint64_t>(cycle), centre_string(m), centre_string(g)});
       // Golden: noise-free, the edge-centre estimate of the same row is exact.

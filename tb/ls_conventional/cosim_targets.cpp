@@ -60,6 +60,9 @@ CosimReport run_address_search(const CosimOptions& o) {
   r.cycles = static_cast<std::uint64_t>(a.cycles);
   r.transactions = static_cast<std::uint64_t>(a.transactions_compared);
   r.mismatches = static_cast<std::uint64_t>(a.mismatch_count) + (a.rtl_assertion_failed ? 1 : 0) + (a.finished ? 0 : 1);
+  r.checks["address_search"] = {r.transactions, static_cast<std::uint64_t>(a.mismatch_count)};
+  if (!a.finished) r.checks["run"].mismatches = 1;
+  if (a.rtl_assertion_failed) r.checks["rtl_assertion"].mismatches = 1;
   for (const std::string& m : a.mismatches) r.first_mismatches.push_back({"address_search", -1, -1, -1, 0, "", m});
   if (!a.finished) r.first_mismatches.push_back({"run", -1, -1, -1, 0, "all operations done", "stalled"});
   if (a.rtl_assertion_failed)
