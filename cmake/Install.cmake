@@ -60,7 +60,7 @@ if(TARGET rangesim_cosim_kit)
   install(FILES
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_scoreboard.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_run.h"
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_ports.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_target.h"
-    "${PROJECT_SOURCE_DIR}/tb/common/cosim_coverage.h"
+    "${PROJECT_SOURCE_DIR}/tb/common/cosim_coverage.h" "${PROJECT_SOURCE_DIR}/tb/common/vcd_merge.h"
     DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/tb/common")
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/rtl/"
     DESTINATION "${CMAKE_INSTALL_DATADIR}/rangesim/rtl"

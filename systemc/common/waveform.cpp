@@ -16,14 +16,17 @@ constexpr unsigned kRjustify = 0x20, kHex = 0x2, kDec = 0x4, kBin = 0x8, kFileFi
 
 }  // namespace
 
-Waveform::Waveform(const std::string& vcd_base) : base_(vcd_base) {
+Waveform::Waveform(const std::string& vcd_base, bool save_file) : base_(vcd_base), save_file_(save_file) {
   if (base_.empty()) return;
   const fs::path folder = fs::path(base_).parent_path();
   if (!folder.empty()) fs::create_directories(folder);
   tf_ = sc_core::sc_create_vcd_trace_file(base_.c_str());
   // The kernel's own resolution: every time the kernel can reach is representable.
   const double res = sc_core::sc_get_time_resolution().to_seconds();
+  // SystemC reports the unit as an info message: nothing a reader needs.
+  const sc_core::sc_actions info = sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   tf_->set_time_unit(1, res < 1e-14 ? sc_core::SC_FS : res < 1e-11 ? sc_core::SC_PS : sc_core::SC_NS);
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, info);
 }
 
 Waveform::~Waveform() { close(); }
@@ -32,7 +35,7 @@ void Waveform::close() {
   if (!tf_) return;
   sc_core::sc_close_vcd_trace_file(tf_);
   tf_ = nullptr;
-  write_save_file();
+  if (save_file_) write_save_file();
 }
 
 void Waveform::write_save_file() const {

@@ -25,7 +25,8 @@ class Waveform {
   using ValueNames = std::vector<std::pair<long long, std::string>>;
 
   // Opens <vcd_base>.vcd (creating its folder); "" = off (every call below is a no-op).
-  explicit Waveform(const std::string& vcd_base);
+  // `save_file` false: the VCD only (a part merged into another trace).
+  explicit Waveform(const std::string& vcd_base, bool save_file = true);
   ~Waveform();  // close()
   Waveform(const Waveform&) = delete;
   Waveform& operator=(const Waveform&) = delete;
@@ -67,6 +68,7 @@ class Waveform {
   void write_save_file() const;
 
   std::string base_;
+  bool save_file_ = true;
   sc_core::sc_trace_file* tf_ = nullptr;
   std::vector<Signal> signals_;
 };
