@@ -1,9 +1,11 @@
 #include "app/cli_common.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
 
+#include "core/grid_rules.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 
@@ -45,6 +47,12 @@ GridAxis parse_grid_axis(const std::string& text, const std::string& flag) {
   if (g.lo > g.hi)
     throw UserError(fmt::format("{} {}: LO = {:g} > HI = {:g}; allowed: 0 < LO <= HI", flag, text, g.lo, g.hi),
                     key_of(flag));
+  if (const std::string problem = log_grid_problem(g.lo, g.hi); !problem.empty())
+    throw UserError(
+        fmt::format("{} {}: the log-spaced grid has points that are not finite ({}); allowed: {} <= LO "
+                    "and HI / LO <= {}",
+                    flag, text, problem, DBL_MIN, DBL_MAX),
+        key_of(flag));
   if (!(n >= 1 && n <= 10000 && n == std::floor(n)))
     throw UserError(fmt::format("{} {}: N = {:g} must be an integer in [1, 10000]", flag, text, n), key_of(flag));
   g.n = static_cast<int>(n);

@@ -2,12 +2,85 @@
 #include "app/cli_parse.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdint>
+#include <limits>
 #include <ostream>
 
+#include "app/cli_checks.h"
 #include "app/cli_common.h"
 #include "core/sensor_registry.h"
 
 namespace rangesim::app {
+
+namespace {
+
+// Validators run on the flag's text before CLI11 converts it (app/cli_checks.h); an empty
+// description keeps --help as it is.
+CLI::Validator integer_in(long long lo, long long hi) {
+  return CLI::Validator([lo, hi](std::string& s) { return check_integer_text(s, lo, hi); }, "");
+}
+CLI::Validator unsigned_in(std::uint64_t lo, std::uint64_t hi) {
+  return CLI::Validator([lo, hi](std::string& s) { return check_unsigned_text(s, lo, hi); }, "");
+}
+CLI::Validator real_in(double lo, bool lo_exclusive, double hi, const std::string& unit) {
+  return CLI::Validator([=](std::string& s) { return check_real_text(s, lo, lo_exclusive, hi, unit); }, "");
+}
+const CLI::Validator kPath(check_path_text, "");
+constexpr std::uint64_t kMaxU64 = std::numeric_limits<std::uint64_t>::max();
+
+// Any integer passes here, so that the check made where the value is used names its key and the
+// sensor's range; text that is not one (or beyond 64 bits) is refused with the range [lo, hi].
+std::string any_integer(std::string& s, long long lo, long long hi) {
+  std::string wide = s;
+  if (!check_integer_text(wide, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max()).empty())
+    return check_integer_text(s, lo, hi);
+  s = wide;
+  return "";
+}
+
+// A flag that sets a preset key (--samplings, --adc-bits, --frames): any_integer, with the widest
+// range of the keys ending in `suffix` over the registered sensors.
+CLI::Validator schema_integer(const std::string& suffix) {
+  return CLI::Validator(
+      [suffix](std::string& s) {
+        double lo = 0, hi = -1;
+        for (const auto& sensor : sensors())
+          for (const auto& p : sensor.schema().params)
+            if (p.kind == ParamKind::Integer && p.key.size() >= suffix.size() &&
+                p.key.compare(p.key.size() - suffix.size(), suffix.size(), suffix) == 0) {
+              const double a = p.min_exclusive ? p.min + 1 : p.min;
+              lo = hi < lo ? a : std::min(lo, a), hi = std::max(hi, p.max);
+            }
+        if (hi < lo) lo = std::numeric_limits<int>::min(), hi = std::numeric_limits<int>::max();
+        return any_integer(s, static_cast<long long>(lo), static_cast<long long>(hi));
+      },
+      "");
+}
+
+// --max-memory of a long command: its resident size is watched and the run refused up front when
+// its estimate exceeds it (app/run_control.h).
+void add_max_memory(CLI::App* sub, ParsedCommand& c) {
+  sub->add_option("--max-memory", c.max_memory,
+                  "Memory budget, e.g. 512M or 2G (16M..1024T): a run whose estimate exceeds it is refused up\n"
+                  "front, one that grows beyond it ends writing nothing (exit 4); default: the memory available")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            std::uint64_t bytes = 0;
+            return check_memory_text(s, bytes);
+          },
+          ""));
+}
+
+void add_budgets(CLI::App* sub, ParsedCommand& c) {
+  sub->add_option("--max-seconds", c.max_seconds,
+                  "Wall-time budget of the command: when exceeded the run ends writing nothing and exits 4\n"
+                  "(a sweep keeps its journal and prints how to resume)")
+      ->check(real_in(0, true, 1e9, "s"));
+  add_max_memory(sub, c);
+}
+
+}  // namespace
 
 CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App app{
@@ -56,27 +129,41 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                  "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
                  "tof-lockin), Hz count rate (tof-spad) (default: preset)");
   ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
-  ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)");
+  ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)")
+      ->transform(schema_integer("multisampling.samplings"));
   ev->add_option("--adc-bits", ev_opt.adc_bits,
-                 "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)");
-  ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)");
-  ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)");
+                 "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)")
+      ->transform(schema_integer(".adc_bits"));
+  ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)")
+      ->transform(schema_integer("evaluation.frames_averaged"));
+  ev->add_option("--out", ev_opt.out, "Output directory (default: rangesim-out/<sensor>)")->check(kPath);
+  ev->add_flag("--force", ev_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_max_memory(ev, c);
   ev->add_flag("--json", ev_opt.json, "Print summary.json to stdout instead of the table");
   ev->add_flag("--no-plots", ev_opt.no_plots, "Skip the PNG/SVG heat maps");
   // Monte Carlo evaluation (app/montecarlo/, docs/evaluate-montecarlo.md).
   ev->add_option("--trials", ev_opt.trials,
                  "Monte Carlo: run the clock-level kernels with noise N times at every detectable grid point\n"
                  "(2..10000000) and report every accuracy value with its 95% confidence interval (mc_points.csv,\n"
-                 "mc_*.csv maps, mc_accuracy.png, summary.json monte_carlo)");
+                 "mc_*.csv maps, mc_accuracy.png, summary.json monte_carlo)")
+      ->transform(integer_in(2, 10000000));
   ev->add_option("--target-error", ev_opt.target_error,
                  "Monte Carlo: add trials per point until the 95% CI half-width of the accuracy is <= E metres\n"
-                 "(starts with --trials, default 100; stops at --max-trials with a warning)");
-  ev->add_option("--max-trials", ev_opt.max_trials, "Monte Carlo: trial budget per point (default 100000)");
+                 "(starts with --trials, default 100; stops at --max-trials with a warning)")
+      ->check(real_in(0, true, 1e6, "m"));
+  ev->add_option("--max-trials", ev_opt.max_trials, "Monte Carlo: trial budget per point (default 100000)")
+      ->transform(integer_in(2, 1000000000));
   ev->add_option("--threads", ev_opt.threads,
-                 "Monte Carlo: worker threads, 1..1024 (default: all cores); results are bit-identical for any count");
-  ev->add_option("--seed", ev_opt.seed, "Monte Carlo: key of the random streams (default 1)");
+                 "Monte Carlo: worker threads, 1..1024 (default: all cores); results are bit-identical for any count")
+      ->transform(integer_in(1, 1024));
+  ev->add_option("--seed", ev_opt.seed, "Monte Carlo: key of the random streams, 0..2^64-1 (default 1)")
+      ->transform(unsigned_in(0, kMaxU64));
   ev->add_option("--max-seconds", ev_opt.max_seconds,
-                 "Monte Carlo: wall-time budget; when exceeded the sweep stops, keeps its journal and exits 4");
+                 "Wall-time budget of the command: when exceeded the run ends writing nothing and exits 4 (a\n"
+                 "grid that would take longer is refused once its pace is known); Monte Carlo: the sweep stops,\n"
+                 "keeps its journal and exits 4")
+      ->check(real_in(0, true, 1e9, "s"));
   ev->add_flag("--resume", ev_opt.resume,
                "Monte Carlo: continue the interrupted sweep whose journal is in --out (same options required);\n"
                "the output is byte-identical to an uninterrupted run. Exit codes: 130 interrupted (Ctrl-C), 4 budget");
@@ -84,7 +171,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   FrameRateOptions& fr_opt = c.frame_rate;
   auto* fr = app.add_subcommand("frame-rate", "Frame time from the clock schedule, by phase, and the rates");
   fr->add_option("sensor", fr_opt.sensor, "Preset id or path to a .toml file")->required();
-  fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)");
+  fr->add_option("--samplings", fr_opt.samplings, "Samplings per frame access (default: preset)")
+      ->transform(schema_integer("multisampling.samplings"));
   fr->add_flag("--json", fr_opt.json, "Print JSON");
   fr->add_option("--set", fr_opt.settings,
                  "Set a parameter after the preset, KEY=VALUE (repeatable), e.g. --set timing.clock_Hz=50e6;\nchecked "
@@ -104,8 +192,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
       ->required();
   sim->add_option("--frames", sim_opt.frames,
-                  "Frame accesses to simulate (default: one range map = timing.beam_positions)");
-  sim->add_option("--seed", sim_opt.seed, "Seed of the noise streams (default: 1)");
+                  "Frame accesses to simulate (default: one range map = timing.beam_positions)")
+      ->transform(CLI::Validator([](std::string& s) { return any_integer(s, 1, 1000000); }, ""));
+  sim->add_option("--seed", sim_opt.seed, "Seed of the noise streams, 0..2^64-1 (default: 1)")
+      ->transform(unsigned_in(0, kMaxU64));
   sim->add_option("--set", sim_opt.settings,
                   "Set a parameter after the preset, KEY=VALUE (repeatable), checked like a preset value")
       ->type_name("KEY=VALUE");
@@ -117,7 +207,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "(ls-conventional; default: first, quarter, middle, last)")
       ->delimiter(',')
       ->type_name("LIST");
-  sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)");
+  sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)")->check(kPath);
+  sim->add_flag("--force", sim_opt.force,
+                "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(sim, c);
   sim->add_flag("--json", sim_opt.json, "Print summary.json to stdout instead of the table");
   sim->add_flag("--kernel-only", sim_opt.kernel_only, "Run the bare C++ cycle kernels, no SystemC elaboration");
   sim->add_flag("--tick,--no-event-skip", sim_opt.tick,
@@ -135,7 +228,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_option("--time-step", sim_opt.time_step_s,
                   "tof-lockin: integrate the received pulse's overlap with the gate windows numerically at this\n"
                   "step in seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default)\n"
-                  "= exact. Error falls and cost rises as the step shrinks");
+                  "= exact. Error falls and cost rises as the step shrinks")
+      ->check(real_in(0, false, 1, "s"));
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(
@@ -145,7 +239,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   tb->add_flag("--json", tb_opt.json, "Print JSON (table and published figures)");
   tb->add_flag("--published", tb_opt.published, "Also list the published figures on the terminal");
   tb->add_option("--out", tb_opt.out,
-                 "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory");
+                 "Also write table5_1.{md,html,csv,json} and published_figures.csv into this directory")
+      ->check(kPath);
+  tb->add_flag("--force", tb_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(tb, c);
 
   BenchOptions& bench_opt = c.bench;
   auto* bench = app.add_subcommand(
@@ -160,7 +258,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   bench->add_flag("--quick", bench_opt.quick,
                   "Fewer frames for the slow references: the same keys in under two minutes");
   bench->add_flag("--json", bench_opt.json, "Print bench.json to stdout instead of the tables");
-  bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)");
+  bench->add_option("--out", bench_opt.out, "Output directory (default: rangesim-out/bench)")->check(kPath);
+  bench->add_flag("--force", bench_opt.force,
+                  "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(bench, c);
   bench->add_flag("--resume", bench_opt.resume,
                   "Continue a killed or interrupted bench: every finished Pareto row and figure group is kept in a\n"
                   "journal under --out and not measured again");
@@ -185,18 +286,24 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sw->add_option("--shard", sw_opt.shard,
                  "K/N: compute only the variants i with i mod N = K-1 and write sweep.shard-K-of-N.json\n"
                  "(batch arrays; `rangesim merge` combines the N shards into the unsharded output)");
-  sw->add_option("--out", sw_opt.out, "Output directory (default: rangesim-out/sweep/<sensor>)");
+  sw->add_option("--out", sw_opt.out, "Output directory (default: rangesim-out/sweep/<sensor>)")->check(kPath);
+  sw->add_flag("--force", sw_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  add_budgets(sw, c);
   sw->add_flag("--json", sw_opt.json, "Print sweep.json to stdout instead of the table");
   sw->add_flag("--no-plots", sw_opt.no_plots, "Skip the PNG/SVG plots");
   sw->add_flag("--resume", sw_opt.resume, "Continue the sweep whose journal is in --out (same options)");
   sw->add_option("--trials", sw_opt.trials,
                  "Also run the clock-level kernels with noise T times at every detectable grid point of each\n"
-                 "variant (2..10000000): mc_accuracy_min/max_m with their 95% confidence intervals");
-  sw->add_option("--seed", sw_opt.seed, "Key of the Monte Carlo and co-simulation streams (default 1)");
+                 "variant (2..10000000): mc_accuracy_min/max_m with their 95% confidence intervals")
+      ->transform(integer_in(2, 10000000));
+  sw->add_option("--seed", sw_opt.seed, "Key of the Monte Carlo and co-simulation streams, 0..2^64-1 (default 1)")
+      ->transform(unsigned_in(0, kMaxU64));
   sw->add_flag("--cosim", sw_opt.cosim,
                "Also co-simulate each variant's RTL (verilated at run time for its parameters, cached) against\n"
                "its clock-level model: cosim_transactions, cosim_mismatches");
-  sw->add_option("--cosim-cycles", sw_opt.cosim_cycles, "Clock cycles of each --cosim run (default 20000)");
+  sw->add_option("--cosim-cycles", sw_opt.cosim_cycles, "Clock cycles of each --cosim run (default 20000)")
+      ->transform(unsigned_in(1, 1000000000));
   sw->add_option("--pareto-accuracy", sw_opt.pareto_accuracy,
                  "The accuracy axis of the Pareto front: min (best over the detectable area, default) or max (worst)")
       ->check(CLI::IsMember({"min", "max"}));
@@ -206,7 +313,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                                 "Combine the shards of one sweep (sweep --shard K/N) into the output of the unsharded\n"
                                 "sweep; refuses shards of different sweeps, missing or repeated shards");
   mg->add_option("parts", mg_opt.parts, "The sweep.shard-K-of-N.json files")->required();
-  mg->add_option("--out", mg_opt.out, "Output directory (default: rangesim-out/sweep/merged)");
+  mg->add_option("--out", mg_opt.out, "Output directory (default: rangesim-out/sweep/merged)")->check(kPath);
+  mg->add_flag("--force", mg_opt.force,
+               "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
   mg->add_flag("--json", mg_opt.json, "Print sweep.json to stdout instead of the table");
   mg->add_flag("--no-plots", mg_opt.no_plots, "Skip the PNG/SVG plots");
   mg->add_option("--pareto-accuracy", mg_opt.pareto_accuracy, "min (default) or max, as for sweep")
@@ -230,16 +339,23 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "130 interrupted (Ctrl-C; 'all' keeps its journal and prints the command that resumes).");
   co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), 'all', or a preset file (.toml)");
   co->add_option("--cycles", co_opt.cycles,
-                 "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)");
+                 "Clock cycles to simulate, 1..1000000000, rounded up to whole transactions (default: 100000)")
+      ->transform(unsigned_in(1, 1000000000));
   co->add_option("--set", co_opt.settings,
                  "With a preset: set a parameter after it, KEY=VALUE (repeatable), checked like a preset value")
       ->type_name("KEY=VALUE");
-  co->add_option("--seed", co_opt.seed, "Seed of the stimulus and of Verilator's random initial state (default: 1)");
-  co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)");
-  co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file");
+  co->add_option("--seed", co_opt.seed,
+                 "Seed of the stimulus and of Verilator's random initial state, 0..2^64-1 (default: 1)")
+      ->transform(unsigned_in(0, kMaxU64));
+  co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)")
+      ->check(kPath);
+  co->add_option("--junit", co_opt.junit,
+                 "Write a JUnit XML report (one testcase per target and scoreboard check) to this file")
+      ->check(kPath);
   co->add_option("--coverage-out", co_opt.coverage_out,
                  "Write the RTL coverage counters in Verilator's coverage.dat format to this file, for\n"
-                 "verilator_coverage --annotate ('all': FILE_<target>.dat)");
+                 "verilator_coverage --annotate ('all': FILE_<target>.dat)")
+      ->check(kPath);
   co->add_option("--rtl", co_opt.rtl,
                  "Your Verilog file (repeatable): its modules replace the rangesim blocks of the same name in a\n"
                  "sensor's readout (ls-conventional, tof-spad, ls-demodulation or a preset file of one)")

@@ -3,6 +3,8 @@
 // command, and the CLI fuzz target (fuzz/cli_fuzz.cpp) calls parse_command_line() on arbitrary
 // argv. Only CLI11 and the option structs of commands.h are needed here.
 #include <iosfwd>
+#include <optional>
+#include <string>
 
 #include "app/cmd_simulate.h"
 #include "app/commands.h"
@@ -24,6 +26,9 @@ struct ParsedCommand {
   CosimCommandOptions cosim;
   SweepOptions sweep;
   MergeOptions merge;
+  // Budgets of the long commands (app/run_control.h); evaluate's --max-seconds is its own option.
+  std::optional<double> max_seconds;
+  std::string max_memory;  // "" = none; checked text (app/cli_checks.h)
 };
 
 struct CommandLine {

@@ -116,24 +116,26 @@ int run_bench(const BenchOptions& opt) {
   const auto t0 = Clock::now();
   set_progress_start(t0);
   const std::string dir = opt.out.empty() ? "rangesim-out/bench" : opt.out;
-  OutputDir out(dir, "--out");
+  OutputDir out(dir, "--out", OutputFolder{"bench", opt.force});
   // Every finished Pareto row and figure group goes to the journal: a killed or interrupted bench
   // continues with --resume and measures only what is missing.
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
   SweepJournal journal(journal_dir + "/bench.journal",
                        fmt::format("rangesim bench\nquick {}\nrtl {}\n", opt.quick, RANGESIM_BENCH_HAS_RTL != 0),
                        opt.resume);
-  if (opt.resume) remove_stale_staging(dir);
   if (!journal.done().empty())
     progress(fmt::format("resuming: {} results from {}", journal.done().size(), journal.path()));
   progress(fmt::format("start ({} run); output into {}", opt.quick ? "quick" : "full", out.dir()));
   SigintGuard sigint;  // the children die of Ctrl-C; the bench stops after them
+  // A signal, or a budget that ran out, stops the bench between figure groups.
+  const auto stop_requested = [] { return sigint_flag() || time_budget_left() <= 0; };
   const auto interrupted = [&] {
-    fmt::print(
-        stderr,
-        "rangesim bench: interrupted; {} results kept in {}; continue with:\n  rangesim bench{} --out {} --resume\n",
-        journal.done().size(), journal.path(), opt.quick ? " --quick" : "", shell_quote(dir));
-    return kExitInterrupted;
+    const bool out_of_time = !sigint_flag();
+    fmt::print(stderr,
+               "rangesim bench: {}; {} results kept in {}; continue with:\n  rangesim bench{} --out {} --resume\n",
+               out_of_time ? fmt::format("--max-seconds {} exceeded", run_budget().max_seconds_text) : stop_reason(),
+               journal.done().size(), journal.path(), opt.quick ? " --quick" : "", shell_quote(dir));
+    return out_of_time ? kExitBudget : stop_exit_code();
   };
   // A figure group from the journal, or measured now and journaled.
   const auto group = [&](long long index, const auto& measure) -> json {
@@ -148,27 +150,27 @@ int run_bench(const BenchOptions& opt) {
   json ls, lockin, spad, spad_sparse, demod, mc_json;
   try {
     pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
-    if (sigint_flag()) return interrupted();
+    if (stop_requested()) return interrupted();
     ls = group(kJournalLs, [&] {
       return bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0});
     });
-    if (sigint_flag()) return interrupted();
+    if (stop_requested()) return interrupted();
     lockin = group(kJournalLockin, [&] { return bench_aggregation_lockin(opt.quick); });
-    if (sigint_flag()) return interrupted();
+    if (stop_requested()) return interrupted();
     spad = group(kJournalSpad, [&] { return bench_aggregation_spad(opt.quick); });
-    if (sigint_flag()) return interrupted();
+    if (stop_requested()) return interrupted();
     spad_sparse = group(kJournalSpadSparse, [&] { return bench_sparse_spad(opt.quick); });
     demod = group(kJournalDemod, [&] { return bench_aggregation_demod(opt.quick); });
-    if (sigint_flag()) return interrupted();
+    if (stop_requested()) return interrupted();
     mc_json = group(kJournalMc, [&] {
       progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
       return mc_hook_json(mc_bench_hook(opt.quick));
     });
   } catch (const std::exception&) {
-    if (sigint_flag()) return interrupted();
+    if (stop_requested()) return interrupted();
     throw;
   }
-  if (sigint_flag()) return interrupted();
+  if (stop_requested()) return interrupted();
   const McBenchHookResult mc = mc_hook_from_json(mc_json);
 
   // The RTL readout as a Pareto point: the same addresses as the model, so the same error.

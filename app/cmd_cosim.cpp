@@ -500,6 +500,9 @@ int run_cosim(const CosimCommandOptions& opt) {
                     preset_cosim_targets()));
   if (!opt.top.empty() && opt.rtl.empty())
     throw UserError("cosim: --top names the block of your --rtl files; add --rtl");
+  if (!opt.junit.empty()) check_output_file(opt.junit, "--junit");
+  if (!opt.trace.empty() && !all) check_output_file(opt.trace, "--trace");
+  if (!opt.coverage_out.empty() && !all) check_output_file(opt.coverage_out, "--coverage-out");
   // Output files are staged next to their destination and appear only when complete.
   StagedFiles staged;
   const std::string junit_file = staged.stage(opt.junit, "--junit");

@@ -1,9 +1,6 @@
 // rangesim evaluate: the thesis's background-light and range-accuracy evaluation over a
 // log-spaced signal x background grid, written as CSV maps, summary.json and plots.
-#include <chrono>
-#include <cstdio>
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include "app/cli_common.h"
 #include "app/commands.h"
@@ -11,6 +8,7 @@
 #include "app/evaluation_output.h"
 #include "app/output_dir.h"
 #include "app/plot.h"
+#include "app/progress_line.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 #include "golden/common/evaluate_sensor.h"
@@ -19,23 +17,10 @@ namespace rangesim::app {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-Clock::time_point g_start;
-int g_last_quarter = -1;
-
-// Progress on stderr once a run has taken more than a second: a live line on a terminal,
-// a line per quarter otherwise (CI logs).
+// Golden models report progress through a plain function pointer, hence the one line here.
+ProgressLine* g_progress = nullptr;
 void report_progress(int done, int total) {
-  const double elapsed = std::chrono::duration<double>(Clock::now() - g_start).count();
-  if (elapsed < 1.0 && done < total) return;
-  if (isatty(fileno(stderr))) {
-    const double left = done > 0 ? elapsed * (total - done) / done : 0;
-    std::fprintf(stderr, "\revaluate: %d/%d operating points, %.1f s, ~%.0f s left   %s", done, total, elapsed, left,
-                 done == total ? "\n" : "");
-  } else if (int q = 4 * done / std::max(total, 1); q != g_last_quarter) {
-    g_last_quarter = q;
-    std::fprintf(stderr, "evaluate: %d/%d operating points, %.1f s\n", done, total, elapsed);
-  }
+  if (g_progress) g_progress->update(done, total);
 }
 
 // The schema key that starts with `prefix` (e.g. "evaluation.signal_min_"), or "".
@@ -103,10 +88,12 @@ int run_evaluate(const EvaluateOptions& opt) {
   // Validate everything before computing or touching the output directory.
   const ParamSet params = evaluate_params(opt);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
-  OutputDir out(dir, "--out");
+  OutputDir out(dir, "--out", {"evaluate", opt.force});
 
-  g_start = Clock::now();
+  ProgressLine progress("evaluate", "operating points");
+  g_progress = &progress;
   const golden::EvalResult ev = golden::evaluate_sensor(params, &report_progress);
+  g_progress = nullptr;
 
   out.write("points.csv", points_csv(ev));
   out.write("detectable_area.csv", detect_matrix_csv(ev));

@@ -21,6 +21,7 @@ struct SimulateOptions {
   std::string trace;                  // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
   std::vector<int> trace_rows;        // --trace-rows: rows the waveform shows (empty: the sensor's choice)
   std::string out;                    // --out DIR ("" -> rangesim-out/simulate/<scene name>)
+  bool force = false;                 // --force: replace the results of another kind of run in --out
   bool json = false;                  // --json: summary.json to stdout instead of the table
   bool kernel_only = false;           // --kernel-only: bare C++ kernels, no SystemC elaboration
   bool tick = false;          // --tick / --no-event-skip: evaluate every clock cycle (no event skipping; kernel only)

@@ -1,15 +1,15 @@
 // rangesim table: thesis Table 5.1 for the four seed sensors beside rangesim's values, and the
 // chips' published figures with their status.
 #include <cmath>
-#include <cstdio>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
-#include <unistd.h>
 
 #include "app/command_data.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "app/progress_line.h"
 #include "core/preset.h"
 #include "golden/common/evaluate_sensor.h"
 #include "golden/common/table_5_1.h"
@@ -55,12 +55,12 @@ std::string difference(double ours, double thesis, const std::string& unit) {
   return fmt::format("{:+.3g}x", ours / thesis);
 }
 
-// Per thread: the Python module may build tables on several threads at once.
-thread_local int g_sensor_index = 0, g_sensor_count = 0;
+// The command's progress, one line per sensor. Golden models report through a plain function
+// pointer, hence the pointer here; per thread, since the Python module may build tables on
+// several threads at once.
+thread_local ProgressLine* g_progress = nullptr;
 void table_progress(int done, int total) {
-  if (done == total || done % 200 == 0)
-    std::fprintf(stderr, "%stable: sensor %d/%d, %d/%d operating points%s", isatty(fileno(stderr)) ? "\r" : "",
-                 g_sensor_index, g_sensor_count, done, total, isatty(fileno(stderr)) && done != total ? "" : "\n");
+  if (g_progress) g_progress->update(done, total);
 }
 
 Column build_column(const golden::ThesisColumn& tc, golden::ProgressFn progress) {
@@ -202,11 +202,14 @@ std::vector<Column> build_columns(golden::ProgressFn progress) {
     if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column)
       thesis.push_back(m->table_column);
   std::vector<Column> cols;
-  g_sensor_count = static_cast<int>(thesis.size());
-  g_sensor_index = 0;
   for (const golden::ThesisColumn* tc : thesis) {
-    ++g_sensor_index;
+    std::optional<ProgressLine> line;
+    if (progress == &table_progress) {
+      line.emplace(fmt::format("table: sensor {}/{}", cols.size() + 1, thesis.size()), "operating points");
+      g_progress = &*line;
+    }
     cols.push_back(build_column(*tc, progress));
+    g_progress = nullptr;
   }
   return cols;
 }
@@ -259,7 +262,7 @@ nlohmann::json table_json(golden::ProgressFn progress) { return columns_json(bui
 
 int run_table(const TableOptions& opt) {
   std::unique_ptr<OutputDir> out;
-  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out");
+  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out", OutputFolder{"table", opt.force});
   const std::vector<Column> cols = build_columns(&table_progress);
   const nlohmann::json j = columns_json(cols);
   const int reproduced = j["published_reproduced"].get<int>(), total = j["published_total"].get<int>();

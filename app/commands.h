@@ -24,10 +24,13 @@ struct EvaluateOptions {
   std::vector<std::string> settings;  // --set KEY=VALUE, in order, after the preset
   std::optional<std::string> signal;  // "LO:HI:N" volts
   std::optional<std::string> background;
-  std::optional<int> samplings;
-  std::optional<int> adc_bits;
-  std::optional<int> frames;  // frames averaged
-  std::string out;            // output directory ("" -> rangesim-out/<sensor>)
+  // Integer flags are held wide: the sensor's own range is checked when they are applied, so
+  // --frames 1e12 is refused naming that range instead of failing to convert.
+  std::optional<long long> samplings;
+  std::optional<long long> adc_bits;
+  std::optional<long long> frames;  // frames averaged
+  std::string out;                  // output directory ("" -> rangesim-out/<sensor>)
+  bool force = false;               // --force: replace the results of another kind of run in --out
   bool json = false;
   bool no_plots = false;
   // Monte Carlo on the clock-level kernels (app/montecarlo/, docs/evaluate-montecarlo.md); any of
@@ -37,7 +40,7 @@ struct EvaluateOptions {
   std::optional<long long> max_trials;     // cap per point (trial budget)
   std::optional<int> threads;              // worker threads (default: all cores)
   std::optional<unsigned long long> seed;  // key of the random streams
-  std::optional<double> max_seconds;       // wall-time budget of the sweep
+  std::optional<double> max_seconds;       // wall-time budget of the command (Monte Carlo: of the sweep)
   bool resume = false;                     // continue the sweep journal in --out
 };
 int run_evaluate(const EvaluateOptions& opt);
@@ -46,7 +49,7 @@ int run_evaluate_mc(const EvaluateOptions& opt);
 
 struct FrameRateOptions {
   std::string sensor;
-  std::optional<int> samplings;
+  std::optional<long long> samplings;
   bool json = false;
   std::vector<std::string> settings = {};  // --set KEY=VALUE, in order
 };
@@ -56,6 +59,7 @@ struct TableOptions {
   bool json = false;
   bool published = false;  // also list the chips' published figures on the terminal
   std::string out;         // "" -> nothing written
+  bool force = false;      // --force: replace the results of another kind of run in --out
 };
 int run_table(const TableOptions& opt);
 
@@ -67,6 +71,7 @@ struct SweepOptions {
   bool zip = false;                   // --zip: the i-th values together, not the cross product
   std::optional<std::string> shard;   // --shard K/N: every N-th variant from the K-th
   std::string out;                    // --out DIR ("" -> rangesim-out/sweep/<sensor>)
+  bool force = false;                 // --force: replace the results of another kind of run in --out
   bool json = false;
   bool no_plots = false;
   bool resume = false;                      // continue the journal in --out
@@ -81,6 +86,7 @@ int run_sweep(const SweepOptions& opt);
 struct MergeOptions {
   std::vector<std::string> parts;  // sweep.shard-K-of-N.json files
   std::string out;
+  bool force = false;  // --force: replace the results of another kind of run in --out
   bool json = false;
   bool no_plots = false;
   std::string pareto_accuracy = "min";
@@ -92,6 +98,7 @@ struct BenchOptions {
   bool quick = false;   // --quick: the same keys in under two minutes (fewer frames for the references)
   bool json = false;    // --json: bench.json to stdout instead of the tables
   std::string out;      // --out DIR ("" -> rangesim-out/bench)
+  bool force = false;   // --force: replace the results of another kind of run in --out
   bool resume = false;  // --resume: continue a killed or interrupted bench from its journal in DIR
 };
 // 0 when every identity check inside the bench passed (speed targets are reported, not

@@ -1,14 +1,17 @@
 // rangesim: command-line entry point. The command line is parsed by parse_command_line()
 // (cli_parse.cpp), subcommands live in cmd_*.cpp; this file only runs the parsed command and maps
-// errors to exit codes (0 ok, 1 internal, 2 bad input, 3 not modelled yet; run_evaluate_mc also
-// returns 4 and 130 for a sweep stopped by its time budget or Ctrl-C).
+// errors to exit codes (0 ok, 1 internal, 2 bad input, 3 not modelled yet, 4 a budget ran out; a
+// run stopped by a signal exits with 128 + the signal, app/run_control.h).
 #include <fmt/format.h>
 #include <iostream>
+#include <new>
 
+#include "app/cli_checks.h"
 #include "app/cli_common.h"
 #include "app/cli_parse.h"
 #include "app/cmd_simulate.h"
 #include "app/commands.h"
+#include "app/run_control.h"
 #include "core/user_error.h"
 
 using namespace rangesim::app;
@@ -34,13 +37,36 @@ int run(const ParsedCommand& c) {
   return kExitInternal;
 }
 
+// The budgets of the run from its flags (checked by the parser already).
+RunBudget budget_of(const ParsedCommand& c) {
+  RunBudget b;
+  const std::optional<double> seconds = c.kind == CommandKind::Evaluate ? c.evaluate.max_seconds : c.max_seconds;
+  if (seconds) b.max_seconds = *seconds, b.max_seconds_text = fmt::format("{}", *seconds);
+  if (!c.max_memory.empty()) {
+    std::string text = c.max_memory;
+    check_memory_text(text, b.max_memory_bytes);
+    b.max_memory_text = c.max_memory;
+  }
+  return b;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  install_stop_handlers();
+  set_command_line(argc, argv);
   const CommandLine cl = parse_command_line(argc, argv, std::cout, std::cerr);
   if (cl.finished) return cl.exit_code;
+  start_budget(budget_of(cl.command));
   try {
     return run(cl.command);
+  } catch (const std::bad_alloc&) {
+    // The estimates refuse what cannot fit up front; this is the memory that ran out regardless.
+    fmt::print(stderr,
+               "rangesim: out of memory ({} resident); nothing written; reduce the work (grid points, trials, "
+               "variants, frames) or give --max-memory to be refused up front\n",
+               bytes_text(static_cast<double>(resident_bytes())));
+    return kExitBudget;
   } catch (const rangesim::UserError& e) {
     fmt::print(stderr, "rangesim: error: {}\n", e.what());
     return kExitBadInput;

@@ -1,38 +1,88 @@
 #include "app/output_dir.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <unistd.h>
 
+#include "app/output_lock.h"
+#include "app/run_control.h"
 #include "core/user_error.h"
 
 namespace fs = std::filesystem;
 
 namespace rangesim::app {
 
-OutputDir::OutputDir(const std::string& dir, const std::string& flag) : dir_(dir) {
+void check_output_file(const std::string& path, const std::string& flag) {
   std::error_code ec;
-  if (fs::exists(dir_, ec) && !fs::is_directory(dir_, ec))
+  const fs::file_status st = fs::status(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw UserError(fmt::format("{} {}: cannot use it as an output file ({}); allowed: a new or regular file", flag,
+                                path, ec.message()));
+  if (fs::exists(st) && !fs::is_regular_file(st))
+    throw UserError(fmt::format("{} {}: exists and is {}; allowed: a new or regular file (which is replaced)", flag,
+                                path, fs::is_directory(st) ? "a directory" : "not a regular file"));
+}
+
+void remove_stale_staging(const std::string& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(".staging-", 0) != 0 || name == ".staging-sweep") continue;
+    const std::string digits = name.substr(9);
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::stol(digits);
+    if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
+  }
+}
+
+OutputDir::OutputDir(const std::string& dir, const std::string& flag, const OutputFolder& folder)
+    : dir_(dir), folder_(folder) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir_, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw UserError(fmt::format("{} {}: cannot use it as an output directory ({})", flag, dir_, ec.message()));
+  if (fs::exists(st) && !fs::is_directory(st))
     throw UserError(fmt::format("{} {}: exists and is not a directory", flag, dir_));
-  if (!fs::exists(dir_, ec)) {
+  if (!fs::exists(st)) {
     fs::create_directories(dir_, ec);
     if (ec) throw UserError(fmt::format("{} {}: cannot create output directory ({})", flag, dir_, ec.message()));
     created_dir_ = true;
+    dir_slot_ = register_cleanup(dir_, false);  // removed by an ended run only if empty
   }
-  staging_ = (fs::path(dir_) / fmt::format(".staging-{}", ::getpid())).string();
-  fs::create_directory(staging_, ec);
-  if (ec || ::access(dir_.c_str(), W_OK) != 0) {
+  try {
+    if (::access(dir_.c_str(), W_OK) != 0)
+      throw UserError(fmt::format("{} {}: output directory is not writable", flag, dir_));
+    if (!folder_.kind.empty() && folder_.lock) lock_ = std::make_unique<OutputLock>(dir_, flag);
+    remove_stale_staging(dir_);
+    if (!folder_.kind.empty() && folder_.lock) previous_ = read_manifest(dir_);
+    if (previous_ && previous_->kind != folder_.kind && !folder_.force)
+      throw UserError(
+          fmt::format("{} {}: holds the results of another command ({} files of `rangesim {}`); add --force to "
+                      "replace them (files that are not rangesim's stay), or choose another {}",
+                      flag, dir_, previous_->files.size(), previous_->kind, flag));
+    staging_ = (fs::path(dir_) / fmt::format(".staging-{}", ::getpid())).string();
+    fs::create_directory(staging_, ec);
+    if (ec) throw UserError(fmt::format("{} {}: output directory is not writable ({})", flag, dir_, ec.message()));
+    staging_slot_ = register_cleanup(staging_, true);
+  } catch (...) {
+    lock_.reset();
+    unregister_cleanup(dir_slot_);
     if (created_dir_) fs::remove(dir_, ec);
-    throw UserError(fmt::format("{} {}: output directory is not writable", flag, dir_));
+    throw;
   }
 }
 
 OutputDir::~OutputDir() {
-  if (committed_) return;
   std::error_code ec;
-  fs::remove_all(staging_, ec);
-  if (created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);
+  if (!committed_) fs::remove_all(staging_, ec);
+  unregister_cleanup(staging_slot_);
+  lock_.reset();  // its file goes first, so that a folder this run created can go too
+  unregister_cleanup(dir_slot_);
+  if (!committed_ && created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);
 }
 
 std::string OutputDir::staged(const std::string& name) {
@@ -51,15 +101,33 @@ void OutputDir::write(const std::string& name, const std::string& text) {
 }
 
 std::vector<std::string> OutputDir::commit() {
+  const CommitSection section;  // a signal now waits until the folder is complete
+  std::vector<std::string> names;
+  for (const auto& name : names_)
+    if (fs::exists(fs::path(staging_) / name) && std::find(names.begin(), names.end(), name) == names.end())
+      names.push_back(name);  // optional outputs (plots without gnuplot) may be missing
+  const bool manifest = !folder_.kind.empty() && folder_.lock;
+  std::vector<std::string> stale;
+  if (previous_)
+    for (const auto& f : previous_->files)
+      if (std::find(names.begin(), names.end(), f) == names.end()) stale.push_back(f);
+  // While files move, the manifest lists the old and the new ones: a kill at any point leaves no
+  // rangesim file the next run does not know about.
+  if (manifest) {
+    std::vector<std::string> both = names;
+    both.insert(both.end(), stale.begin(), stale.end());
+    write_manifest(dir_, {folder_.kind, both}, staging_);
+  }
   std::vector<std::string> written;
-  for (const auto& name : names_) {
-    const fs::path from = fs::path(staging_) / name;
-    if (!fs::exists(from)) continue;  // optional outputs (plots without gnuplot)
+  for (const auto& name : names) {
     const fs::path to = fs::path(dir_) / name;
-    fs::rename(from, to);
+    fs::rename(fs::path(staging_) / name, to);
     written.push_back(to.string());
   }
   std::error_code ec;
+  for (const auto& f : stale)
+    if (fs::is_regular_file(fs::symlink_status(fs::path(dir_) / f, ec))) fs::remove(fs::path(dir_) / f, ec);
+  if (manifest) write_manifest(dir_, {folder_.kind, names}, staging_);
   fs::remove_all(staging_, ec);
   committed_ = true;
   return written;

@@ -176,45 +176,4 @@ void SweepJournal::remove() {
   std::filesystem::remove(path_, ec);
 }
 
-std::string shell_quote(const std::string& s) {
-  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_./:=+,") ==
-                        std::string::npos)
-    return s;
-  std::string r = "'";
-  for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return r + "'";
-}
-
-// Staging folders (.staging-<pid>) left by a killed run whose process is gone: removed when the
-// sweep resumes, so the finished folder holds only the outputs.
-void remove_stale_staging(const std::string& dir) {
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.rfind(".staging-", 0) != 0 || name == ".staging-sweep") continue;
-    const std::string digits = name.substr(9);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    const long pid = std::stol(digits);
-    if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
-      std::filesystem::remove_all(e.path(), ec);
-  }
-}
-
-namespace {
-std::atomic<bool> g_sigint{false};
-extern "C" void on_sigint(int) { g_sigint.store(true); }
-}  // namespace
-
-std::atomic<bool>& sigint_flag() { return g_sigint; }
-
-SigintGuard::SigintGuard() {
-  g_sigint = false;
-  struct sigaction sa {};
-  sa.sa_handler = on_sigint;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, &old_);
-}
-
-SigintGuard::~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
-
 }  // namespace rangesim::app

@@ -12,13 +12,13 @@
 //   P <index> <payload length> <payload> <FNV-1a hash of "index payload", 16 hex digits>
 // A last line cut short by a kill (no newline, wrong length or hash) is dropped on reading and
 // truncated away before new records are appended.
-#include <signal.h>
-
 #include <atomic>
 #include <cstdint>
 #include <map>
 #include <mutex>
 #include <string>
+
+#include "app/run_control.h"
 
 namespace rangesim::app {
 
@@ -52,26 +52,10 @@ class SweepJournal {
   std::map<long long, std::string> done_;
 };
 
-// Ctrl-C during a sweep: while a SigintGuard lives, SIGINT sets sigint_flag() (cleared on
-// construction) instead of ending the process, so the sweep stops between points with its
-// journal intact, prints the command that resumes and exits with kExitInterrupted. Child
-// processes the sweep runs still die of the signal themselves.
+// Ctrl-C (or SIGTERM, SIGHUP, a memory budget) during a sweep: app/run_control.h. The names the
+// sweeps used before the other signals were handled the same way.
 inline constexpr int kExitInterrupted = 130;
-// Staging folders (.staging-<pid>) of DIR left by a killed run whose process is gone: removed when
-// a sweep resumes, so the finished folder holds only the outputs.
-void remove_stale_staging(const std::string& dir);
-// `s` as one word for the shell (the printed resume commands).
-std::string shell_quote(const std::string& s);
-std::atomic<bool>& sigint_flag();
-class SigintGuard {
- public:
-  SigintGuard();
-  ~SigintGuard();
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
-
- private:
-  struct sigaction old_ {};
-};
+using SigintGuard = StopGuard;
+inline std::atomic<bool>& sigint_flag() { return stop_flag(); }
 
 }  // namespace rangesim::app

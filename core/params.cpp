@@ -113,13 +113,24 @@ std::string describe_range(const ParamSpec& spec) {
   return "";
 }
 
+namespace {
+
+// The value as the message shows it: 6 digits where they are exact, all it needs otherwise, so a
+// refused 1.0000001 never reads as the bound 1 it exceeds.
+std::string shown(double value) {
+  const std::string g = fmt::format("{:g}", value);
+  return std::strtod(g.c_str(), nullptr) == value || !std::isfinite(value) ? g : fmt::format("{}", value);
+}
+
+}  // namespace
+
 void check_range(const ParamSpec& spec, double value, const std::string& where) {
   if (spec.kind != ParamKind::Real && spec.kind != ParamKind::Integer) return;
   const bool ok = std::isfinite(value) && (spec.min_exclusive ? value > spec.min : value >= spec.min) &&
                   value <= spec.max && (spec.kind != ParamKind::Integer || value == std::floor(value));
   if (!ok)
     throw UserError(
-        fmt::format("{}: {} = {:g} is out of range; allowed: {}", where, spec.key, value, describe_range(spec)),
+        fmt::format("{}: {} = {} is out of range; allowed: {}", where, spec.key, shown(value), describe_range(spec)),
         spec.key);
 }
 

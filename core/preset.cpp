@@ -4,11 +4,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <optional>
-#include <sstream>
 #include <toml++/toml.h>
 
+#include "core/grid_rules.h"
+#include "core/input_file.h"
 #include "core/user_error.h"
 
 #ifndef RANGESIM_SOURCE_PRESET_DIR
@@ -21,6 +21,11 @@
 namespace fs = std::filesystem;
 
 namespace rangesim {
+
+namespace {
+// A preset is a few kilobytes; the cap keeps a mistaken path (a log, an image) from being read whole.
+constexpr std::uintmax_t kMaxPresetBytes = 4u << 20;
+}  // namespace
 
 std::vector<std::string> preset_search_path() {
   std::vector<std::string> dirs;
@@ -38,13 +43,12 @@ std::string resolve_preset(const std::string& id_or_path) {
   const bool looks_like_path = id_or_path.find('/') != std::string::npos ||
                                (id_or_path.size() > 5 && id_or_path.substr(id_or_path.size() - 5) == ".toml");
   if (looks_like_path) {
-    if (!fs::is_regular_file(id_or_path))
-      throw UserError(fmt::format("{}: cannot read preset file (no such file)", id_or_path));
+    check_readable(id_or_path, "preset file", kMaxPresetBytes);
     return id_or_path;
   }
   for (const auto& dir : preset_search_path()) {
     const fs::path p = fs::path(dir) / (id_or_path + ".toml");
-    if (fs::is_regular_file(p)) return p.string();
+    if (unreadable_reason(p.string()).empty()) return p.string();
   }
   throw UserError(fmt::format("'{}' is neither a preset nor a file; presets: {} (or a path to a .toml file)",
                               id_or_path, sensor_ids()));
@@ -117,16 +121,7 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
   return v;
 }
 
-std::string read_file(const std::string& path) {
-  if (!fs::is_regular_file(path))
-    throw UserError(fmt::format("{}: cannot read preset file (not a regular file)", path));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError(fmt::format("{}: cannot read preset file", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw UserError(fmt::format("{}: cannot read preset file", path));
-  return text.str();
-}
+std::string read_file(const std::string& path) { return read_input_file(path, "preset file", kMaxPresetBytes); }
 
 // The file `base = "..."` names: a preset id, or a path relative to the inheriting file's folder.
 std::string resolve_base(const std::string& base, const std::string& file, const std::string& where) {
@@ -141,9 +136,11 @@ std::string resolve_base(const std::string& base, const std::string& file, const
   }
   fs::path p(base);
   if (p.is_relative()) p = fs::path(file).parent_path() / p;
-  std::error_code ec;
-  if (!fs::is_regular_file(p, ec))
+  const std::string reason = unreadable_reason(p.string());
+  if (reason == "no such file")
     throw UserError(fmt::format("{}: base = \"{}\": no such preset file ({})", where, base, p.string()));
+  if (!reason.empty())
+    throw UserError(fmt::format("{}: base = \"{}\": cannot read preset file {}: {}", where, base, p.string(), reason));
   return p.string();
 }
 
@@ -246,6 +243,7 @@ ParamSet load_preset_text(const std::string& text, const std::string& path) {
 }
 
 void validate_preset(const ParamSet& set) {
+  check_log_grids(set);
   if (const SensorInfo* s = find_sensor(set.sensor_id())) s->validate(set);
 }
 

@@ -6,10 +6,8 @@
 #include <cstdint>
 #include <cstring>
 #include <fmt/format.h>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
+#include "core/input_file.h"
 #include "core/user_error.h"
 
 namespace rangesim::scene {
@@ -74,20 +72,7 @@ DepthMap load_depth_map(const std::string& path, const std::string& key, double 
   const std::string where = fmt::format("{} ({})", key, path);
   // A regular file of bounded size only: /dev/zero, a FIFO or a directory would hang or exhaust
   // memory before any header check could run.
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status))
-    throw UserError(fmt::format("{}: cannot read the depth-map image (no such file or not readable)", where));
-  if (!std::filesystem::is_regular_file(status))
-    throw UserError(fmt::format("{}: the depth-map image is not a regular file", where));
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxFileBytes)
-    throw UserError(
-        fmt::format("{}: the depth-map image has {} bytes; allowed at most {} ({} x {} floats and a header)", where,
-                    ec ? 0 : size, kMaxFileBytes, kMaxSide, kMaxSide));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError(fmt::format("{}: cannot read the depth-map image (no such file or not readable)", where));
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string data = read_input_file(path, "the depth-map image", kMaxFileBytes, where);
   return parse_depth_map(data, path, key, near_m, far_m, min_m, max_m);
 }
 

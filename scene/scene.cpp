@@ -4,14 +4,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <toml++/toml.h>
 #include <vector>
 
 #include "core/sensor_registry.h"
+#include "core/input_file.h"
 #include "core/user_error.h"
 
 namespace rangesim::scene {
@@ -287,14 +286,9 @@ Scene load_scene_text(std::string_view text, const std::string& origin, const st
 }
 
 Scene load_scene(const std::string& path, const std::string& sensor) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
-    throw UserError(fmt::format("--scene {}: cannot read scene file (no such file)", path));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError(fmt::format("--scene {}: cannot read scene file", path));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return load_scene_text(ss.str(), path, sensor);
+  // A scene is a few kilobytes (a depth map is a file of its own); the cap bounds a mistaken path.
+  constexpr std::uintmax_t kMaxSceneBytes = 4u << 20;
+  return load_scene_text(read_input_file(path, "scene file", kMaxSceneBytes, "--scene " + path), path, sensor);
 }
 
 }  // namespace rangesim::scene

@@ -33,8 +33,6 @@ namespace rangesim::app {
 
 namespace {
 
-constexpr int kExitBudget = 4;  // --max-seconds exceeded; journal kept (kExitInterrupted: Ctrl-C)
-
 void progress(long long done, long long total, long long trials, double elapsed, double left) {
   static int last_quarter = -1;
   if (isatty(fileno(stderr))) {
@@ -99,7 +97,7 @@ int run_mpi_share(const mpi::World& world, const mc::McModel& model, const std::
   {
     SweepJournal share(path, rank_fp, resume);
     const mc::McSweepResult r = mc::run_mc_sweep(model, mine, sopt, &share);
-    if (!r.complete) code = r.out_of_time ? kExitBudget : kExitInterrupted;
+    if (!r.complete) code = r.out_of_time ? kExitBudget : stop_exit_code();
   }
   code = mpi::max_all(world, code);
   if (code >= 0) return code;  // every rank keeps its journal for --resume
@@ -128,14 +126,14 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   mc::McSweepOptions sopt = mc::sweep_options(opt);
   const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(rangesim::mc::make_mc_model(params), sopt.seed);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
-  OutputDir out(dir, "--out");  // every rank checks --out; only rank 0 commits
+  // Every rank checks --out; rank 0 holds its lock and commits.
+  OutputDir out(dir, "--out", {"evaluate", opt.force, world.rank == 0});
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();
   const std::string fp = fingerprint(params, sopt);
   // Under mpirun only rank 0 keeps the sweep's journal (the ranks' shares have their own).
   std::unique_ptr<SweepJournal> rank0_journal;
   if (world.rank == 0)
     rank0_journal = std::make_unique<SweepJournal>(journal_dir + "/evaluate.journal", fp, opt.resume || world.size > 1);
-  if (opt.resume && world.rank == 0) remove_stale_staging(dir);
   if (opt.resume && rank0_journal && !rank0_journal->done().empty())
     fmt::print(stderr, "rangesim evaluate: resuming: {} points from {}\n", rank0_journal->done().size(),
                rank0_journal->path());
@@ -145,6 +143,8 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
 
   SigintGuard sigint;
   sopt.stop = &sigint_flag();
+  // The time budget counts from the start of the command: what the golden grid left of it.
+  if (sopt.max_seconds > 0) sopt.max_seconds = std::max(time_budget_left(), 1e-3);
   sopt.progress = world.rank == 0 ? &progress : nullptr;
   if (world.size > 1) {
     const int code = run_mpi_share(world, *model, points, sopt, journal_dir, fp, opt.resume, rank0_journal.get());
@@ -153,7 +153,8 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
         fmt::print(stderr,
                    "\nrangesim evaluate: {}: the finished points are kept in {}; to continue, run the same mpirun "
                    "line with:\n  {}\n",
-                   code == kExitBudget ? fmt::format("--max-seconds {} exceeded", sopt.max_seconds) : "interrupted",
+                   code == kExitBudget && !sigint_flag() ? fmt::format("--max-seconds {} exceeded", *opt.max_seconds)
+                                                         : stop_reason(),
                    journal_dir, resume_command(opt, dir));
       return code;
     }
@@ -167,7 +168,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
     std::ifstream in(journal.path());
     for (std::string line; std::getline(in, line);) have += line.rfind("P ", 0) == 0;
     fmt::print(stderr, "\nrangesim evaluate: {}: {} of {} points finished and kept in {}; nothing else written.\n",
-               r.out_of_time ? fmt::format("--max-seconds {} exceeded", sopt.max_seconds) : "interrupted", have,
+               r.out_of_time ? fmt::format("--max-seconds {} exceeded", *opt.max_seconds) : stop_reason(), have,
                points.size(), journal.path());
     for (std::size_t k : r.stuck_points)
       fmt::print(stderr,
@@ -177,9 +178,9 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
     fmt::print(stderr, "To continue, run:\n  {}\n", resume_command(opt, dir));
     if (r.abandoned) {
       std::fflush(stderr);
-      std::_Exit(r.out_of_time ? kExitBudget : kExitInterrupted);  // workers still running: no unwinding
+      std::_Exit(r.out_of_time ? kExitBudget : stop_exit_code());  // workers still running: no unwinding
     }
-    return r.out_of_time ? kExitBudget : kExitInterrupted;
+    return r.out_of_time ? kExitBudget : stop_exit_code();
   }
 
   const mc::McGrid grid = mc::make_grid(ev, points, r, *model, sopt);

@@ -102,12 +102,19 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
     std::vector<std::optional<McPointStats>> stats;
     std::vector<long long> point_variates;
     std::vector<std::size_t> in_progress;  // entries of `points` being computed (under mutex)
+    std::vector<double> cost;              // relative cost of each entry of `points` (McModel::relative_cost)
+    double cost_done = 0;                  // relative cost of the finished points (under mutex)
+    Clock::time_point last_finish;         // when the last point finished (under mutex)
   };
   auto sh = std::make_shared<Shared>();
   sh->todo = todo;
   sh->stats = res.stats;
   sh->point_variates = res.point_variates;
   sh->running = std::max(1, std::min<int>(opt.threads, static_cast<int>(std::max<std::size_t>(todo.size(), 1))));
+  // The time left weighs the points by their relative cost: a sweep's cheap points may come first.
+  sh->cost.assign(points.size(), 0.0);
+  double cost_todo = 0;
+  for (std::size_t i : todo) cost_todo += sh->cost[i] = model.relative_cost(points[i].signal, points[i].background);
   const int workers = sh->running;
 
   auto worker = [sh, &model, &points, &opt, journal] {
@@ -125,6 +132,7 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
         {
           std::lock_guard<std::mutex> lock(sh->mutex);
           sh->in_progress.erase(std::find(sh->in_progress.begin(), sh->in_progress.end(), i));
+          if (o.finished) sh->cost_done += sh->cost[i], sh->last_finish = Clock::now();
         }
         if (!o.finished) break;
         if (journal) journal->append(points[i].index, o.stats.to_record());
@@ -173,7 +181,13 @@ McSweepResult run_mc_sweep(const McModel& model, const std::vector<McSweepPoint>
       if (opt.progress && std::chrono::duration<double>(Clock::now() - last).count() >= opt.progress_interval_s) {
         last = Clock::now();
         const long long d = sh->done.load(), total = static_cast<long long>(todo.size());
-        const double left = d > 0 ? elapsed * static_cast<double>(total - d) / static_cast<double>(d) : NAN;
+        // The cost done took the time up to the last finish; the time since went into points still
+        // running, whose share of the remaining cost is already spent. Unknown (NaN) before the first
+        // finish or once a point runs past the estimate.
+        const double at_last = std::chrono::duration<double>(sh->last_finish - start).count();
+        const double since = elapsed - at_last;
+        double left = sh->cost_done > 0 ? at_last * (cost_todo - sh->cost_done) / sh->cost_done - since : NAN;
+        if (!(left > 0)) left = NAN;
         lock.unlock();
         opt.progress(d + res.points_from_journal, total + res.points_from_journal, sh->trials.load(), elapsed, left);
         lock.lock();

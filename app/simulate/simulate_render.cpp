@@ -43,7 +43,8 @@ class CommandHost : public systemc::SimulationHost {
     return trace_->vcd_base();
   }
   void open_output(const std::string& scene_name) override {
-    out_.emplace(opt_.out.empty() ? "rangesim-out/simulate/" + scene_name : opt_.out, "--out");
+    out_.emplace(opt_.out.empty() ? "rangesim-out/simulate/" + scene_name : opt_.out, "--out",
+                 OutputFolder{"simulate", opt_.force});
   }
   std::function<void(long long)> progress(const std::string& unit, long long total) override {
     auto p = std::make_shared<Progress>(unit, total, start_);

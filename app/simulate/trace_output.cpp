@@ -13,6 +13,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "app/output_dir.h"
+#include "app/run_control.h"
 #include "core/user_error.h"
 
 extern char** environ;
@@ -68,12 +70,12 @@ TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path
     throw UserError("--trace needs the SystemC model; drop --kernel-only (the bare kernels have no waveform)");
   if (!ends_with(path_, ".vcd") && !ends_with(path_, ".fst"))
     throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd or .fst", path_));
+  check_output_file(path_, "--trace");
   const fs::path parent = fs::absolute(path_).parent_path();
   std::error_code ec;
   fs::create_directories(parent, ec);  // like --out: the trace's folder is made
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
     throw UserError(fmt::format("--trace {}: cannot create or write to the folder {}", path_, parent.string()));
-  if (fs::is_directory(path_)) throw UserError(fmt::format("--trace {}: is a folder; give a file name", path_));
   if (ends_with(path_, ".fst") && !on_path("vcd2fst"))
     throw UserError(
         fmt::format("--trace {}: writing FST needs vcd2fst (Debian package gtkwave, scripts/install-deps.sh); "
@@ -85,10 +87,12 @@ TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path
   stem_ = target.stem().string();
   staging_ = (target.parent_path() / fmt::format(".{}.partial-{}", stem_, ::getpid())).string();
   fs::create_directories(staging_);
+  staging_slot_ = register_cleanup(staging_, true);  // a signal removes it too
   vcd_base_ = (fs::path(staging_) / stem_).string();
 }
 
 TraceOutput::~TraceOutput() {
+  unregister_cleanup(staging_slot_);
   if (path_.empty()) return;
   std::error_code ec;
   fs::remove_all(staging_, ec);

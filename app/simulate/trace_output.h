@@ -35,6 +35,7 @@ class TraceOutput {
   std::string vcd_base_;  // <staging>/<stem>: the model writes <stem>.vcd there
   std::string finished_;  // temporary in the final format, ready to rename
   bool committed_ = false;
+  int staging_slot_ = -1;  // app/run_control.h: the staging folder is removed when a signal ends the run
 };
 
 }  // namespace rangesim::app

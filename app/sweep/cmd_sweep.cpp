@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <thread>
 #include <sstream>
@@ -19,6 +18,7 @@
 #include "app/sweep/sweep_output.h"
 #include "app/sweep/sweep_spec.h"
 #include "app/sweep_journal.h"
+#include "core/input_file.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 
@@ -48,7 +48,8 @@ Shard parse_shard(const std::optional<std::string>& text) {
 VariantChecks variant_checks(const SweepOptions& o) {
   VariantChecks c;
   if (o.trials) {
-    if (*o.trials < 2 || *o.trials > 10000000) throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", *o.trials));
+    if (*o.trials < 2 || *o.trials > 10000000)
+      throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", *o.trials));
     c.trials = *o.trials;
   }
   c.seed = o.seed;
@@ -64,8 +65,8 @@ VariantChecks variant_checks(const SweepOptions& o) {
 // Everything that changes the rows: the resolved preset, the assignments, the variant list and
 // the Monte Carlo and co-simulation options.
 std::string fingerprint(const ParamSet& base, const SweepHeader& h, const std::vector<std::vector<std::string>>& vars) {
-  std::string f = fmt::format("rangesim sweep 1\nsensor = {}\ntrials = {}\nseed = {}\ncosim = {} {}\n", base.sensor_id(),
-                              h.checks.trials, h.checks.seed, h.checks.cosim, h.checks.cosim_cycles);
+  std::string f = fmt::format("rangesim sweep 1\nsensor = {}\ntrials = {}\nseed = {}\ncosim = {} {}\n",
+                              base.sensor_id(), h.checks.trials, h.checks.seed, h.checks.cosim, h.checks.cosim_cycles);
   for (const auto& [key, v] : base.values())
     f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text)
                                    : fmt::format("{} = {:.17g}\n", key, v.number);
@@ -129,9 +130,15 @@ int write_outputs(OutputDir& out, const SweepHeader& h, const std::vector<SweepR
 }
 
 nlohmann::json header_json(const SweepHeader& h) {
-  return {{"sensor", h.sensor},     {"preset", h.preset},           {"set", h.settings},
-          {"varied", h.keys},       {"zip", h.zip},                 {"trials", h.checks.trials},
-          {"seed", h.checks.seed},  {"cosim", h.checks.cosim},      {"cosim_cycles", h.checks.cosim_cycles}};
+  return {{"sensor", h.sensor},
+          {"preset", h.preset},
+          {"set", h.settings},
+          {"varied", h.keys},
+          {"zip", h.zip},
+          {"trials", h.checks.trials},
+          {"seed", h.checks.seed},
+          {"cosim", h.checks.cosim},
+          {"cosim_cycles", h.checks.cosim_cycles}};
 }
 
 SweepHeader header_from_json(const nlohmann::json& j) {
@@ -140,6 +147,33 @@ SweepHeader header_from_json(const nlohmann::json& j) {
   h.checks.trials = j.at("trials"), h.checks.seed = j.at("seed"), h.checks.cosim = j.at("cosim");
   h.checks.cosim_cycles = j.at("cosim_cycles");
   return h;
+}
+
+// One shard file: its rows appended to `rows`; the header, fingerprint and variant count taken
+// from the first shard (`h` empty) or checked against it. Any malformed content is bad input.
+Shard read_shard(const std::string& path, std::vector<SweepRow>& rows, std::optional<SweepHeader>& h,
+                 std::uint64_t& hash, long long& total, const std::string& first) {
+  constexpr std::uintmax_t kMaxShardBytes = 1ull << 30;  // a million variants of JSON rows
+  const std::string text = read_input_file(path, "the shard file", kMaxShardBytes, "merge: " + path);
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    if (!j.contains("rangesim_sweep_shard")) throw std::runtime_error("no rangesim_sweep_shard key");
+    Shard s{j.at("shard").get<long long>(), j.at("shards").get<long long>()};
+    if (s.n < 1 || s.n > 100000 || s.k < 1 || s.k > s.n)
+      throw std::runtime_error(fmt::format("shard {}/{}; allowed K/N with 1 <= K <= N <= 100000", s.k, s.n));
+    if (!h) {
+      h = header_from_json(j.at("header")), hash = j.at("fingerprint_hash"), total = j.at("variants_total");
+    } else if (j.at("fingerprint_hash").get<std::uint64_t>() != hash) {
+      throw UserError(fmt::format(
+          "merge: {}: shard of another sweep (preset, --set, --vary or shard count differ from {})", path, first));
+    }
+    for (const auto& r : j.at("rows")) rows.push_back(row_from_json(r, h->checks));
+    return s;
+  } catch (const UserError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw UserError(fmt::format("merge: {}: not a rangesim sweep shard ({})", path, e.what()));
+  }
 }
 
 }  // namespace
@@ -166,21 +200,25 @@ int run_sweep(const SweepOptions& opt) {
   }
   const std::string dir = opt.out.empty() ? "rangesim-out/sweep/" + base.sensor_id() : opt.out;
   std::unique_ptr<OutputDir> out;  // rank 0 writes; the other ranks only journal their share
-  if (world.rank == 0) out = std::make_unique<OutputDir>(dir, "--out");
+  // A shard's file is not the sweep's output: shards into one folder are refused, not replaced.
+  const std::string kind =
+      shard.n > 1 && world.size == 1 ? fmt::format("sweep --shard {}/{}", shard.k, shard.n) : "sweep";
+  if (world.rank == 0) out = std::make_unique<OutputDir>(dir, "--out", OutputFolder{kind, opt.force});
   const std::string fp = fingerprint(base, h, vars);
   SweepJournal journal(
       (fs::path(dir) / ".staging-sweep" / fmt::format("sweep.{}-of-{}.journal", shard.k, shard.n)).string(), fp,
       opt.resume);
-  if (opt.resume && world.rank == 0) remove_stale_staging(dir);
   SigintGuard sigint;
   SweepProgress progress;
   progress.quiet = world.rank != 0;
   std::vector<SweepRow> rows;
   for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()); i += shard.n) ++progress.total;
   long long from_journal = 0;
-  bool interrupted = false;
-  for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()) && !interrupted; i += shard.n) {
-    if ((interrupted = sigint_flag())) break;
+  int stopped = 0;  // exit code of a stop between variants (a signal, a budget), 0 while running
+  for (long long i = shard.k - 1; i < static_cast<long long>(vars.size()); i += shard.n) {
+    if (sigint_flag()) stopped = stop_exit_code();
+    if (time_budget_left() <= 0) stopped = kExitBudget;
+    if (stopped) break;
     const auto it = journal.done().find(i);
     if (it != journal.done().end()) {
       rows.push_back(row_from_json(nlohmann::json::parse(it->second), h.checks));
@@ -191,12 +229,15 @@ int run_sweep(const SweepOptions& opt) {
     }
     progress(static_cast<long long>(rows.size()), from_journal);
   }
-  if (mpi::max_all(world, interrupted ? 1 : 0)) {
+  if (const int code = mpi::max_all(world, stopped); code != 0) {
+    const std::string why = stopped == kExitBudget && !sigint_flag()
+                                ? fmt::format("--max-seconds {} exceeded", run_budget().max_seconds_text)
+                                : stop_reason();
     if (world.rank == 0)
-      fmt::print(stderr, "rangesim sweep: interrupted; finished variants kept in {}; continue with:\n  {}{}\n",
+      fmt::print(stderr, "rangesim sweep: {}; finished variants kept in {}; continue with:\n  {}{}\n", why,
                  fs::path(journal.path()).parent_path().string(), world.size > 1 ? "mpirun ... " : "",
                  resume_command(opt, dir));
-    return kExitInterrupted;
+    return code;
   }
   if (world.size > 1) {  // rank 0 gathers every rank's rows, in variant order
     nlohmann::json mine = nlohmann::json::array();
@@ -233,34 +274,25 @@ int run_sweep(const SweepOptions& opt) {
 int run_merge(const MergeOptions& opt) {
   if (opt.parts.empty())
     throw UserError("merge: give the shard files, e.g. rangesim merge --out DIR part1/sweep.shard-1-of-2.json ...");
+  // The output folder first: a bad --out is refused before the shards are read.
+  OutputDir out(opt.out.empty() ? "rangesim-out/sweep/merged" : opt.out, "--out", OutputFolder{"sweep", opt.force});
   std::vector<SweepRow> rows;
   std::optional<SweepHeader> h;
   std::uint64_t hash = 0;
   long long shards = 0, total = 0;
   std::vector<bool> seen;
   for (const auto& path : opt.parts) {
-    std::ifstream in(path);
-    if (!in) throw UserError(fmt::format("merge: {}: cannot read the shard file", path));
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(in);
-      if (!j.contains("rangesim_sweep_shard")) throw std::runtime_error("not a shard file");
-    } catch (const std::exception& e) {
-      throw UserError(fmt::format("merge: {}: not a rangesim sweep shard ({})", path, e.what()));
+    const Shard shard = read_shard(path, rows, h, hash, total, opt.parts.front());
+    if (seen.empty()) {
+      shards = shard.n;
+      seen.assign(static_cast<std::size_t>(shard.n), false);
+    } else if (shard.n != shards) {
+      throw UserError(fmt::format("merge: {}: shard of another sweep ({} shards, {} has {})", path, shard.n,
+                                  opt.parts.front(), shards));
     }
-    const long long k = j.at("shard"), n = j.at("shards");
-    if (!h) {
-      h = header_from_json(j.at("header")), hash = j.at("fingerprint_hash"), shards = n, total = j.at("variants_total");
-      seen.assign(static_cast<std::size_t>(n), false);
-    } else if (j.at("fingerprint_hash").get<std::uint64_t>() != hash || n != shards) {
-      throw UserError(
-          fmt::format("merge: {}: shard of another sweep (preset, --set, --vary or shard count differ from {})", path,
-                      opt.parts.front()));
-    }
-    if (seen[static_cast<std::size_t>(k - 1)])
-      throw UserError(fmt::format("merge: {}: shard {}/{} given twice", path, k, n));
-    seen[static_cast<std::size_t>(k - 1)] = true;
-    for (const auto& r : j.at("rows")) rows.push_back(row_from_json(r, h->checks));
+    if (seen[static_cast<std::size_t>(shard.k - 1)])
+      throw UserError(fmt::format("merge: {}: shard {}/{} given twice", path, shard.k, shard.n));
+    seen[static_cast<std::size_t>(shard.k - 1)] = true;
   }
   std::string missing;
   for (std::size_t k = 0; k < seen.size(); ++k)
@@ -271,7 +303,6 @@ int run_merge(const MergeOptions& opt) {
   if (static_cast<long long>(rows.size()) != total)
     throw UserError(fmt::format("merge: the shards hold {} variants, the sweep has {}", rows.size(), total));
   h->pareto_accuracy = "accuracy_" + opt.pareto_accuracy + "_m";
-  OutputDir out(opt.out.empty() ? "rangesim-out/sweep/merged" : opt.out, "--out");
   return write_outputs(out, *h, rows, opt.json, opt.no_plots);
 }
 

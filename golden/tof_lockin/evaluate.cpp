@@ -90,7 +90,7 @@ EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
              : std::vector<double>(r.metric_names.size(), kNaN);
       r.points.push_back(std::move(q));
     }
-    if (progress) progress(static_cast<int>(ib + 1), static_cast<int>(bg.size()));
+    if (progress) progress(static_cast<int>((ib + 1) * sig.size()), static_cast<int>(bg.size() * sig.size()));
   }
   summarise_points(r);
 

@@ -104,7 +104,7 @@ EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress) {
       not_converged += !p.chain_converged;
       r.points.push_back(to_point(p, s, bg[ib]));
     }
-    if (progress) progress(static_cast<int>(ib + 1), static_cast<int>(bg.size()));
+    if (progress) progress(static_cast<int>((ib + 1) * sig.size()), static_cast<int>(bg.size() * sig.size()));
   }
   summarise_points(r);
   r.distance_m = e.distance_m;

@@ -41,6 +41,12 @@ class McModel {
   virtual const char* unit() const = 0;        // "px" (light-section) or "m" (time of flight)
   virtual double metres_per_unit() const = 0;  // triangulation at optics.distance_m, or 1
   virtual std::unique_ptr<McPointRunner> point(double signal, double background, std::uint64_t point_key) const = 0;
+  // Cost of one trial at the point relative to the model's other points, for time-left estimates
+  // (a sweep's first points may be far cheaper than its last); 1 where trials cost the same.
+  virtual double relative_cost(double signal, double background) const {
+    (void)signal, (void)background;
+    return 1.0;
+  }
 };
 
 // Key of a grid point's streams: (seed, point index) folded by SplitMix64.

@@ -21,8 +21,18 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& s, const TofLockinConf
   l.signal_photocurrent_A = s.get("light.signal_photocurrent_A", 0);
   l.reference_distance_m = s.get("light.reference_distance_m", 1.0);
   l.background_photocurrent_A = s.get("light.background_photocurrent_A", 0);
-  l.rows = static_cast<int>(s.get("window.rows", 0));
-  l.columns = static_cast<int>(s.get("window.columns", 0));
+  // The window is never clamped to the array: a scene asking for more than the preset's pixels is
+  // refused, as tof-spad's is.
+  const auto window = [&](const char* key, int array) {
+    const double v = s.get(key, 0);
+    if (v > array)
+      throw UserError(fmt::format("{}: {} = {:g}: allowed 0 (the whole array) or 1 <= value <= {} (the preset's {})",
+                                  s.file, key, v, array,
+                                  std::string(key) == "window.rows" ? "pixel.rows" : "pixel.columns"));
+    return static_cast<int>(v);
+  };
+  l.rows = window("window.rows", cfg.pixel.rows);
+  l.columns = window("window.columns", cfg.pixel.columns);
   for (const char* k : {"target.distance_m", "target.near_distance_m"})
     if (s.get(k, 1) > 1000)
       throw UserError(

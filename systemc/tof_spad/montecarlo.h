@@ -18,6 +18,7 @@ class TofSpadMc : public McModel {
   const char* unit() const override { return "m"; }
   double metres_per_unit() const override { return 1.0; }
   std::unique_ptr<McPointRunner> point(double signal_Hz, double background_Hz, std::uint64_t key) const override;
+  double relative_cost(double signal_Hz, double background_Hz) const override;
 
  private:
   TofSpadConfig cfg_;

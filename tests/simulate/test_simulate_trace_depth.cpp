@@ -240,7 +240,7 @@ TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
   };
   const Case cases[] = {{" --trace " + dir + "/w.txt", "must end in .vcd or .fst"},
                         {" --trace " + dir + "/w.fst --kernel-only", "--trace needs the SystemC model"},
-                        {" --trace " + dir + "/folder.vcd", "is a folder"}};
+                        {" --trace " + dir + "/folder.vcd", "exists and is a directory"}};
   fs::create_directories(dir + "/folder.vcd");
   for (const Case& c : cases) {
     const CommandResult r = rangesim_cmd(base + c.args + " --out " + dir + "/o");
