@@ -15,6 +15,30 @@ namespace rangesim::app {
 
 namespace {
 
+// "V (ls-conventional), A (ls-demodulation, tof-lockin), ..." from the registered schemas: the
+// unit is the suffix of each sensor's evaluation.signal_min_<unit> key.
+std::string signal_units() {
+  std::vector<std::pair<std::string, std::string>> units;  // unit, sensors
+  for (const auto& s : sensors())
+    for (const auto& p : s.schema().params) {
+      const std::string prefix = "evaluation.signal_min_";
+      if (p.key.rfind(prefix, 0) != 0) continue;
+      const std::string unit = p.key.substr(prefix.size());
+      auto it = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.first == unit; });
+      if (it == units.end())
+        units.push_back({unit, s.id});
+      else
+        it->second += ", " + s.id;
+    }
+  std::string text;
+  for (const auto& [unit, ids] : units) text += (text.empty() ? "" : ", ") + unit + " (" + ids + ")";
+  return text;
+}
+
+}  // namespace
+
+namespace {
+
 // Validators run on the flag's text before CLI11 converts it (app/cli_checks.h); an empty
 // description keeps --help as it is.
 CLI::Validator integer_in(long long lo, long long hi) {
@@ -126,13 +150,13 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                  "like a preset value (`rangesim show <sensor>` lists the keys)")
       ->type_name("KEY=VALUE");
   ev->add_option("--signal", ev_opt.signal,
-                 "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
-                 "tof-lockin), Hz count rate (tof-spad) (default: preset)");
+                 "Signal grid LO:HI:N, log-spaced, in the sensor's unit: " + signal_units() + " (default: preset)");
   ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
   ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)")
       ->transform(schema_integer("multisampling.samplings"));
   ev->add_option("--adc-bits", ev_opt.adc_bits,
-                 "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)")
+                 "ADC bits, the preset's *.adc_bits (per sampling where the sensor samples several times; 1 = "
+                 "comparator) (default: preset)")
       ->transform(schema_integer(".adc_bits"));
   ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)")
       ->transform(schema_integer("evaluation.frames_averaged"));
@@ -188,8 +212,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "summary.json into --out.");
   sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")->required();
   sim->add_option("--scene", sim_opt.scene,
-                  "Scene file (TOML) for the sensor: scenes/plane.toml (ls-conventional), scenes/<sensor>-plane.toml; "
-                  "target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
+                  "Scene file (TOML) for the sensor (examples in scenes/, docs/simulate.md); target.shape = "
+                  "\"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
       ->required();
   sim->add_option("--frames", sim_opt.frames,
                   "Frame accesses to simulate (default: one range map = timing.beam_positions)")
@@ -203,8 +227,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
                   "gtkwave package); off by default");
   sim->add_option("--trace-rows", sim_opt.trace_rows,
-                  "With --trace: the rows whose address search and centre processor the waveform shows, e.g. 0,5,9\n"
-                  "(ls-conventional; default: first, quarter, middle, last)")
+                  "With --trace: the rows whose blocks (address search, centre processor) the waveform shows, e.g.\n"
+                  "0,5,9 (default: first, quarter, middle, last); sensors without per-row blocks refuse it")
       ->delimiter(',')
       ->type_name("LIST");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)")->check(kPath);
@@ -217,18 +241,17 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                 "With --kernel-only: evaluate every clock cycle (event skipping off)");
   sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
   sim->add_flag("--dense,--no-sparse", sim_opt.dense,
-                "Simulate every pixel one by one (sparse pixels off: no window around the beam; tof-spad: "
-                "background-only pixels not drawn as one class)");
+                "Simulate every pixel one by one (sparse pixels off: no window around the beam, background-only "
+                "pixels not drawn as one class)");
   sim->add_flag("--no-aggregate", sim_opt.no_aggregate,
-                "ls-demodulation: step the N correlation periods of each window one by one instead of one jump\n"
-                "(golden's exact sum, one shot-noise draw per integrator; --tick always steps them);\n"
-                "tof-lockin: run the N_acc accumulation periods one by one instead of one draw of their sum;\n"
-                "tof-spad: run the laser cycles one by one (aggregation runs only where cycles are independent)");
+                "Run the periods or laser cycles the sensor's model aggregates (correlation periods, accumulation\n"
+                "periods, laser cycles: docs/simulate.md) one by one instead of in one exact jump or draw;\n"
+                "a sensor without aggregation refuses it");
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");
   sim->add_option("--time-step", sim_opt.time_step_s,
-                  "tof-lockin: integrate the received pulse's overlap with the gate windows numerically at this\n"
-                  "step in seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default)\n"
-                  "= exact. Error falls and cost rises as the step shrinks")
+                  "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
+                  "seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default) = exact.\n"
+                  "Error falls and cost rises as the step shrinks; sensors exact on their clock grid refuse it")
       ->check(real_in(0, false, 1, "s"));
 
   TableOptions& tb_opt = c.table;
@@ -327,8 +350,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
       "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
       "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
-      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (ls-conventional,\n"
-      "tof-spad, ls-demodulation): its Verilog parameters come from the preset, the RTL is verilated\n"
+      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (sensors whose\n"
+      "readout RTL is sized by the preset): its Verilog parameters come from the preset, the RTL is verilated\n"
       "and compiled at run time (needs verilator) and cached in $RANGESIM_RTL_CACHE (default\n"
       "$XDG_CACHE_HOME/rangesim/rtl, else ~/.cache/rangesim/rtl).\n"
       "--rtl FILE.sv co-simulates your own Verilog instead: its modules replace the rangesim blocks of\n"
@@ -358,7 +381,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->check(kPath);
   co->add_option("--rtl", co_opt.rtl,
                  "Your Verilog file (repeatable): its modules replace the rangesim blocks of the same name in a\n"
-                 "sensor's readout (ls-conventional, tof-spad, ls-demodulation or a preset file of one)")
+                 "sensor's readout (its target or a preset file; other targets refuse it, naming those allowed)")
       ->type_name("FILE.sv");
   co->add_option("--top", co_opt.top, "With --rtl: the block your files implement (default: every block they define)");
   co->add_option(
