@@ -32,5 +32,7 @@ GridAxis parse_grid_axis(const std::string& text, const std::string& flag);
 // apply_settings) and checks that `command` has a model for its sensor.
 ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& command,
                               const std::vector<std::string>& settings = {});
+// The check of load_modelled_preset on a loaded preset: throws NotModelled naming `command`.
+void require_modelled(const ParamSet& params, const std::string& command);
 
 }  // namespace rangesim::app

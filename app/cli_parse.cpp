@@ -4,7 +4,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
 #include <limits>
 #include <ostream>
 
@@ -13,6 +12,30 @@
 #include "core/sensor_registry.h"
 
 namespace rangesim::app {
+
+namespace {
+
+// "V (ls-conventional), A (ls-demodulation, tof-lockin), ..." from the registered schemas: the
+// unit is the suffix of each sensor's evaluation.signal_min_<unit> key.
+std::string signal_units() {
+  std::vector<std::pair<std::string, std::string>> units;  // unit, sensors
+  for (const auto& s : sensors())
+    for (const auto& p : s.schema().params) {
+      const std::string prefix = "evaluation.signal_min_";
+      if (p.key.rfind(prefix, 0) != 0) continue;
+      const std::string unit = p.key.substr(prefix.size());
+      auto it = std::find_if(units.begin(), units.end(), [&](const auto& u) { return u.first == unit; });
+      if (it == units.end())
+        units.push_back({unit, s.id});
+      else
+        it->second += ", " + s.id;
+    }
+  std::string text;
+  for (const auto& [unit, ids] : units) text += (text.empty() ? "" : ", ") + unit + " (" + ids + ")";
+  return text;
+}
+
+}  // namespace
 
 namespace {
 
@@ -129,13 +152,13 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                  "like a preset value (`rangesim show <sensor>` lists the keys)")
       ->type_name("KEY=VALUE");
   ev->add_option("--signal", ev_opt.signal,
-                 "Signal grid LO:HI:N, log-spaced, in the sensor's unit: V (ls-conventional), A (ls-demodulation,\n"
-                 "tof-lockin), Hz count rate (tof-spad) (default: preset)");
+                 "Signal grid LO:HI:N, log-spaced, in the sensor's unit: " + signal_units() + " (default: preset)");
   ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
   ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)")
       ->transform(schema_integer("multisampling.samplings"));
   ev->add_option("--adc-bits", ev_opt.adc_bits,
-                 "ADC bits (ls-conventional: per sampling, 1 = comparator) (default: preset)")
+                 "ADC bits, the preset's *.adc_bits (per sampling where the sensor samples several times; 1 = "
+                 "comparator) (default: preset)")
       ->transform(schema_integer(".adc_bits"));
   ev->add_option("--frames", ev_opt.frames, "Frames averaged, where the sensor has that parameter (default: preset)")
       ->transform(schema_integer("evaluation.frames_averaged"));
@@ -192,8 +215,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "summary.json into --out.");
   sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")->required();
   sim->add_option("--scene", sim_opt.scene,
-                  "Scene file (TOML) for the sensor: scenes/plane.toml (ls-conventional), scenes/<sensor>-plane.toml; "
-                  "target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
+                  "Scene file (TOML) for the sensor (examples in scenes/, docs/simulate.md); target.shape = "
+                  "\"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
       ->required();
   sim->add_option("--frames", sim_opt.frames,
                   "Frame accesses to simulate (default: one range map = timing.beam_positions)")
@@ -207,6 +230,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
                   "gtkwave package); off by default")
       ->check(kPath);
+  sim->add_option("--trace-rows", sim_opt.trace_rows,
+                  "With --trace: the rows whose blocks (address search, centre processor) the waveform shows, e.g.\n"
+                  "0,5,9 (default: first, quarter, middle, last); sensors without per-row blocks refuse it")
+      ->delimiter(',')
+      ->type_name("LIST");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)")->check(kPath);
   sim->add_flag("--force", sim_opt.force,
                 "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
@@ -217,29 +245,18 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                 "With --kernel-only: evaluate every clock cycle (event skipping off)");
   sim->add_flag("--noise-free", sim_opt.noise_free, "Switch all noise sources off");
   sim->add_flag("--dense,--no-sparse", sim_opt.dense,
-                "Simulate every pixel one by one (sparse pixels off: no window around the beam; tof-spad: "
-                "background-only pixels not drawn as one class)");
+                "Simulate every pixel one by one (sparse pixels off: no window around the beam, background-only "
+                "pixels not drawn as one class)");
   sim->add_flag("--no-aggregate", sim_opt.no_aggregate,
-                "ls-demodulation: step the N correlation periods of each window one by one instead of one jump\n"
-                "(golden's exact sum, one shot-noise draw per integrator; --tick always steps them);\n"
-                "tof-lockin: run the N_acc accumulation periods one by one instead of one draw of their sum;\n"
-                "tof-spad: run the laser cycles one by one (aggregation runs only where cycles are independent)");
+                "Run the periods or laser cycles the sensor's model aggregates (correlation periods, accumulation\n"
+                "periods, laser cycles: docs/simulate.md) one by one instead of in one exact jump or draw;\n"
+                "a sensor without aggregation refuses it");
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");
   sim->add_option("--time-step", sim_opt.time_step_s,
-                  "tof-lockin: integrate the received pulse's overlap with the gate windows numerically at this\n"
-                  "step in seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default)\n"
-                  "= exact. Error falls and cost rises as the step shrinks")
-      ->check(CLI::Validator(
-          [](std::string& s) {
-            // Any number passes: the model's check names the range of its preset (T0 / 1e5 .. T0).
-            char* end = nullptr;
-            std::strtod(s.c_str(), &end);
-            return !s.empty() && *end == '\0' ? std::string()
-                                              : "'" + s +
-                                                    "' is not a number; allowed 0 (exact) or a step in seconds "
-                                                    "from source.pulse_width_s / 1e5 to source.pulse_width_s";
-          },
-          ""));
+                  "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
+                  "seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default) = exact.\n"
+                  "Error falls and cost rises as the step shrinks; sensors exact on their clock grid refuse it")
+      ->check(real_in(0, false, 1, "s"));
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(
@@ -337,10 +354,14 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
       "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
       "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
-      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (ls-conventional,\n"
-      "tof-spad, ls-demodulation): its Verilog parameters come from the preset, the RTL is verilated\n"
+      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (sensors whose\n"
+      "readout RTL is sized by the preset): its Verilog parameters come from the preset, the RTL is verilated\n"
       "and compiled at run time (needs verilator) and cached in $RANGESIM_RTL_CACHE (default\n"
       "$XDG_CACHE_HOME/rangesim/rtl, else ~/.cache/rangesim/rtl).\n"
+      "--rtl FILE.sv co-simulates your own Verilog instead: its modules replace the rangesim blocks of\n"
+      "the same name inside the readout (ports as in docs/rtl-contract.md, checked first), same\n"
+      "harness and scoreboard; with a sensor target it runs that target's instance, with a preset file\n"
+      "that preset's architecture.\n"
       "Exit codes: 0 no mismatch, 4 mismatches found (or an injected fault not applied), 2 bad input,\n"
       "130 interrupted (Ctrl-C; 'all' keeps its journal and prints the command that resumes).");
   co->add_option("target", co_opt.target, "Target name (sensor id or RTL block), 'all', or a preset file (.toml)");
@@ -355,8 +376,18 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->transform(unsigned_in(0, kMaxU64));
   co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)")
       ->check(kPath);
-  co->add_option("--junit", co_opt.junit, "Write a JUnit XML report (one testcase per target) to this file")
+  co->add_option("--junit", co_opt.junit,
+                 "Write a JUnit XML report (one testcase per target and scoreboard check) to this file")
       ->check(kPath);
+  co->add_option("--coverage-out", co_opt.coverage_out,
+                 "Write the RTL coverage counters in Verilator's coverage.dat format to this file, for\n"
+                 "verilator_coverage --annotate ('all': FILE_<target>.dat)")
+      ->check(kPath);
+  co->add_option("--rtl", co_opt.rtl,
+                 "Your Verilog file (repeatable): its modules replace the rangesim blocks of the same name in a\n"
+                 "sensor's readout (its target or a preset file; other targets refuse it, naming those allowed)")
+      ->type_name("FILE.sv");
+  co->add_option("--top", co_opt.top, "With --rtl: the block your files implement (default: every block they define)");
   co->add_option(
       "--inject-fault", co_opt.inject_fault,
       "Run with this named fault of the target (see --list; a preset takes its sensor's); it must be reported");

@@ -7,6 +7,7 @@
 // sensor's readout verilated at run time with the preset's parameters, in a child process built
 // and cached by tb/common/rtl_build.h; its report comes back as JSON and renders the same way.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,6 +16,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <fstream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -68,6 +71,7 @@ json coverage_json(const tb::RtlCoverage& c) {
   j["line_hit"] = c.line_hit;
   j["toggle_points"] = c.toggle_points;
   j["toggle_hit"] = c.toggle_hit;
+  j["uncovered_lines"] = c.uncovered_lines;  // {"rtl/<folder>/<file>.sv": [line, ...]}
   return j;
 }
 
@@ -99,6 +103,10 @@ json report_json(const tb::CosimReport& r, const tb::RtlCoverage& cov, const std
                   {"expected", m.expected},
                   {"actual", m.actual}});
   j["first_mismatches"] = ms;
+  json checks = json::object();
+  for (const auto& [name, c] : r.checks)
+    checks[name] = {{"transactions", c.transactions}, {"mismatches", c.mismatches}};
+  j["checks"] = checks;
   j["wall_time_s"] = wall_s;
   return j;
 }
@@ -140,6 +148,11 @@ void print_text(const json& r) {
   fmt::print("  RTL assertions fired {}\n", r["rtl_assertions_failed"].get<int>());
   fmt::print("  coverage line        {}\n", pct(r["coverage_line"]));
   fmt::print("  coverage toggle      {}\n", pct(r["coverage_toggle"]));
+  for (const auto& [file, lines] : r["coverage"]["uncovered_lines"].items()) {
+    std::string list;
+    for (const auto& l : lines) list += (list.empty() ? "" : ", ") + std::to_string(l.get<int>());
+    fmt::print("  uncovered lines      {}: {}\n", file, list);
+  }
   if (!r["fault"].is_null())
     fmt::print("  injected fault       {}: {}\n", r["fault"]["name"].get<std::string>(),
                r["fault"]["injected"].get<bool>() ? r["fault"]["site"].get<std::string>()
@@ -163,33 +176,85 @@ std::string xml_escape(const std::string& s) {
   return o;
 }
 
+// One JUnit testcase: passes, or fails with `failures` (readable lines) as its text.
+struct JunitCase {
+  std::string classname, name;
+  double time_s = 0;
+  std::uint64_t failures = 0;
+  std::string text, out;
+};
+
+// The testcases of one run: one per check its scoreboard compared (classname the target), and
+// one "run" for what no check owns (a fault not applied, a stall); a run whose harness names no
+// checks is one testcase.
+std::vector<JunitCase> junit_cases(const json& r) {
+  const std::string target = r["target"].get<std::string>();
+  const double time_s = r["wall_time_s"].get<double>();
+  const std::string out =
+      fmt::format("cycles {} transactions {} mismatches {} golden_checks {}", r["cycles"].get<unsigned long long>(),
+                  r["transactions"].get<unsigned long long>(), r["mismatches"].get<unsigned long long>(),
+                  r["golden_checks"].get<unsigned long long>());
+  std::string fault_line;
+  if (!r["fault"].is_null())
+    fault_line =
+        "injected fault " + r["fault"]["name"].get<std::string>() + ": " + r["fault"]["site"].get<std::string>() + "\n";
+  const json checks = r.value("checks", json::object());
+  if (checks.empty()) {
+    std::string body;
+    for (const auto& m : r["first_mismatches"]) body += mismatch_line(m) + "\n";
+    return {{"rangesim.cosim", target, time_s, passed(r) ? 0 : r["mismatches"].get<std::uint64_t>(), body + fault_line,
+             out}};
+  }
+  std::vector<JunitCase> cases;
+  std::uint64_t owned = 0;
+  for (const auto& [name, c] : checks.items()) {
+    JunitCase k{"rangesim.cosim." + target,
+                name,
+                0,
+                c["mismatches"].get<std::uint64_t>(),
+                "",
+                fmt::format("transactions {} mismatches {}", c["transactions"].get<unsigned long long>(),
+                            c["mismatches"].get<unsigned long long>())};
+    for (const auto& m : r["first_mismatches"])
+      if (m["check"] == name) k.text += mismatch_line(m) + "\n";
+    if (k.failures && !fault_line.empty()) k.text += fault_line;
+    owned += k.failures;
+    cases.push_back(std::move(k));
+  }
+  const std::uint64_t rest =
+      r["mismatches"].get<std::uint64_t>() - std::min(owned, r["mismatches"].get<std::uint64_t>());
+  if (rest > 0 || (!r["fault"].is_null() && owned == 0)) {
+    JunitCase run{"rangesim.cosim." + target, "run", 0, std::max<std::uint64_t>(rest, 1), fault_line, out};
+    for (const auto& m : r["first_mismatches"])
+      if (!checks.contains(m["check"].get<std::string>())) run.text += mismatch_line(m) + "\n";
+    cases.push_back(std::move(run));
+  }
+  cases.front().time_s = time_s;  // the run's wall time, once
+  cases.front().out = out + "; " + cases.front().out;
+  return cases;
+}
+
 std::string junit_xml(const std::vector<json>& runs) {
-  int failures = 0;
+  std::vector<JunitCase> cases;
   double total = 0;
   for (const auto& r : runs) {
-    failures += passed(r) ? 0 : 1;
+    for (auto& c : junit_cases(r)) cases.push_back(std::move(c));
     total += r["wall_time_s"].get<double>();
   }
+  int failures = 0;
+  for (const auto& c : cases) failures += c.failures > 0;
   std::string x = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", runs.size(),
+  x += fmt::format("<testsuites name=\"rangesim cosim\" tests=\"{}\" failures=\"{}\" time=\"{:.3f}\">\n", cases.size(),
                    failures, total);
   x += fmt::format("  <testsuite name=\"rangesim.cosim\" tests=\"{}\" failures=\"{}\" errors=\"0\" time=\"{:.3f}\">\n",
-                   runs.size(), failures, total);
-  for (const auto& r : runs) {
-    x += fmt::format("    <testcase classname=\"rangesim.cosim\" name=\"{}\" time=\"{:.3f}\">\n",
-                     xml_escape(r["target"].get<std::string>()), r["wall_time_s"].get<double>());
-    if (!passed(r)) {
-      std::string body;
-      for (const auto& m : r["first_mismatches"]) body += mismatch_line(m) + "\n";
-      if (!r["fault"].is_null())
-        body += "injected fault " + r["fault"]["name"].get<std::string>() + ": " +
-                r["fault"]["site"].get<std::string>() + "\n";
-      x += fmt::format("      <failure message=\"{} mismatches\" type=\"mismatch\">{}</failure>\n",
-                       r["mismatches"].get<unsigned long long>(), xml_escape(body));
-    }
-    x += fmt::format("      <system-out>cycles {} transactions {} mismatches {} golden_checks {}</system-out>\n",
-                     r["cycles"].get<unsigned long long>(), r["transactions"].get<unsigned long long>(),
-                     r["mismatches"].get<unsigned long long>(), r["golden_checks"].get<unsigned long long>());
+                   cases.size(), failures, total);
+  for (const auto& c : cases) {
+    x += fmt::format("    <testcase classname=\"{}\" name=\"{}\" time=\"{:.3f}\">\n", xml_escape(c.classname),
+                     xml_escape(c.name), c.time_s);
+    if (c.failures)
+      x += fmt::format("      <failure message=\"{} mismatches\" type=\"mismatch\">{}</failure>\n", c.failures,
+                       xml_escape(c.text));
+    x += fmt::format("      <system-out>{}</system-out>\n", xml_escape(c.out));
     x += "    </testcase>\n";
   }
   x += "  </testsuite>\n</testsuites>\n";
@@ -245,8 +310,27 @@ std::string preset_path_of(const std::string& name) {
 
 // `cosim <preset>`: the sensor's readout verilated with the preset's Verilog parameters (cached),
 // run in a child process on the same options as a built-in target.
+// With --rtl: the user's files, absolute; UserError naming a file that cannot be read.
+std::vector<std::string> user_rtl_files(const CosimCommandOptions& opt) {
+  std::vector<std::string> files;
+  for (const auto& f : opt.rtl) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(f, ec) || access(f.c_str(), R_OK) != 0)
+      throw UserError("cosim: --rtl '" + f +
+                      "': " + (std::filesystem::exists(f, ec) ? "not a readable file" : "no such file"));
+    files.push_back(std::filesystem::absolute(f).lexically_normal().string());
+  }
+  return files;
+}
+
+std::string file_names(const std::vector<std::string>& files) {
+  std::string s;
+  for (const auto& f : files) s += (s.empty() ? "" : "+") + std::filesystem::path(f).filename().string();
+  return s;
+}
+
 json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigned long long cycles,
-                const std::string& trace_file) {
+                const std::string& trace_file, tb::RtlCoverage& cov) {
   ParamSet preset = load_preset_file(path);
   apply_settings(preset, opt.settings);
   const tb::PresetCosim* pc = nullptr;
@@ -262,7 +346,15 @@ json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigne
   }
   const tb::CosimTarget* target = find_target(pc->target);
   check_fault(opt.inject_fault, *target, path + " (the faults of " + pc->target + ")");
-  const tb::RtlBuildSpec spec = pc->spec(preset);
+  tb::RtlBuildSpec spec = pc->spec(preset);
+  spec.user_files = user_rtl_files(opt);
+  if (!spec.user_files.empty()) {
+    const std::vector<std::string> blocks = tb::check_user_rtl(spec, preset, opt.top);
+    if (!opt.json)
+      fmt::print(stderr, "cosim: {} replace{} {} in {} (ports as in docs/rtl-contract.md)\n",
+                 file_names(spec.user_files), spec.user_files.size() == 1 ? "s" : "", fmt::join(blocks, ", "),
+                 spec.top);
+  }
   const std::string exe = tb::rtl_cosim_executable(spec);
   if (!opt.json) fmt::print(stderr, "cosim: {} ({} cycles, seed {})...\n", path, cycles, opt.seed);
   tb::CosimOptions o;
@@ -272,18 +364,19 @@ json run_preset(const CosimCommandOptions& opt, const std::string& path, unsigne
   o.trace_path = trace_file;
   const auto t0 = std::chrono::steady_clock::now();
   tb::CosimReport r;
-  tb::RtlCoverage cov;
   tb::run_rtl_cosim(exe, path, opt.settings, o, r, cov);
+  if (!spec.user_files.empty()) r.target += "+rtl:" + file_names(spec.user_files);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   require_fault_applied(r, opt.inject_fault);
   return report_json(r, cov, opt.inject_fault, wall);
 }
 
 json run_child(const std::string& target, const CosimCommandOptions& opt, unsigned long long cycles,
-               const std::string& trace) {
+               const std::string& trace, const std::string& coverage_out) {
   std::vector<std::string> args{
       "rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed", std::to_string(opt.seed)};
   if (!trace.empty()) args.insert(args.end(), {"--trace", trace});
+  if (!coverage_out.empty()) args.insert(args.end(), {"--coverage-out", coverage_out});
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("cosim all: pipe failed");
   const pid_t pid = fork();
@@ -317,6 +410,55 @@ json run_child(const std::string& target, const CosimCommandOptions& opt, unsign
 
 }  // namespace
 
+bool has_preset_cosim(const std::string& target) { return tb::preset_cosim_of_target(target) != nullptr; }
+
+std::string preset_cosim_targets() {
+  std::string s;
+  for (const auto& c : tb::preset_cosims()) s += (s.empty() ? "" : ", ") + std::string(c.target);
+  return s;
+}
+
+std::string instance_preset_of(const std::string& target) {
+  return tb::instance_preset_path(*tb::preset_cosim_of_target(target));
+}
+
+// `all` writes one file per target: FILE_<target><ext> ("" stays "").
+std::string per_target(const std::string& path, const std::string& ext, const std::string& target) {
+  if (path.empty()) return "";
+  std::string stem = path;
+  if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
+    stem.resize(stem.size() - ext.size());
+  return stem + "_" + target + ext;
+}
+
+// The output files of one run (--junit, --trace, --coverage-out), staged next to their
+// destination and committed together: one OutputDir per directory (a second one there would
+// share, and on commit remove, the first one's staging).
+class StagedFiles {
+ public:
+  // The staged path of `path` ("" stays ""); UserError when it names a directory.
+  std::string stage(const std::string& path, const std::string& flag) {
+    if (path.empty()) return "";
+    auto [d, n] = split_path(path);
+    if (n.empty()) throw UserError("cosim: " + flag + " '" + path + "' names a directory; give a file");
+    auto& dir = dirs_[d];
+    if (!dir) dir = std::make_unique<OutputDir>(d, flag);
+    return dir->staged(n);
+  }
+  void commit() {
+    for (auto& [d, o] : dirs_) o->commit();
+  }
+
+ private:
+  std::map<std::string, std::unique_ptr<OutputDir>> dirs_;
+};
+
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cosim: cannot write " + path);
+}
+
 int run_cosim(const CosimCommandOptions& opt) {
   const auto& targets = tb::cosim_targets();
   if (opt.list) {
@@ -339,9 +481,10 @@ int run_cosim(const CosimCommandOptions& opt) {
   const tb::CosimTarget* target = all ? nullptr : find_target(opt.target);
   const std::string preset_path = all || target ? std::string() : preset_path_of(opt.target);
   if (!opt.settings.empty() && preset_path.empty())
-    throw UserError(fmt::format("--set: {} is a built-in target with fixed parameters; --set applies to a preset "
-                                "file (rangesim cosim presets/<sensor>.toml --set KEY=VALUE)",
-                                opt.target));
+    throw UserError(
+        fmt::format("--set: {} is a built-in target with fixed parameters; --set applies to a preset "
+                    "file (rangesim cosim presets/<sensor>.toml --set KEY=VALUE)",
+                    opt.target));
   const unsigned long long cycles = opt.cycles.value_or(kDefaultCycles);
   if (cycles < 1 || cycles > kMaxCycles)
     throw UserError(fmt::format("cosim: --cycles {} out of range; allowed 1..{}", cycles, kMaxCycles));
@@ -350,29 +493,21 @@ int run_cosim(const CosimCommandOptions& opt) {
   if (all && !opt.inject_fault.empty())
     throw UserError("cosim: --inject-fault needs one target (fault names are per target; see --list)");
   if (target) check_fault(opt.inject_fault, *target, opt.target);
+  if (!opt.rtl.empty() && (all || (target && !has_preset_cosim(opt.target))))
+    throw UserError(
+        fmt::format("cosim: --rtl replaces blocks inside a sensor's readout; allowed targets: {} or a "
+                    "preset file of one of them",
+                    preset_cosim_targets()));
+  if (!opt.top.empty() && opt.rtl.empty())
+    throw UserError("cosim: --top names the block of your --rtl files; add --rtl");
   if (!opt.junit.empty()) check_output_file(opt.junit, "--junit");
   if (!opt.trace.empty() && !all) check_output_file(opt.trace, "--trace");
+  if (!opt.coverage_out.empty() && !all) check_output_file(opt.coverage_out, "--coverage-out");
   // Output files are staged next to their destination and appear only when complete.
-  std::unique_ptr<OutputDir> junit_dir, trace_dir;
-  std::string junit_name, trace_file;
-  if (!opt.junit.empty()) {
-    auto [d, n] = split_path(opt.junit);
-    if (n.empty()) throw UserError("cosim: --junit '" + opt.junit + "' names a directory; give a file");
-    junit_dir = std::make_unique<OutputDir>(d, "--junit");
-    junit_name = n;
-  }
-  if (!opt.trace.empty() && !all) {
-    auto [d, n] = split_path(opt.trace);
-    if (n.empty()) throw UserError("cosim: --trace '" + opt.trace + "' names a directory; give a file");
-    // One staging folder per directory: a second OutputDir there would share (and on commit
-    // remove) the first one's, losing the VCD when --junit goes to the same directory.
-    if (junit_dir && d == split_path(opt.junit).first) {
-      trace_file = junit_dir->staged(n);
-    } else {
-      trace_dir = std::make_unique<OutputDir>(d, "--trace");
-      trace_file = trace_dir->staged(n);
-    }
-  }
+  StagedFiles staged;
+  const std::string junit_file = staged.stage(opt.junit, "--junit");
+  const std::string trace_file = all ? "" : staged.stage(opt.trace, "--trace");
+  const std::string coverage_file = all ? "" : staged.stage(opt.coverage_out, "--coverage-out");
 
   std::vector<json> runs;
   std::unique_ptr<SweepJournal> journal;
@@ -389,12 +524,7 @@ int run_cosim(const CosimCommandOptions& opt) {
         runs.push_back(json::parse(it->second));
         continue;
       }
-      std::string trace;
-      if (!opt.trace.empty()) {
-        std::string stem = opt.trace;
-        if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".vcd") == 0) stem.resize(stem.size() - 4);
-        trace = stem + "_" + t.name + ".vcd";
-      }
+      const std::string trace = per_target(opt.trace, ".vcd", t.name);
       // The full-size readout costs milliseconds of wall time per cycle (375 x 365 pixels): in
       // `all` it gets at most ten frame accesses, else a large N would run for hours. Run it
       // alone for more.
@@ -403,7 +533,7 @@ int run_cosim(const CosimCommandOptions& opt) {
       fmt::print(stderr, "cosim: {} ({} cycles{})...\n", t.name, n, n < cycles ? ", capped in 'all'" : "");
       json r;
       try {
-        r = run_child(t.name, opt, n, trace);
+        r = run_child(t.name, opt, n, trace, per_target(opt.coverage_out, ".dat", t.name));
       } catch (const std::runtime_error&) {
         if (!sigint_flag().load()) throw;
       }
@@ -417,8 +547,11 @@ int run_cosim(const CosimCommandOptions& opt) {
       fmt::print(stderr, "cosim: {} done: {} mismatches\n", t.name,
                  runs.back()["mismatches"].get<unsigned long long>());
     }
-  } else if (!preset_path.empty()) {
-    runs.push_back(run_preset(opt, preset_path, cycles, trace_file));
+  } else if (!preset_path.empty() || !opt.rtl.empty()) {
+    tb::RtlCoverage cov;
+    runs.push_back(
+        run_preset(opt, preset_path.empty() ? instance_preset_of(opt.target) : preset_path, cycles, trace_file, cov));
+    if (!coverage_file.empty()) write_text(coverage_file, cov.data);
   } else {
     if (!opt.json) fmt::print(stderr, "cosim: {} ({} cycles, seed {})...\n", target->name, cycles, opt.seed);
     tb::CosimOptions o;
@@ -446,7 +579,9 @@ int run_cosim(const CosimCommandOptions& opt) {
     dup2(saved_stdout, STDOUT_FILENO);
     close(saved_stdout);
     require_fault_applied(r, opt.inject_fault);
-    runs.push_back(report_json(r, tb::rtl_coverage(), opt.inject_fault, wall));
+    const tb::RtlCoverage cov = tb::rtl_coverage();
+    runs.push_back(report_json(r, cov, opt.inject_fault, wall));
+    if (!coverage_file.empty()) write_text(coverage_file, cov.data);
   }
 
   json out;
@@ -472,11 +607,8 @@ int run_cosim(const CosimCommandOptions& opt) {
   } else {
     out = runs.front();
   }
-  if (junit_dir) {
-    junit_dir->write(junit_name, junit_xml(runs));
-    junit_dir->commit();
-  }
-  if (trace_dir) trace_dir->commit();
+  if (!junit_file.empty()) write_text(junit_file, junit_xml(runs));
+  staged.commit();
   if (journal) {  // the run is complete: nothing left to resume
     journal->remove();
     std::error_code ec;  // the default folder goes too when nothing else is in it

@@ -59,7 +59,8 @@ std::string key_with_suffix(const ParamSchema& schema, const std::string& suffix
 void require_key(const std::string& key, const std::string& flag, const ParamSet& params, const std::string& what) {
   if (key.empty())
     throw UserError(fmt::format("{}: sensor {} has no {} parameter (see `rangesim show {}`)", flag, params.sensor_id(),
-                                what, params.sensor_id()));
+                                what, params.sensor_id()),
+                    flag.substr(2));
 }
 
 void apply_grid(ParamSet& params, const ParamSchema& schema, const std::string& axis, const std::string& text) {
@@ -77,6 +78,11 @@ void apply_grid(ParamSet& params, const ParamSchema& schema, const std::string& 
 
 ParamSet evaluate_params(const EvaluateOptions& opt) {
   ParamSet params = load_modelled_preset(opt.sensor, "evaluate", opt.settings);
+  apply_evaluate_flags(params, opt);
+  return params;
+}
+
+void apply_evaluate_flags(ParamSet& params, const EvaluateOptions& opt) {
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   if (opt.samplings) {
     require_key(schema.find("multisampling.samplings") ? "multisampling.samplings" : "", "--samplings", params,
@@ -95,7 +101,6 @@ ParamSet evaluate_params(const EvaluateOptions& opt) {
   }
   if (opt.signal) apply_grid(params, schema, "signal", *opt.signal);
   if (opt.background) apply_grid(params, schema, "background", *opt.background);
-  return params;
 }
 
 ResourceEstimate evaluate_estimate(const ParamSet& params, bool monte_carlo) {

@@ -3,8 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_common.h"
+#include "app/command_data.h"
 #include "app/commands.h"
-#include "core/ls_conventional/config.h"
 #include "core/preset.h"
 #include "core/user_error.h"
 #include "golden/common/evaluate_sensor.h"
@@ -26,24 +26,30 @@ nlohmann::json frame_timing_json(const golden::FrameTiming& t) {
           {"phases", phases}};
 }
 
+void apply_frame_rate_samplings(ParamSet& params, int samplings) {
+  const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
+  if (!schema.find("multisampling.samplings"))
+    throw UserError(fmt::format("--samplings: sensor {} has no samplings parameter (see `rangesim show {}`)",
+                                params.sensor_id(), params.sensor_id()),
+                    "samplings");
+  params.set_integer("multisampling.samplings", samplings, "--samplings", schema);
+}
+
+nlohmann::json frame_rate_json(const ParamSet& params) {
+  nlohmann::json j = frame_timing_json(golden::frame_timing_for(params));
+  j["sensor"] = params.sensor_id();
+  j["preset"] = params.origin();
+  return j;
+}
+
 int run_frame_rate(const FrameRateOptions& opt) {
   ParamSet params = load_modelled_preset(opt.sensor, "frame-rate", opt.settings);
-  const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
-  if (opt.samplings) {
-    if (!schema.find("multisampling.samplings"))
-      throw UserError(fmt::format("--samplings: sensor {} has no samplings parameter (see `rangesim show {}`)",
-                                  params.sensor_id(), params.sensor_id()));
-    params.set_integer("multisampling.samplings", *opt.samplings, "--samplings", schema);
-  }
-  const golden::FrameTiming t = golden::frame_timing_for(params);
-
+  if (opt.samplings) apply_frame_rate_samplings(params, *opt.samplings);
   if (opt.json) {
-    nlohmann::json j = frame_timing_json(t);
-    j["sensor"] = params.sensor_id();
-    j["preset"] = params.origin();
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", frame_rate_json(params).dump(2));
     return 0;
   }
+  const golden::FrameTiming t = golden::frame_timing_for(params);
   const bool ls = params.sensor_id().rfind("ls-", 0) == 0;
   fmt::print("{}: {}{} at {:g} MHz\n\n", params.sensor_id(), ls ? "frame access" : "frame",
              ls && t.samplings > 0 ? fmt::format(" with {} sampling{}", t.samplings, t.samplings == 1 ? "" : "s") : "",

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/command_data.h"
 #include "app/commands.h"
 #include "core/preset.h"
 #include "core/user_error.h"
@@ -9,10 +10,8 @@
 
 namespace rangesim::app {
 
-int run_list(const ListOptions& opt) {
+nlohmann::json list_json() {
   nlohmann::json list = nlohmann::json::array();
-  if (!opt.json)
-    fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", "preset", "thesis", "evaluate", "frame-rate", "architecture");
   for (const auto& s : sensors()) {
     const bool modelled = golden::golden_model(s.id) != nullptr;  // evaluate, table and frame-rate
     std::string file;
@@ -21,18 +20,28 @@ int run_list(const ListOptions& opt) {
     } catch (const UserError&) {
       file = "(preset file not found)";
     }
-    if (opt.json)
-      list.push_back({{"id", s.id},
-                      {"title", s.title},
-                      {"thesis_ref", s.thesis_ref},
-                      {"golden_modelled", modelled},
-                      {"timing_modelled", modelled},
-                      {"file", file}});
-    else
-      fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s.id, s.thesis_ref, modelled ? "yes" : "not yet",
-                 modelled ? "yes" : "not yet", s.title);
+    list.push_back({{"id", s.id},
+                    {"title", s.title},
+                    {"thesis_ref", s.thesis_ref},
+                    {"golden_modelled", modelled},
+                    {"timing_modelled", modelled},
+                    {"file", file}});
   }
-  if (opt.json) fmt::print("{}\n", list.dump(2));
+  return list;
+}
+
+int run_list(const ListOptions& opt) {
+  const nlohmann::json list = list_json();
+  if (opt.json) {
+    fmt::print("{}\n", list.dump(2));
+    return 0;
+  }
+  fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", "preset", "thesis", "evaluate", "frame-rate", "architecture");
+  for (const auto& s : list) {
+    const char* modelled = s["golden_modelled"].get<bool>() ? "yes" : "not yet";
+    fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s["id"].get<std::string>(), s["thesis_ref"].get<std::string>(),
+               modelled, modelled, s["title"].get<std::string>());
+  }
   return 0;
 }
 
@@ -60,28 +69,33 @@ nlohmann::json value_json(const ParamValue& v) {
 
 }  // namespace
 
+nlohmann::json show_json(const ParamSet& params) {
+  const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
+  nlohmann::json j;
+  j["sensor"] = params.sensor_id();
+  j["file"] = params.origin();
+  j["golden_modelled"] = golden::golden_model(params.sensor_id()) != nullptr;
+  nlohmann::json ps = nlohmann::json::object();
+  for (const auto& spec : schema.params) {
+    const ParamValue& v = params.at(spec.key);
+    ps[spec.key] = {{"value", value_json(v)},
+                    {"unit", spec.unit},
+                    {"source", v.source},
+                    {"file", v.file},
+                    {"description", spec.description},
+                    {"allowed", describe_range(spec)}};
+  }
+  j["parameters"] = ps;
+  return j;
+}
+
 int run_show(const ShowOptions& opt) {
   ParamSet params = load_preset(opt.preset);
   apply_settings(params, opt.settings);
   const ParamSchema& schema = schema_for(params.sensor_id(), params.origin());
   const SensorInfo* info = find_sensor(params.sensor_id());
   if (opt.json) {
-    nlohmann::json j;
-    j["sensor"] = params.sensor_id();
-    j["file"] = params.origin();
-    j["golden_modelled"] = golden::golden_model(params.sensor_id()) != nullptr;
-    nlohmann::json ps = nlohmann::json::object();
-    for (const auto& spec : schema.params) {
-      const ParamValue& v = params.at(spec.key);
-      ps[spec.key] = {{"value", value_json(v)},
-                      {"unit", spec.unit},
-                      {"source", v.source},
-                      {"file", v.file},
-                      {"description", spec.description},
-                      {"allowed", describe_range(spec)}};
-    }
-    j["parameters"] = ps;
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", show_json(params).dump(2));
     return 0;
   }
   fmt::print("{} ({}) — {}\nfile: {}\n", params.sensor_id(), info ? info->thesis_ref : "?", info ? info->title : "",

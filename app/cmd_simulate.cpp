@@ -55,12 +55,15 @@ void report_to_stderr(const sc_core::sc_report& rep, const sc_core::sc_actions& 
 
 }  // namespace
 
-int run_simulate(const SimulateOptions& opt) {
+void route_systemc_reports_to_stderr() {
   // SystemC's informational reports (trace timescale, "stopped by user") are noise here; its
   // warnings and errors go to stderr (stdout carries --json).
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   sc_core::sc_report_handler::set_handler(report_to_stderr);
-  ParamSet params = load_modelled_preset(opt.sensor, "simulate", opt.settings);
+}
+
+const SimulateEntry& simulate_entry_for(const ParamSet& params, const SimulateOptions& opt) {
+  require_modelled(params, "simulate");
   const SimulateEntry* entry = nullptr;
   for (const auto& e : simulate_registry())
     if (e.sensor == params.sensor_id()) entry = &e;
@@ -74,13 +77,26 @@ int run_simulate(const SimulateOptions& opt) {
   };
   if (opt.no_aggregate && !entry->aggregation)
     throw UserError(fmt::format("--no-aggregate: {} has no aggregated path to switch off; allowed with {}",
-                                params.sensor_id(), allowed(&SimulateEntry::aggregation)));
+                                params.sensor_id(), allowed(&SimulateEntry::aggregation)),
+                    "no_aggregate");
   if (opt.time_step_s != 0.0 && !entry->time_step)
-    throw UserError(
-        fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
-                    "step; allowed with {} (or 0)",
-                    params.sensor_id(), allowed(&SimulateEntry::time_step)));
-  return run_and_render(opt, params, *entry);
+    throw UserError(fmt::format("--time-step: {} is exact on its clock grid and has no continuous-time integration to "
+                                "step; allowed with {} (or 0)",
+                                params.sensor_id(), allowed(&SimulateEntry::time_step)),
+                    "time_step");
+  if (!opt.trace_rows.empty() && !entry->trace_rows)
+    throw UserError(fmt::format("--trace-rows: the {} waveform has no per-row blocks to choose; allowed with {}",
+                                params.sensor_id(), allowed(&SimulateEntry::trace_rows)),
+                    "trace_rows");
+  if (!opt.trace_rows.empty() && opt.trace.empty())
+    throw UserError("--trace-rows chooses what --trace writes; add --trace", "trace_rows");
+  return *entry;
+}
+
+int run_simulate(const SimulateOptions& opt) {
+  route_systemc_reports_to_stderr();
+  const ParamSet params = load_modelled_preset(opt.sensor, "simulate", opt.settings);
+  return run_and_render(opt, params, simulate_entry_for(params, opt));
 }
 
 }  // namespace rangesim::app

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/params.h"
 #include "systemc/common/simulate_entry.h"
 
 namespace rangesim::app {
@@ -18,6 +19,7 @@ struct SimulateOptions {
   std::optional<long long> frames;    // --frames N: frame accesses (default: one range map = beam_positions)
   std::uint64_t seed = 1;             // --seed S: key of the noise streams
   std::string trace;                  // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
+  std::vector<int> trace_rows;        // --trace-rows: rows the waveform shows (empty: the sensor's choice)
   std::string out;                    // --out DIR ("" -> rangesim-out/simulate/<scene name>)
   bool force = false;                 // --force: replace the results of another kind of run in --out
   bool json = false;                  // --json: summary.json to stdout instead of the table
@@ -40,5 +42,13 @@ int run_simulate(const SimulateOptions& opt);
 using SimulateEntry = systemc::SimulateEntry;
 // The shipped sensors' scene runs (core/sensor_list.h), then any added at run time.
 std::vector<SimulateEntry>& simulate_registry();
+
+// The scene run of the preset's sensor, with the flags only some runs take checked against it:
+// NotModelled without a clock-level model, UserError for --no-aggregate / --time-step where the
+// run has no such path. (`opt.sensor` and the file flags are not read.)
+const SimulateEntry& simulate_entry_for(const ParamSet& params, const SimulateOptions& opt);
+
+// SystemC's informational reports off, its warnings and errors to stderr (stdout may carry JSON).
+void route_systemc_reports_to_stderr();
 
 }  // namespace rangesim::app

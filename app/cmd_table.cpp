@@ -3,8 +3,10 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
+#include "app/command_data.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "app/progress_line.h"
@@ -53,20 +55,22 @@ std::string difference(double ours, double thesis, const std::string& unit) {
   return fmt::format("{:+.3g}x", ours / thesis);
 }
 
-// Golden models report progress through a plain function pointer, hence the one line here.
-ProgressLine* g_progress = nullptr;
+// The command's progress, one line per sensor. Golden models report through a plain function
+// pointer, hence the pointer here; per thread, since the Python module may build tables on
+// several threads at once.
+thread_local ProgressLine* g_progress = nullptr;
 void table_progress(int done, int total) {
   if (g_progress) g_progress->update(done, total);
 }
 
-Column build_column(const golden::ThesisColumn& tc) {
+Column build_column(const golden::ThesisColumn& tc, golden::ProgressFn progress) {
   Column c{tc.sensor, tc.reference, false, {}, {}};
   const ParamSet params = load_preset(tc.sensor);
   c.modelled = golden::golden_model(tc.sensor) != nullptr;
   golden::EvalResult ev;
   if (c.modelled) {
     golden::DiscardPoints discard;  // the table needs the summary and the ranges only
-    ev = golden::evaluate_sensor_streamed(params, discard, &table_progress);
+    ev = golden::evaluate_sensor_streamed(params, discard, progress);
     c.published = golden::published_figures(params);
   }
   const bool total_sbr = tc.sbr_total;  // eq. 3.11, or eq. 3.23/4.11
@@ -192,25 +196,26 @@ std::string num_or_empty(double v) { return std::isfinite(v) ? fmt::format("{:.6
 
 nlohmann::json json_num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-}  // namespace
-
-int run_table(const TableOptions& opt) {
-  std::unique_ptr<OutputDir> out;
-  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out", OutputFolder{"table", opt.force});
-
-  // The columns of the registered sensors that have one in the thesis's table, in registry order.
+// The columns of the registered sensors that have one in the thesis's table, in registry order.
+std::vector<Column> build_columns(golden::ProgressFn progress) {
   std::vector<const golden::ThesisColumn*> thesis;
   for (const auto& s : sensors())
     if (const golden::GoldenModel* m = golden::golden_model(s.id); m && m->table_column)
       thesis.push_back(m->table_column);
   std::vector<Column> cols;
   for (const golden::ThesisColumn* tc : thesis) {
-    ProgressLine progress(fmt::format("table: sensor {}/{}", cols.size() + 1, thesis.size()), "operating points");
-    g_progress = &progress;
-    cols.push_back(build_column(*tc));
+    std::optional<ProgressLine> line;
+    if (progress == &table_progress) {
+      line.emplace(fmt::format("table: sensor {}/{}", cols.size() + 1, thesis.size()), "operating points");
+      g_progress = &*line;
+    }
+    cols.push_back(build_column(*tc, progress));
     g_progress = nullptr;
   }
+  return cols;
+}
 
+nlohmann::json columns_json(const std::vector<Column>& cols) {
   nlohmann::json j;
   j["table_5_1"] = nlohmann::json::array();
   for (const auto& c : cols) {
@@ -249,6 +254,19 @@ int run_table(const TableOptions& opt) {
     }
   j["published_reproduced"] = reproduced;
   j["published_total"] = total;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json table_json(golden::ProgressFn progress) { return columns_json(build_columns(progress)); }
+
+int run_table(const TableOptions& opt) {
+  std::unique_ptr<OutputDir> out;
+  if (!opt.out.empty()) out = std::make_unique<OutputDir>(opt.out, "--out", OutputFolder{"table", opt.force});
+  const std::vector<Column> cols = build_columns(&table_progress);
+  const nlohmann::json j = columns_json(cols);
+  const int reproduced = j["published_reproduced"].get<int>(), total = j["published_total"].get<int>();
 
   if (out) {
     std::ostringstream csv;

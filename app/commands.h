@@ -111,9 +111,12 @@ struct CosimCommandOptions {
   std::vector<std::string> settings;         // --set KEY=VALUE after a preset (not for built-in targets)
   std::optional<unsigned long long> cycles;  // clock cycles (default 100000)
   unsigned long long seed = 1;
-  std::string trace;         // RTL VCD file ("" = none)
-  std::string junit;         // JUnit XML file ("" = none)
-  std::string inject_fault;  // a fault name of the target ("" = none)
+  std::string trace;             // RTL VCD file ("" = none)
+  std::string junit;             // JUnit XML file ("" = none)
+  std::string coverage_out;      // Verilator coverage.dat file ("" = none)
+  std::vector<std::string> rtl;  // --rtl: the user's Verilog files
+  std::string top;               // --top: the block they implement ("" = every block they define)
+  std::string inject_fault;      // a fault name of the target ("" = none)
   bool json = false;
   bool list = false;
   // `all` journals each finished target (app/sweep_journal.h) so that a killed or interrupted run

@@ -12,6 +12,11 @@ ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& 
                               const std::vector<std::string>& settings) {
   ParamSet params = load_preset(id_or_path);
   apply_settings(params, settings);
+  require_modelled(params, command);
+  return params;
+}
+
+void require_modelled(const ParamSet& params, const std::string& command) {
   if (!golden::golden_model(params.sensor_id())) {
     std::string modelled;
     for (const auto& s : sensors())
@@ -21,7 +26,6 @@ ParamSet load_modelled_preset(const std::string& id_or_path, const std::string& 
                     "see `rangesim show {}`); modelled: {}",
                     command, params.sensor_id(), params.sensor_id(), modelled)};
   }
-  return params;
 }
 
 }  // namespace rangesim::app

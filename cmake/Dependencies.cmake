@@ -30,3 +30,28 @@ option(RANGESIM_WITH_MPI "Build with MPI when it is found (mpirun -n N rangesim 
 if(RANGESIM_WITH_MPI)
   find_package(MPI COMPONENTS CXX QUIET)
 endif()
+
+# Optional: the Python module `rangesim` (python/, docs/python.md); on when pybind11, the Python
+# headers and NumPy are found, built without it otherwise (-DRANGESIM_WITH_PYTHON=OFF switches it
+# off). Never in the sanitizer or fuzzing builds: an instrumented module cannot be loaded into
+# the uninstrumented interpreter.
+option(RANGESIM_WITH_PYTHON "Build the Python module rangesim when pybind11 and NumPy are found" ON)
+set(RANGESIM_PYTHON_MODULE OFF)
+if(RANGESIM_WITH_PYTHON AND NOT RANGESIM_SANITIZE AND NOT RANGESIM_FUZZ)
+  # Debian's pybind11-dev and python3-numpy serve /usr/bin/python3; a python3 earlier on PATH
+  # (pyenv's, say) sees neither, so that one is the default (-DPython3_EXECUTABLE=... overrides).
+  if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python3_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(Python3 COMPONENTS Interpreter Development.Module NumPy QUIET)
+  if(Python3_FOUND)
+    find_package(pybind11 2.6 CONFIG QUIET)
+  endif()
+  if(Python3_FOUND AND pybind11_FOUND)
+    set(RANGESIM_PYTHON_MODULE ON)
+    message(STATUS "Python module rangesim: pybind11 ${pybind11_VERSION}, ${Python3_EXECUTABLE} ${Python3_VERSION}")
+  else()
+    message(STATUS "Python module rangesim not built: pybind11 or NumPy not found "
+                   "(Debian: apt-get install pybind11-dev python3-numpy)")
+  endif()
+endif()

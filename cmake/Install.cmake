@@ -15,7 +15,7 @@ set(RANGESIM_INSTALL_INCLUDEDIR "${CMAKE_INSTALL_INCLUDEDIR}/rangesim")
 # Libraries: whichever of them this configuration builds (golden and rtl are optional here so
 # a partial tree still installs).
 set(_rangesim_export_targets)
-foreach(_t rangesim_core rangesim_golden rangesim_scene rangesim_systemc rangesim_rtl)
+foreach(_t rangesim_core rangesim_golden rangesim_scene rangesim_systemc rangesim_rtl rangesim_cosim_kit)
   if(TARGET ${_t})
     list(APPEND _rangesim_export_targets ${_t})
   endif()
@@ -51,6 +51,21 @@ if(TARGET rangesim_rtl)
     install(DIRECTORY "${_d}/" DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/rtl"
       FILES_MATCHING PATTERN "*.h")
   endforeach()
+endif()
+
+# The verification kit (tb/CMakeLists.txt: rangesim_cosim_kit): its headers, and rangesim's
+# Verilog with its Verilator flags and instance presets, for a user's testbench to verilate or
+# to compare their own RTL with (docs/rtl-contract.md).
+if(TARGET rangesim_cosim_kit)
+  install(FILES
+    "${PROJECT_SOURCE_DIR}/tb/common/cosim_scoreboard.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_run.h"
+    "${PROJECT_SOURCE_DIR}/tb/common/cosim_ports.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_target.h"
+    "${PROJECT_SOURCE_DIR}/tb/common/cosim_coverage.h" "${PROJECT_SOURCE_DIR}/tb/common/vcd_merge.h"
+    DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/tb/common")
+  install(DIRECTORY "${PROJECT_SOURCE_DIR}/rtl/"
+    DESTINATION "${CMAKE_INSTALL_DATADIR}/rangesim/rtl"
+    FILES_MATCHING PATTERN "*.sv" PATTERN "*.vlt" PATTERN "*.f" PATTERN "*.toml")
+  install(FILES "${PROJECT_SOURCE_DIR}/docs/rtl-contract.md" DESTINATION "${CMAKE_INSTALL_DATADIR}/rangesim")
 endif()
 
 # Sensor presets (core looks here: RANGESIM_INSTALL_PRESET_DIR).

@@ -17,7 +17,7 @@ const ParamSpec* ParamSchema::find(const std::string& key) const {
 
 const ParamValue& ParamSet::at(const std::string& key) const {
   auto it = values_.find(key);
-  if (it == values_.end()) throw UserError(fmt::format("{}: missing parameter '{}'", origin_, key));
+  if (it == values_.end()) throw UserError(fmt::format("{}: missing parameter '{}'", origin_, key), key);
   return it->second;
 }
 
@@ -29,7 +29,7 @@ bool ParamSet::boolean(const std::string& key) const { return at(key).number != 
 void ParamSet::set_integer(const std::string& key, long long value, const std::string& flag,
                            const ParamSchema& schema) {
   const ParamSpec* spec = schema.find(key);
-  if (!spec) throw UserError(fmt::format("{}: no parameter '{}' for sensor {}", flag, key, sensor_id_));
+  if (!spec) throw UserError(fmt::format("{}: no parameter '{}' for sensor {}", flag, key, sensor_id_), key);
   check_range(*spec, static_cast<double>(value), flag);
   ParamValue& v = values_[key];
   v.kind = ParamKind::Integer;
@@ -40,7 +40,7 @@ void ParamSet::set_integer(const std::string& key, long long value, const std::s
 
 void ParamSet::set_real(const std::string& key, double value, const std::string& flag, const ParamSchema& schema) {
   const ParamSpec* spec = schema.find(key);
-  if (!spec) throw UserError(fmt::format("{}: no parameter '{}' for sensor {}", flag, key, sensor_id_));
+  if (!spec) throw UserError(fmt::format("{}: no parameter '{}' for sensor {}", flag, key, sensor_id_), key);
   check_range(*spec, value, flag);
   ParamValue& v = values_[key];
   v.kind = ParamKind::Real;
@@ -58,7 +58,8 @@ void ParamSet::set_from_text(const std::string& assignment, const std::string& f
   const ParamSpec* spec = schema.find(key);
   if (!spec)
     throw UserError(fmt::format("{}: no parameter '{}' for sensor {}; the keys are listed by `rangesim show {}`", where,
-                                key, sensor_id_, sensor_id_));
+                                key, sensor_id_, sensor_id_),
+                    key);
   ParamValue v;
   v.kind = spec->kind;
   v.source = fmt::format("command line {}", flag);
@@ -70,14 +71,15 @@ void ParamSet::set_from_text(const std::string& assignment, const std::string& f
       v.text = text;
       break;
     case ParamKind::Boolean:
-      if (text != "true" && text != "false") throw UserError(fmt::format("{}: {} must be true or false", where, key));
+      if (text != "true" && text != "false")
+        throw UserError(fmt::format("{}: {} must be true or false", where, key), key);
       v.number = text == "true" ? 1.0 : 0.0;
       break;
     case ParamKind::Real:
     case ParamKind::Integer:
       v.number = std::strtod(text.c_str(), &end);
       if (text.empty() || *end != '\0' || std::isspace(static_cast<unsigned char>(text[0])))
-        throw UserError(fmt::format("{}: '{}' is not a number; allowed: {}", where, text, describe_range(*spec)));
+        throw UserError(fmt::format("{}: '{}' is not a number; allowed: {}", where, text, describe_range(*spec)), key);
       check_range(*spec, v.number, where);
       break;
   }
@@ -89,7 +91,8 @@ void check_choice(const ParamSpec& spec, const std::string& value, const std::st
   for (const auto& c : spec.choices)
     if (c == value) return;
   throw UserError(
-      fmt::format("{}: {} = \"{}\" is not allowed; allowed: {}", where, spec.key, value, describe_range(spec)));
+      fmt::format("{}: {} = \"{}\" is not allowed; allowed: {}", where, spec.key, value, describe_range(spec)),
+      spec.key);
 }
 
 std::string describe_range(const ParamSpec& spec) {
@@ -127,7 +130,8 @@ void check_range(const ParamSpec& spec, double value, const std::string& where) 
                   value <= spec.max && (spec.kind != ParamKind::Integer || value == std::floor(value));
   if (!ok)
     throw UserError(
-        fmt::format("{}: {} = {} is out of range; allowed: {}", where, spec.key, shown(value), describe_range(spec)));
+        fmt::format("{}: {} = {} is out of range; allowed: {}", where, spec.key, shown(value), describe_range(spec)),
+        spec.key);
 }
 
 }  // namespace rangesim

@@ -74,17 +74,17 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
   v.file = file;
   if (t) {
     if (!t->contains("value") || !t->contains("source"))
-      throw UserError(
-          fmt::format("{}: {} must be a plain value or an inline table {{ value = ..., source = \"...\" }} "
-                      "with value {}",
-                      where, key, describe_range(spec)));
+      throw UserError(fmt::format("{}: {} must be a plain value or an inline table {{ value = ..., source = \"...\" }} "
+                                  "with value {}",
+                                  where, key, describe_range(spec)),
+                      key);
     for (const auto& [k, _] : *t)
       if (k != "value" && k != "source")
-        throw UserError(fmt::format("{}: {} has unknown field '{}'; allowed: value, source", where, key, k.str()));
+        throw UserError(fmt::format("{}: {} has unknown field '{}'; allowed: value, source", where, key, k.str()), key);
     const auto* source = (*t)["source"].as_string();
     if (!source || source->get().empty())
       throw UserError(
-          fmt::format("{}: {}.source must be a non-empty string naming where the value comes from", where, key));
+          fmt::format("{}: {}.source must be a non-empty string naming where the value comes from", where, key), key);
     v.source = source->get();
     value = t->get("value");
   }
@@ -95,25 +95,25 @@ ParamValue read_value(const std::string& file, const std::string& key, const tom
       else if (auto i = value->value_exact<int64_t>())
         v.number = static_cast<double>(*i);
       else
-        throw UserError(fmt::format("{}: {} must be a number ({})", where, key, describe_range(spec)));
+        throw UserError(fmt::format("{}: {} must be a number ({})", where, key, describe_range(spec)), key);
       break;
     case ParamKind::Integer:
       if (auto i = value->value_exact<int64_t>())
         v.number = static_cast<double>(*i);
       else
-        throw UserError(fmt::format("{}: {} must be an integer ({})", where, key, describe_range(spec)));
+        throw UserError(fmt::format("{}: {} must be an integer ({})", where, key, describe_range(spec)), key);
       break;
     case ParamKind::Boolean:
       if (auto b = value->value_exact<bool>())
         v.number = *b ? 1.0 : 0.0;
       else
-        throw UserError(fmt::format("{}: {} must be true or false", where, key));
+        throw UserError(fmt::format("{}: {} must be true or false", where, key), key);
       break;
     case ParamKind::Text:
       if (auto s = value->value_exact<std::string>())
         v.text = *s;
       else
-        throw UserError(fmt::format("{}: {} must be a string ({})", where, key, describe_range(spec)));
+        throw UserError(fmt::format("{}: {} must be a string ({})", where, key, describe_range(spec)), key);
       check_choice(spec, v.text, where);
       break;
   }
@@ -131,7 +131,7 @@ std::string resolve_base(const std::string& base, const std::string& file, const
     try {
       return resolve_preset(base);
     } catch (const UserError& e) {
-      throw UserError(fmt::format("{}: base = \"{}\": {}", where, base, e.what()));
+      throw UserError(fmt::format("{}: base = \"{}\": {}", where, base, e.what()), e.key());
     }
   }
   fs::path p(base);
@@ -217,14 +217,15 @@ ParamSet load_layer(const std::string& text, const std::string& path, std::vecto
       const std::string key = section + "." + std::string(name_key.str());
       if (key == "sensor.id") continue;
       const ParamSpec* spec = schema.find(key);
-      if (!spec) throw UserError(unknown_key_message(where_of(path, entry), key, section, schema));
+      if (!spec) throw UserError(unknown_key_message(where_of(path, entry), key, section, schema), key);
       set.mutable_values()[key] = read_value(path, key, entry, *spec);
     }
   }
   for (const auto& spec : schema.params)
     if (!set.has(spec.key))
       throw UserError(
-          fmt::format("{}: missing key '{}' ({}; {})", path, spec.key, spec.description, describe_range(spec)));
+          fmt::format("{}: missing key '{}' ({}; {})", path, spec.key, spec.description, describe_range(spec)),
+          spec.key);
   return set;
 }
 

@@ -9,6 +9,13 @@ namespace rangesim {
 class UserError : public std::runtime_error {
  public:
   explicit UserError(const std::string& message) : std::runtime_error(message) {}
+  // `key`: the parameter or argument at fault (also named in the message), for callers that
+  // report it apart from the text (the Python module's rangesim.Error.key).
+  UserError(const std::string& message, std::string key) : std::runtime_error(message), key_(std::move(key)) {}
+  const std::string& key() const { return key_; }  // "" when the error is not about one key
+
+ private:
+  std::string key_;
 };
 
 }  // namespace rangesim

@@ -11,6 +11,7 @@ packages=(
   librapidcheck-dev clang libclang-rt-14-dev
   python3  # tests/cosim: checks the JSON and JUnit XML of `rangesim cosim`
   openmpi-bin libopenmpi-dev  # optional MPI build: mpirun -n N rangesim sweep / evaluate --trials
+  pybind11-dev python3-numpy  # optional Python module rangesim (python/, docs/python.md)
 )
 
 missing=()

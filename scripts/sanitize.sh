@@ -5,7 +5,8 @@
 # report (halt_on_error; reports are also logged to files and any log fails the run, so a report
 # in a process whose exit code nobody checks is not lost). The SystemC, Verilator and co-simulation
 # parts are left out (-DRANGESIM_WITH_RTL=OFF, systemc tests not built): SystemC's own library is
-# not instrumented and its coroutine stacks confuse ASan.
+# not instrumented and its coroutine stacks confuse ASan. The Python module is left out too: an
+# instrumented module cannot load into the uninstrumented interpreter.
 #   scripts/sanitize.sh [BUILD_DIR]        (default build-sanitize); extra ctest args via CTEST_ARGS
 # Registered as the ctest `sanitize` (labels sanitize, heavy) of a normal build.
 set -euo pipefail
@@ -14,7 +15,7 @@ build=${1:-$src/build-sanitize}
 start=$(date +%s)
 
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRANGESIM_SANITIZE=ON \
-  -DRANGESIM_WITH_RTL=OFF -DRANGESIM_WITH_MPI=OFF -DRANGESIM_BUILD_TESTS=ON >/dev/null
+  -DRANGESIM_WITH_RTL=OFF -DRANGESIM_WITH_MPI=OFF -DRANGESIM_WITH_PYTHON=OFF -DRANGESIM_BUILD_TESTS=ON >/dev/null
 
 # Test targets of the labels below that exist in this tree (other sensors' suites come and go).
 targets=(rangesim test_golden test_core test_cli test_badinput test_stress)

@@ -18,6 +18,7 @@
 #include "app/evaluate_params.h"
 #include "app/evaluation_output.h"
 #include "systemc/common/montecarlo.h"
+#include "app/montecarlo/mc_evaluate.h"
 #include "app/montecarlo/mc_output.h"
 #include "app/montecarlo/mc_stuck_hook.h"
 #include "app/montecarlo/mc_sweep.h"
@@ -76,30 +77,6 @@ std::string fingerprint(const ParamSet& params, const mc::McSweepOptions& o) {
   return f;
 }
 
-mc::McSweepOptions sweep_options(const EvaluateOptions& opt) {
-  mc::McSweepOptions o;
-  o.trials = opt.trials.value_or(100);
-  if (o.trials < 2 || o.trials > 10000000) throw UserError(fmt::format("--trials {}: allowed 2 .. 10000000", o.trials));
-  if (opt.target_error) {
-    if (!(std::isfinite(*opt.target_error) && *opt.target_error > 0))
-      throw UserError(fmt::format("--target-error {}: allowed a finite error > 0 (metres)", *opt.target_error));
-    o.target_error_m = *opt.target_error;
-  }
-  o.max_trials = opt.max_trials.value_or(std::max<long long>(100000, o.trials));
-  if (o.max_trials < o.trials || o.max_trials > 1000000000)
-    throw UserError(fmt::format("--max-trials {}: allowed --trials ({}) .. 1000000000", o.max_trials, o.trials));
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  o.threads = opt.threads.value_or(cores);
-  if (o.threads < 1 || o.threads > 1024) throw UserError(fmt::format("--threads {}: allowed 1 .. 1024", o.threads));
-  o.seed = opt.seed.value_or(1);
-  if (opt.max_seconds) {
-    if (!(std::isfinite(*opt.max_seconds) && *opt.max_seconds > 0))
-      throw UserError(fmt::format("--max-seconds {}: allowed a finite time > 0", *opt.max_seconds));
-    o.max_seconds = *opt.max_seconds;
-  }
-  return o;
-}
-
 }  // namespace
 
 // Under mpirun: rank r runs the points at positions k mod N = r into a journal of its own; rank 0
@@ -146,7 +123,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   const mpi::World world = mpi::init();
   // Validate everything before computing or touching the output directory.
   const ParamSet params = evaluate_params(opt);
-  mc::McSweepOptions sopt = sweep_options(opt);
+  mc::McSweepOptions sopt = mc::sweep_options(opt);
   const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(rangesim::mc::make_mc_model(params), sopt.seed);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
   check_resources("evaluate --trials", evaluate_estimate(params, true), dir);
@@ -163,10 +140,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
                rank0_journal->path());
 
   const golden::EvalResult ev = golden::evaluate_sensor(params);
-  std::vector<mc::McSweepPoint> points;
-  for (std::size_t i = 0; i < ev.points.size(); ++i)
-    if (ev.points[i].detect == "detectable")
-      points.push_back({static_cast<long long>(i), ev.points[i].signal, ev.points[i].background});
+  const std::vector<mc::McSweepPoint> points = mc::detectable_points(ev);
 
   SigintGuard sigint;
   sopt.stop = &sigint_flag();
@@ -210,16 +184,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
     return r.out_of_time ? kExitBudget : stop_exit_code();
   }
 
-  mc::McGrid grid;
-  grid.ev = &ev;
-  grid.stats.resize(ev.points.size());
-  for (std::size_t k = 0; k < points.size(); ++k) grid.stats[static_cast<std::size_t>(points[k].index)] = r.stats[k];
-  grid.unit = model->unit();
-  grid.metres_per_unit = model->metres_per_unit();
-  grid.trials = sopt.trials;
-  grid.max_trials = sopt.max_trials;
-  grid.target_error_m = sopt.target_error_m;
-  grid.seed = sopt.seed;
+  const mc::McGrid grid = mc::make_grid(ev, points, r, *model, sopt);
 
   out.write("points.csv", points_csv(ev));
   out.write("detectable_area.csv", detect_matrix_csv(ev));

@@ -15,9 +15,7 @@
 
 namespace rangesim::app {
 
-namespace {
-
-systemc::SimulationRequest request(const SimulateOptions& opt) {
+systemc::SimulationRequest simulation_request(const SimulateOptions& opt) {
   systemc::SimulationRequest r;
   r.scene = opt.scene;
   r.frames = opt.frames;
@@ -28,8 +26,11 @@ systemc::SimulationRequest request(const SimulateOptions& opt) {
   r.dense = opt.dense;
   r.no_aggregate = opt.no_aggregate;
   r.time_step_s = opt.time_step_s;
+  r.trace_rows = opt.trace_rows;
   return r;
 }
+
+namespace {
 
 // The command as the scene run's host: it owns the trace and the output folder the run claims
 // (the trace is declared first, so the folder is cleaned up before it, as before).
@@ -102,7 +103,7 @@ int finish(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace, nlohm
 
 int run_and_render(const SimulateOptions& opt, const ParamSet& params, const SimulateEntry& entry) {
   CommandHost host(opt);
-  systemc::SimulationResult r = entry.run(request(opt), params, host);
+  systemc::SimulationResult r = entry.run(simulation_request(opt), params, host);
   const std::string warning = write_files(opt, host.out(), r);
   return finish(opt, host.out(), host.trace(), r.summary, warning, r.report);
 }

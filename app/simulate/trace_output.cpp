@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <fmt/format.h>
 #include <spawn.h>
 #include <stdexcept>
@@ -70,24 +72,30 @@ TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path
     throw UserError(fmt::format("--trace {}: the waveform file name must end in .vcd or .fst", path_));
   check_output_file(path_, "--trace");
   const fs::path parent = fs::absolute(path_).parent_path();
+  std::error_code ec;
+  fs::create_directories(parent, ec);  // like --out: the trace's folder is made
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
-    throw UserError(fmt::format("--trace {}: directory {} does not exist or is not writable", path_, parent.string()));
+    throw UserError(fmt::format("--trace {}: cannot create or write to the folder {}", path_, parent.string()));
   if (ends_with(path_, ".fst") && !on_path("vcd2fst"))
     throw UserError(
         fmt::format("--trace {}: writing FST needs vcd2fst (Debian package gtkwave, scripts/install-deps.sh); "
                     "or name the trace .vcd",
                     path_));
-  vcd_base_ = fmt::format("{}.partial-{}", path_, ::getpid());
-  vcd_slot_ = register_cleanup(vcd_base_ + ".vcd", false);
+  // The model writes <stem>.vcd, <stem>.gtkw and its filters into a staging folder beside the
+  // target, under their final names (the save file refers to them by name); commit() moves them.
+  const fs::path target = fs::absolute(path_);
+  stem_ = target.stem().string();
+  staging_ = (target.parent_path() / fmt::format(".{}.partial-{}", stem_, ::getpid())).string();
+  fs::create_directories(staging_);
+  staging_slot_ = register_cleanup(staging_, true);  // a signal removes it too
+  vcd_base_ = (fs::path(staging_) / stem_).string();
 }
 
 TraceOutput::~TraceOutput() {
-  unregister_cleanup(vcd_slot_);
-  unregister_cleanup(finished_slot_);
-  if (committed_ || path_.empty()) return;
+  unregister_cleanup(staging_slot_);
+  if (path_.empty()) return;
   std::error_code ec;
-  fs::remove(vcd_base_ + ".vcd", ec);
-  if (!finished_.empty()) fs::remove(finished_, ec);
+  fs::remove_all(staging_, ec);
 }
 
 void TraceOutput::finish() {
@@ -99,7 +107,6 @@ void TraceOutput::finish() {
     return;
   }
   finished_ = vcd_base_ + ".fst";
-  finished_slot_ = register_cleanup(finished_, false);
   const int rc = run_quiet({"vcd2fst", vcd, finished_});
   std::error_code ec;
   fs::remove(vcd, ec);
@@ -107,12 +114,27 @@ void TraceOutput::finish() {
     fs::remove(finished_, ec);
     throw std::runtime_error(fmt::format("--trace {}: vcd2fst failed (exit {}); nothing written", path_, rc));
   }
+  // The save file names the dump it opens.
+  const std::string gtkw = vcd_base_ + ".gtkw";
+  if (fs::exists(gtkw)) {
+    std::ifstream in(gtkw);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string from = "[dumpfile] \"" + stem_ + ".vcd\"", to = "[dumpfile] \"" + stem_ + ".fst\"";
+    if (const std::size_t at = text.find(from); at != std::string::npos) text.replace(at, from.size(), to);
+    std::ofstream(gtkw) << text;
+  }
 }
 
 std::string TraceOutput::commit() {
   if (path_.empty()) return "";
   if (finished_.empty()) throw std::logic_error("TraceOutput::commit before finish");
+  // The save file and filters first, the trace last: a present trace means a complete set.
+  const fs::path dir = fs::absolute(path_).parent_path();
+  for (const auto& e : fs::directory_iterator(staging_))
+    if (e.path() != fs::path(finished_)) fs::rename(e.path(), dir / e.path().filename());
   fs::rename(finished_, path_);
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
   committed_ = true;
   return path_;
 }

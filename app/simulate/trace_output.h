@@ -1,8 +1,10 @@
 #pragma once
 // `rangesim simulate --trace FILE.vcd|FILE.fst`, shared by every sensor. SystemC writes VCD only,
 // so the model always traces into a temporary VCD beside the target; for .fst that VCD is
-// converted with vcd2fst (Debian package gtkwave). Nothing appears under FILE until commit():
-// a failed run, a failed conversion or an exception leaves no trace file and no temporary.
+// converted with vcd2fst (Debian package gtkwave). With it come a GTKWave save file FILE.gtkw and
+// its translate filters (systemc/common/waveform.h). The folder of FILE is created. Nothing
+// appears beside FILE until commit(): a failed run, a failed conversion or an exception leaves
+// no trace file and no temporary.
 #include <string>
 
 namespace rangesim::app {
@@ -28,10 +30,12 @@ class TraceOutput {
 
  private:
   std::string path_;      // --trace
-  std::string vcd_base_;  // temporary VCD without ".vcd"
+  std::string stem_;      // its file name without the extension
+  std::string staging_;   // folder beside it holding the trace, save file and filters until commit
+  std::string vcd_base_;  // <staging>/<stem>: the model writes <stem>.vcd there
   std::string finished_;  // temporary in the final format, ready to rename
   bool committed_ = false;
-  int vcd_slot_ = -1, finished_slot_ = -1;  // app/run_control.h: removed when the run is ended
+  int staging_slot_ = -1;  // app/run_control.h: the staging folder is removed when a signal ends the run
 };
 
 }  // namespace rangesim::app

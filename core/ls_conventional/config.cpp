@@ -70,18 +70,20 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
 
   // Cross-key checks: the column address must fit the row.
   if ((1LL << c.timing.address_bits) < c.pixel.columns)
-    throw UserError(
-        fmt::format("{}: timing.address_bits = {} cannot address pixel.columns = {}; allowed: "
-                    "address_bits >= ceil(log2(columns))",
-                    p.origin(), c.timing.address_bits, c.pixel.columns));
+    throw UserError(fmt::format("{}: timing.address_bits = {} cannot address pixel.columns = {}; allowed: "
+                                "address_bits >= ceil(log2(columns))",
+                                p.origin(), c.timing.address_bits, c.pixel.columns),
+                    "timing.address_bits");
   if (c.grid.signal_min_V > c.grid.signal_max_V)
     throw UserError(
         fmt::format("{}: evaluation.signal_min_V = {:g} > evaluation.signal_max_V = {:g}; allowed: min <= max",
-                    p.origin(), c.grid.signal_min_V, c.grid.signal_max_V));
+                    p.origin(), c.grid.signal_min_V, c.grid.signal_max_V),
+        "evaluation.signal_min_V");
   if (c.grid.background_min_V > c.grid.background_max_V)
     throw UserError(
         fmt::format("{}: evaluation.background_min_V = {:g} > evaluation.background_max_V = {:g}; allowed: min <= max",
-                    p.origin(), c.grid.background_min_V, c.grid.background_max_V));
+                    p.origin(), c.grid.background_min_V, c.grid.background_max_V),
+        "evaluation.background_min_V");
   return c;
 }
 

@@ -75,27 +75,31 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
     throw UserError(
         fmt::format("{}: correlator.cycles / modulation.frequency_Hz = {:g} s differs from "
                     "pixel.integration_time_s = {:g} s; allowed: equal within 1e-6 (the window is whole periods)",
-                    p.origin(), window_s, c.pixel.integration_time_s));
+                    p.origin(), window_s, c.pixel.integration_time_s),
+        "correlator.cycles");
   if (c.comparator.adc_bits != 1)
     throw UserError(fmt::format("{}: comparator.adc_bits = {} is not modelled; allowed: 1 (Table 3.2)", p.origin(),
-                                c.comparator.adc_bits));
+                                c.comparator.adc_bits),
+                    "comparator.adc_bits");
   if ((1LL << c.readout.address_bits) < c.pixel.columns)
-    throw UserError(
-        fmt::format("{}: readout.address_bits = {} cannot address pixel.columns = {}; allowed: "
-                    "address_bits >= ceil(log2(columns))",
-                    p.origin(), c.readout.address_bits, c.pixel.columns));
+    throw UserError(fmt::format("{}: readout.address_bits = {} cannot address pixel.columns = {}; allowed: "
+                                "address_bits >= ceil(log2(columns))",
+                                p.origin(), c.readout.address_bits, c.pixel.columns),
+                    "readout.address_bits");
   if (c.grid.signal_min_A > c.grid.signal_max_A)
     throw UserError(
         fmt::format("{}: evaluation.signal_min_A = {:g} > evaluation.signal_max_A = {:g}; allowed: min <= max",
-                    p.origin(), c.grid.signal_min_A, c.grid.signal_max_A));
+                    p.origin(), c.grid.signal_min_A, c.grid.signal_max_A),
+        "evaluation.signal_min_A");
   if (c.grid.background_min_A > c.grid.background_max_A)
-    throw UserError(
-        fmt::format("{}: evaluation.background_min_A = {:g} > evaluation.background_max_A = {:g}; allowed: "
-                    "min <= max",
-                    p.origin(), c.grid.background_min_A, c.grid.background_max_A));
+    throw UserError(fmt::format("{}: evaluation.background_min_A = {:g} > evaluation.background_max_A = {:g}; allowed: "
+                                "min <= max",
+                                p.origin(), c.grid.background_min_A, c.grid.background_max_A),
+                    "evaluation.background_min_A");
   if (c.distance_min_m > c.distance_max_m)
     throw UserError(fmt::format("{}: optics.distance_min_m = {:g} > optics.distance_max_m = {:g}; allowed: min <= max",
-                                p.origin(), c.distance_min_m, c.distance_max_m));
+                                p.origin(), c.distance_min_m, c.distance_max_m),
+                    "optics.distance_min_m");
   return c;
 }
 

@@ -13,7 +13,8 @@ namespace {
 void require_ordered(const ParamSet& p, const char* lo_key, const char* hi_key) {
   if (p.real(lo_key) > p.real(hi_key))
     throw UserError(fmt::format("{}: {} = {:g} > {} = {:g}; allowed: min <= max", p.origin(), lo_key, p.real(lo_key),
-                                hi_key, p.real(hi_key)));
+                                hi_key, p.real(hi_key)),
+                    lo_key);
 }
 
 }  // namespace
@@ -73,17 +74,17 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
   require_ordered(p, "evaluation.distance_min_m", "evaluation.distance_max_m");
   // The trapezoid's ramps (rise_time / 0.8 each) must fit inside the pulse width.
   if (c.source.rise_time_s / 0.8 > c.source.pulse_width_s)
-    throw UserError(
-        fmt::format("{}: source.rise_time_s = {:g} is longer than 0.8 x source.pulse_width_s = {:g}; "
-                    "allowed: rise_time_s <= 0.8 pulse_width_s",
-                    p.origin(), c.source.rise_time_s, 0.8 * c.source.pulse_width_s));
+    throw UserError(fmt::format("{}: source.rise_time_s = {:g} is longer than 0.8 x source.pulse_width_s = {:g}; "
+                                "allowed: rise_time_s <= 0.8 pulse_width_s",
+                                p.origin(), c.source.rise_time_s, 0.8 * c.source.pulse_width_s),
+                    "source.rise_time_s");
   // Gate edges are generated on the gate clock: T0 must be a whole number of its cycles.
   const double cycles = c.source.pulse_width_s * c.gates.clock_Hz;
   if (std::fabs(cycles - std::round(cycles)) > 1e-6 || std::round(cycles) < 1)
-    throw UserError(
-        fmt::format("{}: source.pulse_width_s = {:g} is {:g} cycles of gates.clock_Hz = {:g}; allowed: a "
-                    "whole number >= 1 of gate clock cycles",
-                    p.origin(), c.source.pulse_width_s, cycles, c.gates.clock_Hz));
+    throw UserError(fmt::format("{}: source.pulse_width_s = {:g} is {:g} cycles of gates.clock_Hz = {:g}; allowed: a "
+                                "whole number >= 1 of gate clock cycles",
+                                p.origin(), c.source.pulse_width_s, cycles, c.gates.clock_Hz),
+                    "source.pulse_width_s");
   return c;
 }
 

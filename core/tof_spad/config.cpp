@@ -13,7 +13,8 @@ namespace {
 
 void check_order(const ParamSet& p, const char* lo_key, double lo, const char* hi_key, double hi) {
   if (lo > hi)
-    throw UserError(fmt::format("{}: {} = {:g} > {} = {:g}; allowed: min <= max", p.origin(), lo_key, lo, hi_key, hi));
+    throw UserError(fmt::format("{}: {} = {:g} > {} = {:g}; allowed: min <= max", p.origin(), lo_key, lo, hi_key, hi),
+                    lo_key);
 }
 
 }  // namespace
@@ -71,16 +72,16 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   // Cross-key checks.
   const double codes_range_s = c.tdc.lsb_s * std::ldexp(1.0, c.tdc.bits);
   if (c.tdc.full_range_s > codes_range_s * (1 + 1e-9))
-    throw UserError(
-        fmt::format("{}: tdc.full_range_s = {:g} exceeds tdc.lsb_s x 2^tdc.bits = {:g}; allowed: "
-                    "full_range_s <= lsb_s x 2^bits",
-                    p.origin(), c.tdc.full_range_s, codes_range_s));
+    throw UserError(fmt::format("{}: tdc.full_range_s = {:g} exceeds tdc.lsb_s x 2^tdc.bits = {:g}; allowed: "
+                                "full_range_s <= lsb_s x 2^bits",
+                                p.origin(), c.tdc.full_range_s, codes_range_s),
+                    "tdc.full_range_s");
   const double period_s = 1.0 / c.laser.repetition_rate_Hz;
   if (period_s / c.tdc.lsb_s > 1e5)
-    throw UserError(
-        fmt::format("{}: laser period / tdc.lsb_s = {:g} bins per cycle; allowed: <= 1e5 "
-                    "(lower tdc.lsb_s or raise laser.repetition_rate_Hz)",
-                    p.origin(), period_s / c.tdc.lsb_s));
+    throw UserError(fmt::format("{}: laser period / tdc.lsb_s = {:g} bins per cycle; allowed: <= 1e5 "
+                                "(lower tdc.lsb_s or raise laser.repetition_rate_Hz)",
+                                p.origin(), period_s / c.tdc.lsb_s),
+                    "tdc.lsb_s");
   check_order(p, "evaluation.signal_min_Hz", e.signal_min_Hz, "evaluation.signal_max_Hz", e.signal_max_Hz);
   check_order(p, "evaluation.background_min_Hz", e.background_min_Hz, "evaluation.background_max_Hz",
               e.background_max_Hz);
@@ -90,7 +91,8 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
     throw UserError(
         fmt::format("{}: evaluation.distance_max_m = {:g} / evaluation.distance_m = {:g} must stay below "
                     "the unambiguous range c min(1 / laser.repetition_rate_Hz, tdc.full_range_s) / 2 = {:g} m",
-                    p.origin(), e.distance_max_m, e.distance_m, window_m));
+                    p.origin(), e.distance_max_m, e.distance_m, window_m),
+        "evaluation.distance_max_m");
   return c;
 }
 

@@ -14,7 +14,9 @@
 namespace rangesim::golden {
 
 // Progress of a grid evaluation in operating points (done of total); called from the evaluating
-// thread, possibly more than once with the same count.
+// thread, possibly more than once with the same count. It may throw to cancel the evaluation (the
+// Python module does on Ctrl-C): every model then stops handing out points, joins its threads and
+// lets the exception through.
 using ProgressFn = void (*)(int done, int total);
 
 struct GoldenModel {

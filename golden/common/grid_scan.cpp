@@ -43,7 +43,13 @@ GridScan scan_grid(EvalResult& r, const std::function<EvalPoint(std::size_t ib, 
     };
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < std::min<std::size_t>(cores, rows); ++t) pool.emplace_back(work, false);
-    work(true);  // only the calling thread reports
+    try {
+      work(true);    // only the calling thread reports
+    } catch (...) {  // the progress callback cancelled the scan: hand out no more rows, join, pass it on
+      next.store(rows);
+      for (auto& t : pool) t.join();
+      throw;
+    }
     for (auto& t : pool) t.join();
     for (std::size_t k = 0; k < rows; ++k) {
       const std::size_t ib = b0 + k;

@@ -181,7 +181,13 @@ Evaluation evaluate(const LsConventionalConfig& cfg, void (*progress)(int done, 
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < std::min<unsigned>(hw, static_cast<unsigned>(nb)); ++t) pool.emplace_back(work, false);
-  work(true);
+  try {
+    work(true);
+  } catch (...) {  // the progress callback cancelled the run: hand out no more rows, join, pass it on
+    next_row.store(nb);
+    for (auto& t : pool) t.join();
+    throw;
+  }
   for (auto& t : pool) t.join();
   if (progress) progress(nb * ns, nb * ns);
 

@@ -23,6 +23,7 @@ struct SimulateEntry {
   SceneRun run;        // the sensor's scene run
   bool aggregation;    // has an aggregated path that --no-aggregate switches off
   bool time_step;      // has a continuous-time integration that --time-step coarsens
+  bool trace_rows;     // its waveform shows per-row blocks, chosen with --trace-rows
 };
 
 }  // namespace rangesim::systemc

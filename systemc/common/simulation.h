@@ -29,6 +29,7 @@ struct SimulationRequest {
   bool dense = false;               // --dense: every pixel (no sparse window)
   bool no_aggregate = false;        // --no-aggregate: periods / laser cycles one by one
   double time_step_s = 0;           // --time-step S (0 = exact closed form)
+  std::vector<int> trace_rows;      // --trace-rows: rows whose blocks the waveform shows (empty: the sensor's choice)
 };
 
 // What the run asks of the command around it, at the points where the sensor's checks allow:
@@ -109,6 +110,10 @@ struct RangeMap {
   std::vector<std::vector<double>> range_m;
   // A pixel's validity is carried by its value: a finite range (CSV and plot leave the others empty).
   bool valid(std::size_t row, std::size_t column) const { return std::isfinite(range_m[row][column]); }
+  // The ground truth each range is scored against (same shape), NaN where the run scores no error
+  // there (not visible, outside the beam): range_m - truth_m is the error map the Python module
+  // returns. Not written by the command (points.csv has the errors point by point).
+  std::vector<std::vector<double>> truth_m;
   std::vector<std::string> column_names;        // range_map.csv's columns after "row"
   int first_row = 0;                            // range_map.csv's label of range_m[0]
   std::string title, x_label, y_label = "row";  // range_map.png

@@ -86,28 +86,34 @@ void LsConventionalSensor::on_clock() {
   ++cycle_;
 }
 
-void LsConventionalSensor::trace(sc_core::sc_trace_file* tf, const std::vector<int>& rows) const {
-  sc_core::sc_trace(tf, clk_i, "clk");
-  sc_core::sc_trace(tf, rst_i, "rst");
-  sc_core::sc_trace(tf, pix_reset_, "pix_reset");
-  sc_core::sc_trace(tf, latch_, "latch");
-  sc_core::sc_trace(tf, search_start_, "search_start");
-  sc_core::sc_trace(tf, frame_done_, "frame_done");
-  sc_core::sc_trace(tf, phase_, "phase");
-  sc_core::sc_trace(tf, sampling_, "sampling");
-  sc_core::sc_trace(tf, frame_, "frame");
+void LsConventionalSensor::trace(Waveform& w, const std::vector<int>& rows) const {
+  Waveform::ValueNames phases;
+  for (int p = 0; p < kReadoutPhases; ++p) phases.push_back({p, readout_phase_name(static_cast<ReadoutPhase>(p))});
+  const std::string top = "ls_conventional", seq = top + ".sequencer";
+  w.add(clk_i, top, "clk");
+  w.add(rst_i, top, "rst");
+  w.add(phase_, seq, "phase", phases);
+  w.add(sampling_, seq, "sampling");
+  w.add(frame_, seq, "frame");
+  w.add(pix_reset_, seq, "pix_reset");
+  w.add(latch_, seq, "latch");
+  w.add(search_start_, seq, "search_start");
+  w.add(frame_done_, seq, "frame_done");
   for (int r : rows) {
     if (r < 0 || r >= static_cast<int>(act_.size())) continue;
     // The row array's pins as written at each edge (fixed storage, traced by reference).
     const AddressSearchPins& s = rows_.pins().search[static_cast<std::size_t>(r)];
     const CentreProcessorPins& c = rows_.pins().centre[static_cast<std::size_t>(r)];
-    const std::string p = "row" + std::to_string(r) + "_";
-    sc_core::sc_trace(tf, s.addr_valid, p + "addr_valid");
-    sc_core::sc_trace(tf, s.addr_bit, p + "addr_bit");
-    sc_core::sc_trace(tf, s.done, p + "done");
-    sc_core::sc_trace(tf, s.found, p + "found");
-    sc_core::sc_trace(tf, c.valid, p + "centre_valid");
-    sc_core::sc_trace(tf, c.centre_q, p + "centre_q");
+    const std::string row = top + ".row" + std::to_string(r);
+    w.add(s.busy, row + ".address_search", "busy");
+    w.add(s.found, row + ".address_search", "found");
+    w.add(s.addr_valid, row + ".address_search", "addr_valid");
+    w.add(s.addr_bit, row + ".address_search", "addr_bit");
+    w.add(s.done, row + ".address_search", "done");
+    w.add(c.valid, row + ".centre_processor", "valid");
+    w.add(c.centre_q, row + ".centre_processor", "centre_q");
+    w.add(c.sum, row + ".centre_processor", "sum");
+    w.add(c.count, row + ".centre_processor", "count");
   }
 }
 
@@ -182,20 +188,17 @@ SensorRunResult run_sensor_systemc(const LsConventionalConfig& config, const Sen
   Bench bench("bench", config, options.pixel, std::move(source));
   bench.dut.stop_after(run.frames);
   if (run.progress) bench.dut.on_frame(run.progress);
-  sc_core::sc_trace_file* tf = nullptr;
-  if (!run.vcd_base.empty()) {
-    tf = sc_core::sc_create_vcd_trace_file(run.vcd_base.c_str());
-    bench.dut.trace(tf, run.traced_rows);
-  }
+  Waveform wave(run.vcd_base);
+  bench.dut.trace(wave, run.traced_rows);
   const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
   const sc_core::sc_time period = bench.clk.period();
   try {
     sc_core::sc_start(period * static_cast<double>(budget + 2));  // + the two reset edges
   } catch (...) {
-    if (tf) sc_core::sc_close_vcd_trace_file(tf);
+    wave.close();
     throw;
   }
-  if (tf) sc_core::sc_close_vcd_trace_file(tf);
+  wave.close();
   SensorRunResult r;
   r.frames = bench.dut.results();
   r.cycles = bench.dut.cycles();

@@ -17,6 +17,8 @@
 #include <functional>
 #include <string>
 #include <systemc>
+
+#include "systemc/common/waveform.h"
 #include <vector>
 
 #include "core/ls_conventional/config.h"
@@ -44,7 +46,9 @@ class LsConventionalSensor : public sc_core::sc_module {
   void on_frame(std::function<void(long long)> callback) { on_frame_ = std::move(callback); }
   // Adds the sequencer's pins and, for each of `rows`, the search and centre pins to `tf`.
   // Must be called before sc_start (plain SystemC signals, no Verilated model here).
-  void trace(sc_core::sc_trace_file* tf, const std::vector<int>& rows) const;
+  // The sequencer and, for each of `rows`, its address search and centre processor, in the
+  // scopes ls_conventional.sequencer and ls_conventional.row<r>.<block>.
+  void trace(Waveform& w, const std::vector<int>& rows) const;
 
   const std::vector<FrameResult>& results() const { return results_; }
   long long cycles() const { return cycle_; }                            // since reset release

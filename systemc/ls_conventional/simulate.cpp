@@ -50,7 +50,13 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
   SensorRunOptions run;
   run.frames = frames;
   run.vcd_base = vcd_base;
-  for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
+  run.traced_rows = req.trace_rows;
+  if (run.traced_rows.empty())
+    for (int r : {0, cfg.pixel.rows / 4, cfg.pixel.rows / 2, cfg.pixel.rows - 1}) run.traced_rows.push_back(r);
+  for (int r : run.traced_rows)
+    if (r < 0 || r >= cfg.pixel.rows)
+      throw UserError(
+          fmt::format("--trace-rows {}: allowed 0..{} (pixel.rows = {})", r, cfg.pixel.rows - 1, cfg.pixel.rows));
   run.progress = host.progress("frame access", frames);
   const StimulusSource source = [&optics](std::uint64_t f, FrameStimulus& s) { optics.stimulus(f, s); };
   SensorRunResult res =
@@ -82,6 +88,7 @@ void add_point(Reconstruction& out, const scene::SceneOptics& optics, const Fram
   }
   if (t.visible) {
     ++out.visible;
+    out.map.truth_m[static_cast<std::size_t>(r)][f] = t.range_m;
     if (p.valid) {
       ++out.detected;
       err_px = p.centre_px() - t.centre_px;
@@ -104,6 +111,7 @@ Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics&
                            const golden::FrameTiming& gt) {
   Reconstruction out;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
+  out.map.truth_m = out.map.range_m;
   out.points =
       "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_"
       "m\n";
@@ -224,7 +232,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_conventional_simulate_entry() {
-  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false};
+  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false, true};
   return e;
 }
 

@@ -62,21 +62,25 @@ void DemodSensor::on_clock() {
   kernel_.start_frame(next, stim_);
 }
 
-void DemodSensor::trace(sc_core::sc_trace_file* tf) const {
-  sc_core::sc_trace(tf, clk_i, "clk");
-  sc_core::sc_trace(tf, phase_o, "phase");
-  sc_core::sc_trace(tf, frame_o, "frame");
-  sc_core::sc_trace(tf, decision_o, "decision");
-  sc_core::sc_trace(tf, phase_cycle_o, "phase_cycle");
-  sc_core::sc_trace(tf, mpy_plus_o, "mpy_plus");
-  sc_core::sc_trace(tf, row_o, "row");
-  sc_core::sc_trace(tf, search_start_o, "search_start");
-  sc_core::sc_trace(tf, addr_valid_o, "addr_valid");
-  sc_core::sc_trace(tf, addr_bit_o, "addr_bit");
-  sc_core::sc_trace(tf, row_valid_o, "row_valid");
-  sc_core::sc_trace(tf, row_detections_o, "row_detections");
-  sc_core::sc_trace(tf, row_centre_px_o, "row_centre_px");
-  sc_core::sc_trace(tf, frame_done_o, "frame_done");
+void DemodSensor::trace(Waveform& w) const {
+  Waveform::ValueNames phases;
+  for (int p = 0; p <= static_cast<int>(DemodPhase::Done); ++p)
+    phases.push_back({p, to_string(static_cast<DemodPhase>(p))});
+  const std::string top = "ls_demodulation", seq = top + ".sequencer", ro = top + ".readout";
+  w.add(clk_i, top, "clk");
+  w.add(phase_o, seq, "phase", phases);
+  w.add(frame_o, seq, "frame");
+  w.add(decision_o, seq, "decision");
+  w.add(phase_cycle_o, seq, "phase_cycle");
+  w.add(mpy_plus_o, seq, "mpy_plus");
+  w.add(frame_done_o, seq, "frame_done");
+  w.add(row_o, ro, "row");
+  w.add(search_start_o, ro, "search_start");
+  w.add(addr_valid_o, ro, "addr_valid");
+  w.add(addr_bit_o, ro, "addr_bit");
+  w.add(row_valid_o, ro, "row_valid");
+  w.add(row_detections_o, ro, "row_detections");
+  w.add(row_centre_px_o, ro, "row_centre_px");
 }
 
 DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt,
@@ -111,20 +115,16 @@ DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKer
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   // Bounded: a time budget of one frame more than the schedule needs.
   const double budget_s = (static_cast<double>(frames) + 1) * static_cast<double>(dut.frame_cycles()) * period_s;
-  sc_core::sc_trace_file* tf = nullptr;
-  if (!vcd_base.empty()) {
-    sc_core::sc_start(sc_core::SC_ZERO_TIME);  // tracing only after the zero-time start
-    tf = sc_core::sc_create_vcd_trace_file(vcd_base.c_str());
-    tf->set_time_unit(1, sc_core::SC_NS);
-    dut.trace(tf);
-  }
+  if (!vcd_base.empty()) sc_core::sc_start(sc_core::SC_ZERO_TIME);  // tracing only after the zero-time start
+  Waveform wave(vcd_base);
+  dut.trace(wave);
   try {
     sc_core::sc_start(sc_core::sc_time(budget_s, sc_core::SC_SEC));
   } catch (...) {
-    if (tf) sc_core::sc_close_vcd_trace_file(tf);
+    wave.close();
     throw;
   }
-  if (tf) sc_core::sc_close_vcd_trace_file(tf);
+  wave.close();
   out.frames = dut.frames();
   out.cycles = dut.edges();
   // Edges at t = k T, k = 0..n-1: the run spans n periods (the last edge's cycle included).

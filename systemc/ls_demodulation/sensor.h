@@ -8,6 +8,8 @@
 #include <string>
 #include <systemc>
 
+#include "systemc/common/waveform.h"
+
 #include "systemc/ls_demodulation/sensor_kernel.h"
 
 namespace rangesim::systemc {
@@ -41,7 +43,7 @@ class DemodSensor : public sc_core::sc_module {
   sc_core::sc_time span_end() const { return span_end_; }  // end of the last clock cycle simulated
   // Adds the clock and every pin to a trace file (call before sc_start). With event skipping the
   // pins change only at the edges the kernel stops at; --tick shows every address bit.
-  void trace(sc_core::sc_trace_file* tf) const;
+  void trace(Waveform& w) const;  // scopes ls_demodulation.{sequencer,readout}
 
  private:
   void on_clock();

@@ -88,6 +88,7 @@ void add_point(Reconstruction& out, const scene::DemodOptics& optics, const Demo
   }
   if (vis) {
     ++out.visible;
+    out.map.truth_m[static_cast<std::size_t>(r)][f] = truth_z;
     if (rr.valid() && std::isfinite(range)) {
       ++out.detected;
       err_px = rr.centre_px() - truth_x;
@@ -109,6 +110,7 @@ Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& 
                            const golden::FrameTiming& gt) {
   Reconstruction out;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
+  out.map.truth_m = out.map.range_m;
   out.points = "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
   out.frames_csv = "frame,cycles,end_cycle";
   for (const auto& p : gt.phases) out.frames_csv += "," + p.name;
@@ -231,7 +233,7 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_demodulation_simulate_entry() {
-  static const SimulateEntry e{"ls-demodulation", &simulate_ls_demodulation, true, false};
+  static const SimulateEntry e{"ls-demodulation", &simulate_ls_demodulation, true, false, false};
   return e;
 }
 

@@ -1,5 +1,7 @@
 #include "systemc/tof_lockin/sensor.h"
 
+#include "systemc/common/waveform.h"
+
 #include <cmath>
 
 namespace rangesim::systemc::lockin {
@@ -50,18 +52,22 @@ LockinScRun run_tof_lockin_systemc(TofLockinSensor*& sensor_out, const TofLockin
       s->done_o(done);
   sensor_out = s;
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  sc_core::sc_trace_file* tf = nullptr;
-  if (!vcd_path.empty()) {
-    std::string base = vcd_path;
-    if (base.size() > 4 && base.compare(base.size() - 4, 4, ".vcd") == 0) base.resize(base.size() - 4);
-    tf = sc_core::sc_create_vcd_trace_file(base.c_str());
-    tf->set_time_unit(1, sc_core::SC_NS);
-    sc_core::sc_trace(tf, tx1, "tx1"), sc_core::sc_trace(tf, tx2, "tx2"), sc_core::sc_trace(tf, txd, "txd");
-    sc_core::sc_trace(tf, light, "light"), sc_core::sc_trace(tf, phase, "phase"), sc_core::sc_trace(tf, frame, "frame");
-    sc_core::sc_trace(tf, row, "row"), sc_core::sc_trace(tf, done, "done");
-  }
+  std::string base = vcd_path;
+  if (base.size() > 4 && base.compare(base.size() - 4, 4, ".vcd") == 0) base.resize(base.size() - 4);
+  Waveform wave(base);
+  Waveform::ValueNames phases;
+  for (int p = 0; p <= static_cast<int>(LockinPhase::Output); ++p)
+    phases.push_back({p, phase_name(static_cast<LockinPhase>(p))});
+  wave.add(phase, "tof_lockin.sequencer", "phase", phases);
+  wave.add(frame, "tof_lockin.sequencer", "frame");
+  wave.add(row, "tof_lockin.sequencer", "row");
+  wave.add(done, "tof_lockin.sequencer", "done");
+  wave.add(tx1, "tof_lockin.gates", "tx1");
+  wave.add(tx2, "tof_lockin.gates", "tx2");
+  wave.add(txd, "tof_lockin.gates", "txd");
+  wave.add(light, "tof_lockin.gates", "light");
   sc_core::sc_start(sc_core::sc_time(time_limit_s, sc_core::SC_SEC));
-  if (tf) sc_core::sc_close_vcd_trace_file(tf);
+  wave.close();
   LockinScRun r;
   r.finished = s->kernel().done();
   r.end_time_s = s->finish_time_s();

@@ -104,10 +104,12 @@ struct Reconstruction {
 Reconstruction reconstruct(const lk::TofLockinSensorKernel& k, const lk::LockinScene& sc, int R, int C) {
   Reconstruction out;
   out.map.range_m.assign(static_cast<std::size_t>(R), std::vector<double>(static_cast<std::size_t>(C), NAN));
+  out.map.truth_m = out.map.range_m;
   for (int c = 0; c < C; ++c) out.map.column_names.push_back(fmt::format("c{}", c));
   for (int r = 0; r < R; ++r)
     for (int c = 0; c < C; ++c) {
       const double truth = sc.distance_at(r, c, C);
+      out.map.truth_m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = truth;
       double acc = 0;
       int n = 0;
       for (long long m = 0; m < k.range_maps(); ++m) {
@@ -317,7 +319,7 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
 }  // namespace
 
 const SimulateEntry& tof_lockin_simulate_entry() {
-  static const SimulateEntry e{"tof-lockin", &simulate_tof_lockin, true, true};
+  static const SimulateEntry e{"tof-lockin", &simulate_tof_lockin, true, true, false};
   return e;
 }
 

@@ -1,5 +1,7 @@
 #include "systemc/tof_spad/sensor.h"
 
+#include "systemc/common/waveform.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -92,18 +94,17 @@ SystemcRun run_tof_spad_systemc(const TofSpadKernel& kernel, const PixelSelectio
   dut.row_o(row), dut.phase_o(phase), dut.word_valid_o(valid), dut.word_o(word);
   SystemcRun r;
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  sc_core::sc_trace_file* tf = nullptr;
-  if (!vcd_base.empty()) {  // tracing only after the zero-time start
-    tf = sc_core::sc_create_vcd_trace_file(vcd_base.c_str());
-    sc_core::sc_trace(tf, row, "row"), sc_core::sc_trace(tf, phase, "phase");
-    sc_core::sc_trace(tf, valid, "word_valid"), sc_core::sc_trace(tf, word, "word");
-  }
+  Waveform wave(vcd_base);  // tracing only after the zero-time start
+  wave.add(row, "tof_spad.sequencer", "row");
+  wave.add(phase, "tof_spad.sequencer", "phase", {{0, "idle"}, {1, "laser_cycles"}, {2, "histogram_readout"}});
+  wave.add(valid, "tof_spad.histogram", "word_valid");
+  wave.add(word, "tof_spad.histogram", "word");
   // Bounded: the expected frame time plus 1%.
   const double cycles_per_frame = static_cast<double>(kernel.rows()) *
                                   (static_cast<double>(kernel.laser_cycles()) * kernel.phase_bins() +
                                    static_cast<double>(kernel.readout_words_per_row() * kernel.cycles_per_word()));
   sc_core::sc_start(dut.clock_period() * (cycles_per_frame * static_cast<double>(frames) * 1.01 + 10));
-  if (tf) sc_core::sc_close_vcd_trace_file(tf);
+  wave.close();
   if (!dut.done()) SC_REPORT_ERROR("tof_spad", "simulation bound reached before the last frame");
   r.frames = dut.frames();
   r.words = dut.words();
@@ -114,12 +115,13 @@ SystemcRun run_tof_spad_systemc(const TofSpadKernel& kernel, const PixelSelectio
 }
 
 SystemcRun run_tof_spad_kernel(const TofSpadKernel& kernel, const PixelSelection& sel, const RateSource& rates,
-                               long long frames) {
+                               long long frames, const std::function<void(long long)>& progress) {
   SystemcRun r;
   for (long long fr = 0; fr < frames; ++fr) {
     r.frames.push_back(kernel.run_frame(static_cast<std::uint64_t>(fr), sel, rates));
     append_words(r.frames.back(), kernel.config().tdc.columns_per_tdc, r.words);
     r.measured_cycles += r.frames.back().cycles;
+    if (progress) progress(fr + 1);
   }
   r.simulated_time_s = static_cast<double>(r.measured_cycles) / kernel.clock_Hz();
   return r;

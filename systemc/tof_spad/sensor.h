@@ -4,6 +4,7 @@
 // streams the row's histogram memory out word by word (one word per cycles_per_word clocks).
 // Measured cycles come from the simulated time; results must equal the bare kernel's.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <systemc>
 #include <vector>
@@ -53,8 +54,9 @@ struct SystemcRun {
 SystemcRun run_tof_spad_systemc(const TofSpadKernel& kernel, const PixelSelection& sel, const RateSource& rates,
                                 long long frames, const std::string& vcd_base = "");
 
-// Bare-kernel counterpart: frames and the word stream the module would emit.
+// Bare-kernel counterpart: frames and the word stream the module would emit. `progress` (may be
+// empty) is called after each frame with the frames done; it may throw to stop the run.
 SystemcRun run_tof_spad_kernel(const TofSpadKernel& kernel, const PixelSelection& sel, const RateSource& rates,
-                               long long frames);
+                               long long frames, const std::function<void(long long)>& progress = {});
 
 }  // namespace rangesim::systemc::spad

@@ -105,6 +105,9 @@ class TofSpadKernel {
   long long laser_cycles() const { return laser_cycles_; }  // STARTs per row integration
   int phase_bins() const { return bins_.phase_bins; }       // clock cycles per laser period
   int codes() const { return bins_.codes; }
+  // Dead time of the shared TDC after an event / an overflow, in phase bins (TdcGroupKernel's).
+  int block_event_bins() const { return block_event_bins_; }
+  int block_overflow_bins() const { return block_overflow_bins_; }
   long long readout_words_per_row() const { return static_cast<long long>(cfg_.tdc.columns_per_tdc) * bins_.codes; }
   long long cycles_per_word() const { return cycles_per_word_; }
   double clock_Hz() const { return tdc_clock_Hz(cfg_); }

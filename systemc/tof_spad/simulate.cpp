@@ -58,15 +58,17 @@ sp::TofSpadKernelOptions kernel_options(const SimulationRequest& req) {
 }
 
 sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& kernel, const scene::SpadScene& sc,
-                         int columns_per_tdc, long long frames, const std::string& vcd_base, double& sim_wall_s) {
+                         int columns_per_tdc, long long frames, const std::string& vcd_base, SimulationHost& host,
+                         double& sim_wall_s) {
   sp::PixelSelection sel;
   for (int r = sc.first_row; r < sc.first_row + sc.rows; ++r) sel.rows.push_back(r);
   sel.first_group = sc.first_column / columns_per_tdc;
   sel.groups = sc.columns / columns_per_tdc;
   const sp::RateSource rates = [&sc](int r, int c) { return sc.rates(r, c); };
   const auto t_sim = Clock::now();
-  sp::SystemcRun res = req.kernel_only ? sp::run_tof_spad_kernel(kernel, sel, rates, frames)
-                                       : sp::run_tof_spad_systemc(kernel, sel, rates, frames, vcd_base);
+  sp::SystemcRun res = req.kernel_only
+                           ? sp::run_tof_spad_kernel(kernel, sel, rates, frames, host.progress("frame", frames))
+                           : sp::run_tof_spad_systemc(kernel, sel, rates, frames, vcd_base);
   sim_wall_s = std::chrono::duration<double>(Clock::now() - t_sim).count();
   if (res.sc_errors > 0)
     throw std::runtime_error(
@@ -102,13 +104,14 @@ void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadS
     ++out.points_total;
     double err = NAN;
     const bool lit = sc.lit(p.row, p.column);
+    const auto r = static_cast<std::size_t>(p.row - sc.first_row),
+               c = static_cast<std::size_t>(p.column - sc.first_column);
+    if (lit) out.map.truth_m[r][c] = truth;
     out.background_points += !lit;
     if (p.time_s && !lit) ++out.background_detections;
     if (p.time_s) {
       ++out.detected;
       if (lit) err = p.range_m - truth, out.err.add(err);
-      const auto r = static_cast<std::size_t>(p.row - sc.first_row),
-                 c = static_cast<std::size_t>(p.column - sc.first_column);
       out.map.range_m[r][c] += p.range_m, ++cnt[r][c];  // a sum until every frame is in
     }
     out.points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth),
@@ -120,6 +123,7 @@ Reconstruction reconstruct(const sp::SystemcRun& res, const scene::SpadScene& sc
   Reconstruction out;
   const auto rows = static_cast<std::size_t>(sc.rows), columns = static_cast<std::size_t>(sc.columns);
   out.map.range_m.assign(rows, std::vector<double>(columns, 0.0));
+  out.map.truth_m.assign(rows, std::vector<double>(columns, NAN));
   std::vector<std::vector<int>> cnt(rows, std::vector<int>(columns, 0));
   for (const auto& f : res.frames) add_frame(out, f, sc, gt, cnt);
   for (std::size_t r = 0; r < rows; ++r)
@@ -250,7 +254,8 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
   const sp::TofSpadKernelOptions kopt = kernel_options(req);
   const sp::TofSpadKernel kernel(c.cfg, c.array_rows, c.array_columns, kopt);
   double sim_wall_s = 0;
-  const sp::SystemcRun res = run_model(req, kernel, sc, c.cfg.tdc.columns_per_tdc, c.frames, vcd_base, sim_wall_s);
+  const sp::SystemcRun res =
+      run_model(req, kernel, sc, c.cfg.tdc.columns_per_tdc, c.frames, vcd_base, host, sim_wall_s);
 
   const golden::FrameTiming gt = golden::frame_timing_tof_spad(params);
   SimulationResult out;
@@ -272,7 +277,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
 }  // namespace
 
 const SimulateEntry& tof_spad_simulate_entry() {
-  static const SimulateEntry e{"tof-spad", &simulate_tof_spad, true, false};
+  static const SimulateEntry e{"tof-spad", &simulate_tof_spad, true, false, false};
   return e;
 }
 

@@ -322,6 +322,7 @@ AddressSearchCosimReport run(const AddressSearchCosimOptions& options, const Add
   const long long per_op = 1 + params.search_cycles + 2 * params.address_bits + options.max_gap_cycles;
   const long long limit = options.cycle_limit > 0 ? options.cycle_limit : kResetCycles + 10 + per_op * top.operations();
   // Verilator tracing must start after elaboration (Verilator's SystemC examples).
+  sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);  // sc_stop()
   sc_core::sc_start(sc_core::SC_ZERO_TIME);
   std::unique_ptr<VerilatedVcdSc> rtl_tf;
   if (!options.vcd_prefix.empty()) {

@@ -60,6 +60,8 @@ void write_file(const std::string& path, const std::string& text) {
 }  // namespace
 
 std::string cosim_report_file_text(const CosimReport& r, const RtlCoverage& cov) {
+  json checks = json::object();
+  for (const auto& [name, c] : r.checks) checks[name] = {c.transactions, c.mismatches};
   json ms = json::array();
   for (const auto& m : r.first_mismatches)
     ms.push_back({{"check", m.check},
@@ -78,12 +80,15 @@ std::string cosim_report_file_text(const CosimReport& r, const RtlCoverage& cov)
                  {"rtl_assertions_failed", r.rtl_assertions_failed},
                  {"sc_errors", r.sc_errors},
                  {"fault_injected", r.fault_injected},
-                 {"fault_site", r.fault_site}};
+                 {"fault_site", r.fault_site},
+                 {"checks", checks}};
   const json c{{"available", cov.available},
                {"line_points", cov.line_points},
                {"line_hit", cov.line_hit},
                {"toggle_points", cov.toggle_points},
-               {"toggle_hit", cov.toggle_hit}};
+               {"toggle_hit", cov.toggle_hit},
+               {"uncovered_lines", cov.uncovered_lines},
+               {"data", cov.data}};
   return json{{"report", rep}, {"coverage", c}}.dump();
 }
 
@@ -113,12 +118,16 @@ void parse_cosim_report_file(const std::string& text, CosimReport& r, RtlCoverag
   r.sc_errors = p.at("sc_errors").get<int>();
   r.fault_injected = p.at("fault_injected").get<bool>();
   r.fault_site = p.at("fault_site").get<std::string>();
+  for (const auto& [name, c] : p.at("checks").items())
+    r.checks[name] = {c.at(0).get<std::uint64_t>(), c.at(1).get<std::uint64_t>()};
   const json& c = j.at("coverage");
   cov.available = c.at("available").get<bool>();
   cov.line_points = c.at("line_points").get<long long>();
   cov.line_hit = c.at("line_hit").get<long long>();
   cov.toggle_points = c.at("toggle_points").get<long long>();
   cov.toggle_hit = c.at("toggle_hit").get<long long>();
+  cov.uncovered_lines = c.at("uncovered_lines").get<std::map<std::string, std::set<int>>>();
+  cov.data = c.at("data").get<std::string>();
 }
 
 int run_cosim_child(int argc, char** argv, PresetCosimRunner runner) {

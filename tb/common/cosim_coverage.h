@@ -5,6 +5,8 @@
 //   line   = points of the pages v_line and v_branch (statement blocks and if/case branches)
 //   toggle = points of the page v_toggle (each bit of each signal, both directions)
 // hit = count > 0. The same numbers `verilator_coverage --annotate` would base itself on.
+#include <map>
+#include <set>
 #include <string>
 
 namespace rangesim::tb {
@@ -13,13 +15,16 @@ struct RtlCoverage {
   bool available = false;  // some model in this process carries coverage points
   long long line_points = 0, line_hit = 0;
   long long toggle_points = 0, toggle_hit = 0;
+  // Source lines with a line or branch point never hit, by file (rangesim's own RTL as
+  // "rtl/<folder>/<file>.sv", a user's file by the path it was given).
+  std::map<std::string, std::set<int>> uncovered_lines;
+  std::string data;  // the counters in Verilator's coverage.dat format (verilator_coverage reads it)
   double line_percent() const { return line_points ? 100.0 * line_hit / line_points : 0.0; }
   double toggle_percent() const { return toggle_points ? 100.0 * toggle_hit / toggle_points : 0.0; }
 };
 
-// Parses a Verilator coverage data file (coverage.dat format). Throws std::runtime_error if it
-// cannot be read.
-RtlCoverage parse_coverage_file(const std::string& path);
+// Parses Verilator coverage data (coverage.dat format).
+RtlCoverage parse_coverage_data(const std::string& data);
 
 // Reads the counters of the models alive now and keeps them for rtl_coverage(). The counters live
 // in the models: read after a model is destroyed they are freed memory, and the numbers change

@@ -26,7 +26,7 @@ class CosimScoreboard {
   template <class T>
   bool expect(const char* check, long long frame, long long row, long long column, std::uint64_t cycle,
               const T& expected, const T& actual) {
-    ++r_.transactions;
+    count(check);
     if (expected == actual) return true;
     mismatch(check, frame, row, column, cycle, to_text(expected), to_text(actual));
     return false;
@@ -39,12 +39,19 @@ class CosimScoreboard {
     return false;
   }
 
+  // Transactions a harness compared itself (its mismatches come through add()).
+  void count(const std::string& check, std::uint64_t n = 1) {
+    r_.transactions += n;
+    r_.checks[check].transactions += n;
+  }
+
   void mismatch(const std::string& check, long long frame, long long row, long long column, std::uint64_t cycle,
                 const std::string& expected, const std::string& actual) {
     add({check, frame, row, column, cycle, expected, actual});
   }
   void add(CosimMismatch m) {
     ++r_.mismatches;
+    ++r_.checks[m.check].mismatches;
     if (r_.first_mismatches.size() >= kKeptMismatches) return;
     r_.first_mismatches.push_back(std::move(m));
     if (!type_) return;

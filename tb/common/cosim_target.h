@@ -6,6 +6,7 @@
 // tb/common/cosim_targets.cpp (one line each).
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,14 @@ struct CosimMismatch {
 // tb/common/cosim_scoreboard.h); the rest are counted.
 inline constexpr std::size_t kKeptMismatches = 20;
 
+// What one check of a scoreboard compared (a JUnit testcase of its own).
+struct CosimCheck {
+  std::uint64_t transactions = 0, mismatches = 0;
+};
+
 struct CosimReport {
   std::string target;
+  std::map<std::string, CosimCheck> checks;     // per check id: what it compared and found
   std::uint64_t cycles = 0;                     // clock cycles simulated
   std::uint64_t transactions = 0;               // scoreboard transactions compared (RTL vs SystemC vs golden)
   std::uint64_t mismatches = 0;                 // total, including assertion failures

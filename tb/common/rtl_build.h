@@ -24,6 +24,9 @@ struct RtlBuildSpec {
   VerilogParameters parameters;
   std::string harness_header;  // included by the generated sc_main, e.g. "tb/ls_conventional/cosim_harness.h"
   std::string runner;          // function template of that header: PresetCosimRunner once instantiated
+  // A user's Verilog (`cosim --rtl FILE.sv`), read before rangesim's: its modules replace the
+  // rangesim blocks of the same name (absolute paths; checked by check_user_rtl first).
+  std::vector<std::string> user_files;
 };
 
 // A sensor whose readout is co-simulated at a preset's own parameters (`rangesim cosim
@@ -31,9 +34,22 @@ struct RtlBuildSpec {
 struct PresetCosim {
   const char* sensor;                            // sensor id of the presets it takes
   const char* target;                            // the built-in target it generalises: same harness, same faults
+  const char* instance_preset;                   // its built-in instance's preset, relative to the source tree
   RtlBuildSpec (*spec)(const ParamSet& preset);  // UserError when the RTL cannot take the preset
 };
 const std::vector<PresetCosim>& preset_cosims();  // tb/common/cosim_targets.cpp
+// The one whose built-in target is `target` (nullptr if none), and its instance preset's path.
+const PresetCosim* preset_cosim_of_target(const std::string& target);
+std::string instance_preset_path(const PresetCosim& pc);
+
+// The rangesim blocks the user's files of `spec` replace inside its top (at least one; with
+// `top` non-empty, that one must be among them), each checked against its port contract at the
+// preset's parameters (tb/common/rtl_ports.h). UserError naming the file, module and port.
+std::vector<std::string> check_user_rtl(const RtlBuildSpec& spec, const ParamSet& preset, const std::string& top);
+
+// Keeps the cache under $RANGESIM_RTL_CACHE_MAX_MB (default 2048): removes the entries of
+// `root` used longest ago (a use touches its folder), never `keep`. UserError for a bad bound.
+void bound_rtl_cache(const std::string& root, const std::string& keep);
 
 // Path of the co-simulation executable of `spec`, verilated and compiled now unless cached.
 // Progress on stderr. UserError (exit 2) when verilator or the C++ compiler is missing or the
@@ -44,7 +60,7 @@ std::string rtl_cosim_executable(const RtlBuildSpec& spec);
 // stderr go to this process's stderr. Errors of the child are rethrown (UserError stays UserError).
 // `settings`: --set KEY=VALUE assignments the child applies after the preset (core/preset.h).
 void run_rtl_cosim(const std::string& executable, const std::string& preset_path,
-                   const std::vector<std::string>& settings, const CosimOptions& options,
-                   CosimReport& report, RtlCoverage& coverage);
+                   const std::vector<std::string>& settings, const CosimOptions& options, CosimReport& report,
+                   RtlCoverage& coverage);
 
 }  // namespace rangesim::tb

@@ -120,7 +120,7 @@ class CentreTop : public sc_core::sc_module {
         b = bitd(rng_) != 0;
         stream_left_ = 2 * B - 1;
         ++streams_;
-        ++report.transactions;  // one accumulated sampling
+        CosimScoreboard(report).count("centre");  // one accumulated sampling
       }
       gap_left_ = gap(rng_);
     }
@@ -212,7 +212,7 @@ class SequencerTop : public sc_core::sc_module {
     // A reset pulse now and then (about once per 20 frame accesses), anywhere in the schedule.
     const bool pulse = std::uniform_int_distribution<long long>(0, 20 * kernel_.frame_cycles())(rng_) == 0;
     rst.write(pulse);
-    if (pulse) ++report.transactions;
+    if (pulse) CosimScoreboard(report).count("sequencer");
   }
 
   void on_negedge() {
@@ -245,7 +245,7 @@ class SequencerTop : public sc_core::sc_module {
       }
     }
     // Strobes are the transactions: each search start, frame end and reset phase start.
-    if (m.search_start || m.frame_done) ++report.transactions;
+    if (m.search_start || m.frame_done) CosimScoreboard(report).count("sequencer");
     if (!(m == g)) {
       auto str = [](const systemc::MultisamplingSequencerPins& p) {
         std::ostringstream s;

@@ -114,6 +114,31 @@ class LsCosimTop : public sc_core::sc_module {
   }
 
   CosimReport& report() { return report_; }
+
+  // The clock-level model's pins of every cycle, beside the RTL's in the trace
+  // (tb/common/cosim_run.h): the sequencer and each row's centre processor, as the scoreboard
+  // sees them at the falling edge.
+  void trace_expected(systemc::Waveform& w) {
+    tracing_ = true;
+    expected_centre_.assign(static_cast<std::size_t>(rows_), {});
+    systemc::Waveform::ValueNames phases;
+    for (int p = 0; p < systemc::kReadoutPhases; ++p)
+      phases.push_back({p, systemc::readout_phase_name(static_cast<systemc::ReadoutPhase>(p))});
+    w.add(expected_phase_, "sequencer", "phase", phases);
+    w.add(expected_seq_.pix_reset, "sequencer", "pix_reset");
+    w.add(expected_seq_.latch, "sequencer", "latch");
+    w.add(expected_seq_.search_start, "sequencer", "search_start");
+    w.add(expected_seq_.frame_done, "sequencer", "frame_done");
+    w.add(expected_seq_.sampling, "sequencer", "sampling");
+    for (int r = 0; r < rows_; ++r) {
+      const std::string row = "row" + std::to_string(r);
+      const CentreProcessorPins& c = expected_centre_[static_cast<std::size_t>(r)];
+      w.add(c.valid, row, "centre_valid");
+      w.add(c.centre_q, row, "centre_q");
+      w.add(c.sum, row, "sum");
+      w.add(c.count, row, "count");
+    }
+  }
   long long frames_done() const { return frames_done_; }
   int recorded_cycles() const { return recorded_; }
 
@@ -188,7 +213,7 @@ class LsCosimTop : public sc_core::sc_module {
       StreamRecord& m = rec_[0][static_cast<std::size_t>(r)];
       StreamRecord& g = rec_[1][static_cast<std::size_t>(r)];
       if (m.bits == 0 && g.bits == 0) continue;
-      report_.transactions += 2;  // left and right address
+      board_.count("address", 2);  // left and right address
       if (m.bits != g.bits || m.value != g.value || m.first_cycle != g.first_cycle || m.last_cycle != g.last_cycle) {
         const long long col = m.bits == 2 * address_bits_
                                   ? static_cast<long long>((m.value >> address_bits_) & low_mask(address_bits_))
@@ -216,6 +241,11 @@ class LsCosimTop : public sc_core::sc_module {
     report_.cycles = static_cast<std::uint64_t>(cycle + 1);
     const MultisamplingSequencerPins sp = kernel_.sequencer().pins();
     const long long frame_no = static_cast<long long>(sp.frame);
+    if (tracing_) {
+      expected_seq_ = sp;
+      expected_phase_ = static_cast<int>(sp.phase);
+      for (int r = 0; r < rows_; ++r) expected_centre_[static_cast<std::size_t>(r)] = kernel_.centre(r).pins();
+    }
 
     if (out_out_.is_open()) {
       const auto& g = sig;
@@ -299,7 +329,7 @@ class LsCosimTop : public sc_core::sc_module {
         report_.fault_injected = true;
         report_.fault_site = site(frame_no, r, cycle, "centre + 1 LSB");
       }
-      ++report_.transactions;
+      board_.count("centre");
       if (m != g)
         add({"centre", frame_no, r, -1, static_cast<std::uint64_t>(cycle), centre_string(m), centre_string(g)});
       // Golden: noise-free, the edge-centre estimate of the same row is exact.
@@ -349,6 +379,11 @@ class LsCosimTop : public sc_core::sc_module {
   std::vector<std::uint32_t> cmp_words_;     // cmp_i as last written
   long long fault_frame_ = 1;                // faults go into this frame access or later
   int drop_row_ = -1;
+  // trace_expected(): the model's pins of the current cycle, traced by reference.
+  bool tracing_ = false;
+  MultisamplingSequencerPins expected_seq_;
+  int expected_phase_ = 0;
+  std::vector<CentreProcessorPins> expected_centre_;
   long long drop_frame_ = -1;
   long long frames_done_ = 0;
   std::ofstream stim_out_, out_out_;

@@ -22,9 +22,12 @@ CosimReport run_ls(const CosimOptions& o, bool full) {
 
 // `rangesim cosim <ls-conventional preset>`: the readout at the preset's parameters.
 RtlBuildSpec preset_readout(const ParamSet& preset) {
-  return {"ls_conventional", "ls_conventional_readout",
+  return {"ls_conventional",
+          "ls_conventional_readout",
           verilog_parameters(ls_conventional_from_params(preset), preset.origin()),
-          "tb/ls_conventional/cosim_harness.h", "rangesim::tb::run_ls_conventional_preset"};
+          "tb/ls_conventional/cosim_harness.h",
+          "rangesim::tb::run_ls_conventional_preset",
+          {}};
 }
 CosimReport run_ls_small(const CosimOptions& o) { return run_ls(o, false); }
 CosimReport run_ls_full(const CosimOptions& o) { return run_ls(o, true); }
@@ -57,6 +60,9 @@ CosimReport run_address_search(const CosimOptions& o) {
   r.cycles = static_cast<std::uint64_t>(a.cycles);
   r.transactions = static_cast<std::uint64_t>(a.transactions_compared);
   r.mismatches = static_cast<std::uint64_t>(a.mismatch_count) + (a.rtl_assertion_failed ? 1 : 0) + (a.finished ? 0 : 1);
+  r.checks["address_search"] = {r.transactions, static_cast<std::uint64_t>(a.mismatch_count)};
+  if (!a.finished) r.checks["run"].mismatches = 1;
+  if (a.rtl_assertion_failed) r.checks["rtl_assertion"].mismatches = 1;
   for (const std::string& m : a.mismatches) r.first_mismatches.push_back({"address_search", -1, -1, -1, 0, "", m});
   if (!a.finished) r.first_mismatches.push_back({"run", -1, -1, -1, 0, "all operations done", "stalled"});
   if (a.rtl_assertion_failed)
@@ -103,7 +109,7 @@ std::vector<CosimTarget> ls_conventional_cosim_targets() {
 }
 
 std::vector<PresetCosim> ls_conventional_preset_cosims() {
-  return {{"ls-conventional", "ls-conventional", &preset_readout}};
+  return {{"ls-conventional", "ls-conventional", "rtl/ls_conventional/instances/small.toml", &preset_readout}};
 }
 
 }  // namespace rangesim::tb

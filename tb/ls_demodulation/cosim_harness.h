@@ -150,6 +150,20 @@ class DemodCosimTop : public sc_core::sc_module {
     dont_initialize();
   }
 
+  // The clock-level model's pins of every cycle, beside the RTL's in the trace
+  // (tb/common/cosim_run.h), as the scoreboard compares them at the falling edge.
+  void trace_expected(systemc::Waveform& w) {
+    systemc::Waveform::ValueNames phases;
+    for (int p = 0; p <= static_cast<int>(systemc::DemodPhase::Done); ++p)
+      phases.push_back({p, systemc::to_string(static_cast<systemc::DemodPhase>(p))});
+    w.add(e_.phase, "sequencer", "phase", phases);
+    w.add(e_.row, "sequencer", "row");
+    w.add(e_.row_valid, "readout", "row_valid");
+    w.add(e_.found, "readout", "found");
+    w.add(e_.left, "readout", "left");
+    w.add(e_.right, "readout", "right");
+  }
+
   long long cycle_bound() const { return kResetCycles + 10 + s_.frames * kernel_.frame_cycles(); }
   // Per frame and row, the centre rebuilt from the RTL's row results against the kernel's.
   void finish() {
@@ -356,7 +370,6 @@ class DemodCosimTop : public sc_core::sc_module {
   std::vector<std::optional<double>> golden_;             // [row] golden centre (noise-free runs)
   std::uint64_t cycle_ = 0;
 };
-
 
 // Runs the sequencer RTL VTop, verilated with verilog_parameters(base), against the kernel on a
 // random setup drawn on `base`; `target` names the report.

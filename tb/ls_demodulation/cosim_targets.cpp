@@ -19,15 +19,18 @@ std::vector<CosimTarget> ls_demodulation_cosim_targets() {
 
 namespace {
 RtlBuildSpec preset_sequencer(const ParamSet& preset) {
-  return {"ls_demodulation", "ls_demodulation_sequencer",
+  return {"ls_demodulation",
+          "ls_demodulation_sequencer",
           verilog_parameters(ls_demodulation_from_params(preset), preset.origin()),
-          "tb/ls_demodulation/cosim_harness.h", "rangesim::tb::run_ls_demodulation_preset"};
+          "tb/ls_demodulation/cosim_harness.h",
+          "rangesim::tb::run_ls_demodulation_preset",
+          {}};
 }
 }  // namespace
 
 // `rangesim cosim <ls-demodulation preset>`: the sequencer at the preset's array width and readout.
 std::vector<PresetCosim> ls_demodulation_preset_cosims() {
-  return {{"ls-demodulation", "ls-demodulation", &preset_sequencer}};
+  return {{"ls-demodulation", "ls-demodulation", "rtl/ls_demodulation/instances/readout.toml", &preset_sequencer}};
 }
 
 }  // namespace rangesim::tb

@@ -11,8 +11,12 @@ CosimReport tof_spad(const CosimOptions& o) { return run_tof_spad_cosim(o, false
 CosimReport tdc(const CosimOptions& o) { return run_tof_spad_cosim(o, true); }
 
 RtlBuildSpec preset_group(const ParamSet& preset) {
-  return {"tof_spad", "tof_spad_sequencer", verilog_parameters(tof_spad_from_params(preset), preset.origin()),
-          "tb/tof_spad/cosim_harness.h", "rangesim::tb::run_tof_spad_preset"};
+  return {"tof_spad",
+          "tof_spad_sequencer",
+          verilog_parameters(tof_spad_from_params(preset), preset.origin()),
+          "tb/tof_spad/cosim_harness.h",
+          "rangesim::tb::run_tof_spad_preset",
+          {}};
 }
 }  // namespace
 
@@ -32,6 +36,8 @@ std::vector<CosimTarget> tof_spad_cosim_targets() {
 }
 
 // `rangesim cosim <tof-spad preset>`: one TDC group of the preset's width (tdc.columns_per_tdc).
-std::vector<PresetCosim> tof_spad_preset_cosims() { return {{"tof-spad", "tof-spad", &preset_group}}; }
+std::vector<PresetCosim> tof_spad_preset_cosims() {
+  return {{"tof-spad", "tof-spad", "rtl/tof_spad/instances/tdc_group.toml", &preset_group}};
+}
 
 }  // namespace rangesim::tb

@@ -167,7 +167,11 @@ TEST(TimeStep, BadValuesAreRefusedWithTheAllowedRange) {
     const auto e = simulate(s + v, 2);
     const std::string err = e["err"].get<std::string>();
     EXPECT_NE(err.find("--time-step"), std::string::npos) << v << ": " << err;
-    EXPECT_NE(err.find("1e-12 <= S <= 1e-07"), std::string::npos) << v << ": " << err;
+    EXPECT_NE(err.find("allowed"), std::string::npos) << v << ": " << err;
+    // A number out of the flag's own range is refused as it is parsed ([0, 1] s); one inside it,
+    // by the sensor, with the range its pulse allows.
+    if (std::string(v) == "1e-6" || std::string(v) == "1e-13")
+      EXPECT_NE(err.find("1e-12 <= S <= 1e-07"), std::string::npos) << v << ": " << err;
   }
   const auto e = simulate("ls-conventional --scene '" + scene("plane.toml") + "' --kernel-only --time-step 1e-9", 2);
   EXPECT_NE(e["err"].get<std::string>().find("--time-step"), std::string::npos);

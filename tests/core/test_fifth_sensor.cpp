@@ -5,6 +5,8 @@
 // with an accuracy that falls as 1 / signal, and a two-phase clock schedule.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -99,7 +101,8 @@ class FifthSensor : public ::testing::Test {
   static void SetUpTestSuite() {
     register_sensor({"toy-sensor", "toy: threshold on signal / background", "[toy]", &toy_schema, &toy_validate});
     golden::register_golden_model({"toy-sensor", &toy_evaluate, &toy_published, &toy_frame_timing, nullptr});
-    dir_ = fs::path(::testing::TempDir()) / "fifth_sensor";
+    dir_ = fs::path(::testing::TempDir()) / ("fifth_sensor_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);  // a run of its own: evaluate refuses another run's results
     fs::create_directories(dir_);
     std::ofstream(dir_ / "toy-sensor.toml") << R"([sensor]
 id = "toy-sensor"
@@ -118,6 +121,10 @@ background_min_W = { value = 1e-3, source = "assumed: test" }
 background_max_W = { value = 1e-1, source = "assumed: test" }
 background_points = { value = 3, source = "assumed: test" }
 )";
+  }
+  static void TearDownTestSuite() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
   }
   static std::string preset() { return (dir_ / "toy-sensor.toml").string(); }
   static fs::path dir_;

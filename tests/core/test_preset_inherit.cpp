@@ -114,5 +114,25 @@ TEST(PresetSet, AppliesAfterThePresetWithTheSameChecks) {
             std::string::npos);
 }
 
+// UserError::key(): the key at fault, for callers that report it apart from the message (the
+// Python module's rangesim.Error.key); the cross-key checks name the first of their keys.
+TEST(PresetSet, ErrorsCarryTheKey) {
+  const auto key_of = [](const std::string& s) {
+    ParamSet q = load_preset("ls-conventional");
+    try {
+      apply_settings(q, {s});
+    } catch (const UserError& e) {
+      return e.key();
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(key_of("timing.clok_Hz=1"), "timing.clok_Hz");
+  EXPECT_EQ(key_of("timing.clock_Hz=fast"), "timing.clock_Hz");
+  EXPECT_EQ(key_of("multisampling.samplings=65"), "multisampling.samplings");
+  EXPECT_EQ(key_of("comparator.threshold_mode=best"), "comparator.threshold_mode");
+  EXPECT_EQ(key_of("pixel.columns=1024"), "timing.address_bits");
+  EXPECT_EQ(key_of("timing.clock_Hz"), "");  // not KEY=VALUE: no key to name
+}
+
 }  // namespace
 }  // namespace rangesim

@@ -170,24 +170,34 @@ TEST(CosimTargets, NamesUniqueAndFaultsListed) {
     EXPECT_EQ(names.count(n), 1u) << n;
 }
 
-TEST(CosimCoverage, ParsesVerilatorCoverageFile) {
-  const std::string path = "/tmp/rangesim_cov_parse_test.dat";
-  {
-    std::ofstream f(path);
-    f << "# SystemC::Coverage-3\n";
-    f << "C '\001t\002line\001page\002v_line/top\001o\002x' 3\n";
-    f << "C '\001t\002line\001page\002v_line/top\001o\002y' 0\n";
-    f << "C '\001t\002branch\001page\002v_branch/top\001o\002z' 1\n";
-    f << "C '\001t\002toggle\001page\002v_toggle/top\001o\002a' 0\n";
-    f << "C '\001t\002toggle\001page\002v_toggle/top\001o\002b' 5\n";
-  }
-  const RtlCoverage c = parse_coverage_file(path);
-  std::remove(path.c_str());
-  EXPECT_EQ(c.line_points, 3);
+TEST(CosimCoverage, ParsesVerilatorCoverageData) {
+  // Verilator names rangesim's files by absolute path (built-in instances) or relative to rtl/.
+  const std::string own = std::string(RANGESIM_SOURCE_DIR) + "/rtl/tof_spad/tdc.sv";
+  const std::string data =
+      "# SystemC::Coverage-3\n"
+      "C '\001f\002" +
+      own +
+      "\001l\00212\001t\002line\001page\002v_line/top\001o\002x' 3\n"
+      "C '\001f\002" +
+      own +
+      "\001l\00240\001t\002line\001page\002v_line/top\001o\002y' 0\n"
+      "C '\001f\002/home/u/my/tdc.sv\001l\0027\001t\002branch\001page\002v_branch/top\001o\002z' 0\n"
+      "C '\001f\002/home/u/my/tdc.sv\001l\0029\001t\002branch\001page\002v_branch/top\001o\002w' 1\n"
+      "C '\001f\002common/address_search.sv\001l\0025\001t\002line\001page\002v_line/top\001o\002v' 0\n"
+      "C '\001t\002toggle\001page\002v_toggle/top\001o\002a' 0\n"
+      "C '\001t\002toggle\001page\002v_toggle/top\001o\002b' 5\n";
+  const RtlCoverage c = parse_coverage_data(data);
+  EXPECT_EQ(c.line_points, 5);
   EXPECT_EQ(c.line_hit, 2);
   EXPECT_EQ(c.toggle_points, 2);
   EXPECT_EQ(c.toggle_hit, 1);
-  EXPECT_NEAR(c.line_percent(), 66.667, 1e-3);
+  EXPECT_NEAR(c.line_percent(), 40.0, 1e-9);
+  // Uncovered lines by file: rangesim's own by repository path, a user's as given.
+  ASSERT_EQ(c.uncovered_lines.size(), 3u);
+  EXPECT_EQ(c.uncovered_lines.at("rtl/tof_spad/tdc.sv"), std::set<int>{40});
+  EXPECT_EQ(c.uncovered_lines.at("/home/u/my/tdc.sv"), std::set<int>{7});
+  EXPECT_EQ(c.uncovered_lines.at("rtl/common/address_search.sv"), std::set<int>{5});
+  EXPECT_EQ(c.data, data);
 }
 
 }  // namespace

@@ -3,6 +3,11 @@
 // RTL cannot take (UserError naming the key).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -14,6 +19,7 @@
 #include "core/user_error.h"
 #include "rtl/instance_presets.h"
 #include "tb/common/instance_preset.h"
+#include "tb/common/rtl_build.h"
 #include "tb/common/rtl_tops.h"
 #include "tb/ls_conventional/verilog_parameters.h"
 #include "tb/ls_demodulation/verilog_parameters.h"
@@ -127,6 +133,39 @@ TEST(VerilogParameters, TofLockinTimingMustFitTheCounters) {
   c.source.duty_cycle = 1e-4;  // T_rep = 10^5 gate-clock cycles
   EXPECT_NE(user_error_of([&] { tof_lockin_rtl_shape(c, "p.toml"); }).find("T_rep in gate-clock cycles = 100000"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace rangesim::tb
+
+namespace rangesim::tb {
+namespace {
+
+// The run-time RTL cache stays under its bound: the entries used longest ago go first, the one
+// just used never; a bound that is no whole number of MB is refused.
+TEST(RtlCache, OldestEntriesGoPastTheBound) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(testing::TempDir()) / ("rtl_cache_bound_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  const auto now = fs::file_time_type::clock::now();
+  for (int i = 0; i < 4; ++i) {
+    const fs::path e = root / ("entry" + std::to_string(i));
+    fs::create_directories(e);
+    std::ofstream(e / "cosim", std::ios::binary) << std::string(700 * 1024, 'x');  // 0.7 MB
+    fs::last_write_time(e, now - std::chrono::hours(10 - i));                     // entry0 oldest
+  }
+  fs::last_write_time(root / "entry0", now - std::chrono::hours(20));
+  ::setenv("RANGESIM_RTL_CACHE_MAX_MB", "2", 1);
+  bound_rtl_cache(root.string(), (root / "entry0").string());  // keep the oldest: it was just used
+  EXPECT_TRUE(fs::exists(root / "entry0"));
+  EXPECT_FALSE(fs::exists(root / "entry1"));  // 2.8 MB -> 2.1 MB -> still over: entry2 goes too
+  EXPECT_FALSE(fs::exists(root / "entry2"));
+  EXPECT_TRUE(fs::exists(root / "entry3"));
+  ::setenv("RANGESIM_RTL_CACHE_MAX_MB", "lots", 1);
+  EXPECT_NE(user_error_of([&] { bound_rtl_cache(root.string(), ""); }).find("RANGESIM_RTL_CACHE_MAX_MB = 'lots'"),
+            std::string::npos);
+  ::unsetenv("RANGESIM_RTL_CACHE_MAX_MB");
+  fs::remove_all(root);
 }
 
 }  // namespace

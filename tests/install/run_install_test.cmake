@@ -1,5 +1,6 @@
 # cmake -P script behind the `install` ctest: install -> configure consumer -> build -> run.
-# Inputs: BUILD_DIR WORK_DIR CONSUMER_DIR GENERATOR CONFIG CXX_COMPILER [CXX_LAUNCHER].
+# Inputs: BUILD_DIR WORK_DIR CONSUMER_DIR GENERATOR CONFIG CXX_COMPILER [CXX_LAUNCHER]
+# [PYTHON_EXECUTABLE PYTHON_INSTALL_DIR] (the Python module, when the build has it).
 function(step what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -31,5 +32,22 @@ if(EXISTS "${WORK_DIR}/build/${CONFIG}/rangesim_consumer")
   set(exe "${WORK_DIR}/build/${CONFIG}/rangesim_consumer")
 endif()
 set(ENV{SYSTEMC_DISABLE_COPYRIGHT_MESSAGE} 1)
+# The user's own testbench on the verification kit first (when built): it must agree.
+if(EXISTS "${WORK_DIR}/build/rangesim_byo_testbench")
+  step("run the kit's testbench" "${WORK_DIR}/build/rangesim_byo_testbench")
+  message("${step_output}")
+endif()
 step("run consumer" "${exe}")
 message("${step_output}")
+
+# The Python module, from where `cmake --install` put it (README, "Python").
+if(PYTHON_EXECUTABLE)
+  set(ENV{PYTHONPATH} "${prefix}/${PYTHON_INSTALL_DIR}")
+  # One statement per line: step() passes its arguments as a list, which a ';' would split.
+  step("import the installed Python module" "${PYTHON_EXECUTABLE}" -B -c "import rangesim, sys
+f = rangesim.__file__
+assert f.startswith(sys.argv[1]), f
+s = rangesim.load('tof-spad')
+print('rangesim python OK', s.id, s.frame_rate()['frame_time_s'], f)" "${prefix}/${PYTHON_INSTALL_DIR}")
+  message("${step_output}")
+endif()

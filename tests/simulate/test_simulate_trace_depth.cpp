@@ -144,6 +144,8 @@ TEST_P(SimulateTraceFst, ReadBackByFst2Vcd) {
       rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene + ".toml " + c.args +
                    " --json --no-plots --trace " + dir + "/w.fst --out " + dir + "/o");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Every edge is representable in the trace's time unit: no SystemC warning per edge.
+  EXPECT_EQ(r.err.find("W713"), std::string::npos) << r.err.substr(0, 2000);
   EXPECT_EQ(nlohmann::json::parse(r.out)["trace"], dir + "/w.fst");
   ASSERT_TRUE(fs::exists(dir + "/w.fst"));
   for (const auto& e : fs::directory_iterator(dir))  // no temporary VCD or FST left behind
@@ -163,27 +165,38 @@ TEST_P(SimulateTraceFst, ReadBackByFst2Vcd) {
 
 INSTANTIATE_TEST_SUITE_P(
     EverySensor, SimulateTraceFst,
-    ::testing::Values(
-        TraceCase{"ls-conventional",
-                  "plane",
-                  "--frames 2",
-                  {"clk", "rst", "latch", "search_start", "row0_addr_bit", "frame"},
-                  "latch",
-                  8},
-        TraceCase{"ls-demodulation",
-                  "ls-demodulation-plane",
-                  "--frames 1 --tick",
-                  {"clk", "phase", "decision", "phase_cycle", "mpy_plus", "row", "search_start", "addr_valid",
-                   "addr_bit", "frame_done"},
-                  "addr_valid",
-                  1},
-        TraceCase{"tof-lockin",
-                  "tof-lockin-plane",
-                  "--frames 1",
-                  {"tx1", "tx2", "txd", "light", "phase", "row"},
-                  "row",
-                  100},  // gates aggregated: rows move
-        TraceCase{"tof-spad", "tof-spad-plane", "--frames 1", {"row", "phase", "word_valid", "word"}, "word_valid", 1}),
+    ::testing::Values(TraceCase{"ls-conventional",
+                                "plane",
+                                "--frames 2",
+                                {"ls_conventional.clk", "ls_conventional.rst", "ls_conventional.sequencer.latch",
+                                 "ls_conventional.sequencer.search_start",
+                                 "ls_conventional.row0.address_search.addr_bit", "ls_conventional.sequencer.frame"},
+                                "ls_conventional.sequencer.latch",
+                                8},
+                      TraceCase{"ls-demodulation",
+                                "ls-demodulation-plane",
+                                "--frames 1 --tick",
+                                {"ls_demodulation.clk", "ls_demodulation.sequencer.phase",
+                                 "ls_demodulation.sequencer.decision", "ls_demodulation.sequencer.phase_cycle",
+                                 "ls_demodulation.sequencer.mpy_plus", "ls_demodulation.readout.row",
+                                 "ls_demodulation.readout.search_start", "ls_demodulation.readout.addr_valid",
+                                 "ls_demodulation.readout.addr_bit", "ls_demodulation.sequencer.frame_done"},
+                                "ls_demodulation.readout.addr_valid",
+                                1},
+                      TraceCase{"tof-lockin",
+                                "tof-lockin-plane",
+                                "--frames 1",
+                                {"tof_lockin.gates.tx1", "tof_lockin.gates.tx2", "tof_lockin.gates.txd",
+                                 "tof_lockin.gates.light", "tof_lockin.sequencer.phase", "tof_lockin.sequencer.row"},
+                                "tof_lockin.sequencer.row",
+                                100},  // gates aggregated: rows move
+                      TraceCase{"tof-spad",
+                                "tof-spad-plane",
+                                "--frames 1",
+                                {"tof_spad.sequencer.row", "tof_spad.sequencer.phase", "tof_spad.histogram.word_valid",
+                                 "tof_spad.histogram.word"},
+                                "tof_spad.histogram.word_valid",
+                                1}),
     [](const ::testing::TestParamInfo<TraceCase>& i) {
       std::string n = i.param.sensor;
       std::replace(n.begin(), n.end(), '-', '_');
@@ -202,11 +215,24 @@ TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
   ASSERT_EQ(b.exit_code, 0) << b.err;
   const VcdFile va = read_vcd(dir + "/a.vcd"), vb = fst_to_vcd(dir + "/b.fst", dir + "/b.vcd");
   ASSERT_TRUE(va.ok && vb.ok) << va.error << vb.error;
-  for (const char* s : {"mpy_plus", "frame_done", "row_valid", "row", "decision"}) {
+  for (const char* s :
+       {"ls_demodulation.sequencer.mpy_plus", "ls_demodulation.sequencer.frame_done",
+        "ls_demodulation.readout.row_valid", "ls_demodulation.readout.row", "ls_demodulation.sequencer.decision"}) {
     ASSERT_TRUE(va.has(s) && vb.has(s)) << s;
     EXPECT_EQ(va.of(s), vb.of(s)) << s;  // the conversion keeps every change
   }
-  EXPECT_GE(va.rising_edges("mpy_plus").size(),
+  // Each trace comes with its GTKWave save file, naming the dump it opens, and the phase names.
+  for (const auto& [stem, dump] : {std::pair{"a", "a.vcd"}, std::pair{"b", "b.fst"}}) {
+    std::ifstream g(dir + "/" + stem + ".gtkw");
+    const std::string save((std::istreambuf_iterator<char>(g)), std::istreambuf_iterator<char>());
+    EXPECT_NE(save.find(std::string("[dumpfile] \"") + dump + "\""), std::string::npos) << save;
+    EXPECT_TRUE(fs::exists(dir + "/" + stem + ".ls_demodulation.sequencer.phase.txt")) << stem;
+  }
+  // The trace's folder is made.
+  const CommandResult c = rangesim_cmd(base + " --trace " + dir + "/new/sub/c.vcd --out " + dir + "/c");
+  EXPECT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_TRUE(fs::exists(dir + "/new/sub/c.vcd") && fs::exists(dir + "/new/sub/c.gtkw"));
+  EXPECT_GE(va.rising_edges("ls_demodulation.sequencer.mpy_plus").size(),
             4U);  // N = 5 correlation periods; event skipping shows the edges it stops at
   // Bad --trace: exit 2, the message names the flag, nothing written.
   struct Case {
@@ -214,7 +240,8 @@ TEST(SimulateTrace, LsDemodulationVcdEqualsFstAndBadTraceNamesWriteNothing) {
   };
   const Case cases[] = {{" --trace " + dir + "/w.txt", "must end in .vcd or .fst"},
                         {" --trace " + dir + "/w.fst --kernel-only", "--trace needs the SystemC model"},
-                        {" --trace " + dir + "/missing/w.fst", "does not exist or is not writable"}};
+                        {" --trace " + dir + "/folder.vcd", "exists and is a directory"}};
+  fs::create_directories(dir + "/folder.vcd");
   for (const Case& c : cases) {
     const CommandResult r = rangesim_cmd(base + c.args + " --out " + dir + "/o");
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
@@ -260,5 +287,28 @@ TEST(SimulatePresetKeys, TofSpadReadoutWordRateSetsTheReadoutPhaseInGoldenAndKer
       EXPECT_EQ(p["cycles"].get<long long>(), rs);
     }
   }
+  fs::remove_all(dir);
+}
+
+// --trace-rows chooses the rows whose blocks the ls-conventional waveform shows; a row outside the
+// array is refused naming the range, and a sensor without per-row blocks refuses the flag.
+TEST(SimulateTrace, TraceRowsChooseTheRowsShown) {
+  const std::string dir = make_temp_dir();
+  const std::string base = "simulate ls-conventional --scene " + kScenes + "/plane.toml --frames 2 --json --no-plots";
+  const CommandResult ok = rangesim_cmd(base + " --trace " + dir + "/r.vcd --trace-rows 3,100 --out " + dir + "/o");
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  const VcdFile v = read_vcd(dir + "/r.vcd");
+  ASSERT_TRUE(v.ok) << v.error;
+  EXPECT_TRUE(v.has("ls_conventional.row3.address_search.addr_valid"));
+  EXPECT_TRUE(v.has("ls_conventional.row100.centre_processor.centre_q"));
+  EXPECT_FALSE(v.has("ls_conventional.row0.centre_processor.centre_q"));
+  const CommandResult bad = rangesim_cmd(base + " --trace " + dir + "/b.vcd --trace-rows 365 --out " + dir + "/b");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--trace-rows 365: allowed 0..364"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir + "/b.vcd") || fs::exists(dir + "/b"));
+  const CommandResult spad = rangesim_cmd("simulate tof-spad --scene " + kScenes + "/tof-spad-plane.toml --trace " +
+                                          dir + "/s.vcd --trace-rows 1 --out " + dir + "/s");
+  EXPECT_EQ(spad.exit_code, 2);
+  EXPECT_NE(spad.err.find("allowed with ls-conventional"), std::string::npos) << spad.err;
   fs::remove_all(dir);
 }

@@ -62,6 +62,9 @@ inline VcdFile read_vcd(const std::string& path) {
   std::string tok;
   std::uint64_t now = 0;
   bool header = true;
+  // A variable's name is its scope path below the top scope ("SystemC"), joined with '.', and
+  // its own name: "ls_conventional.sequencer.phase".
+  std::vector<std::string> scopes;
   while (in >> tok) {
     if (header) {
       if (tok == "$comment" || tok == "$date" || tok == "$version") {
@@ -71,11 +74,22 @@ inline VcdFile read_vcd(const std::string& path) {
       } else if (tok == "$timescale") {
         std::string w;
         while (in >> w && w != "$end") f.timescale += (f.timescale.empty() ? "" : " ") + w;
+      } else if (tok == "$scope") {
+        std::string kind, name, w;
+        in >> kind >> name;
+        while (in >> w && w != "$end") {
+        }
+        scopes.push_back(name);
+      } else if (tok == "$upscope") {
+        std::string w;
+        in >> w;
+        if (!scopes.empty()) scopes.pop_back();
       } else if (tok == "$var") {
         std::string type, width, id, name, w;
         in >> type >> width >> id >> name;
         while (in >> w && w != "$end") {
         }
+        for (std::size_t i = scopes.size(); i-- > 1;) name = scopes[i] + "." + name;
         f.id_of[name] = id;
         f.width_of[name] = std::stoi(width);
         f.changes[id];

@@ -99,26 +99,42 @@ TEST(LsConventionalSensorModule, TraceIsWrittenAndReadsBack) {
   const rs::test::VcdFile vcd = rs::test::read_vcd(dir + "/sensor.vcd");
   ASSERT_TRUE(vcd.ok) << vcd.error;
   EXPECT_EQ(vcd.timescale, "1 fs");
-  for (const char* name : {"clk", "rst", "pix_reset", "latch", "search_start", "frame_done", "phase", "sampling",
-                           "frame", "row3_addr_valid", "row3_addr_bit", "row3_centre_q", "row7_centre_valid"})
+  // Scopes follow the block tree (systemc/common/waveform.h).
+  const std::string top = "ls_conventional.", seq = top + "sequencer.";
+  for (const std::string& name : {top + "clk", top + "rst", seq + "pix_reset", seq + "latch", seq + "search_start",
+                                 seq + "frame_done", seq + "phase", seq + "sampling", seq + "frame",
+                                 top + "row3.address_search.addr_valid", top + "row3.address_search.addr_bit",
+                                 top + "row3.centre_processor.centre_q", top + "row7.centre_processor.valid"})
     EXPECT_TRUE(vcd.has(name)) << name;
+  // GTKWave opens it grouped by block, with the sequencer's phases by name.
+  std::ifstream gtkw(dir + "/sensor.gtkw");
+  const std::string save((std::istreambuf_iterator<char>(gtkw)), std::istreambuf_iterator<char>());
+  EXPECT_NE(save.find("[dumpfile] \"sensor.vcd\""), std::string::npos);
+  EXPECT_NE(save.find("-ls_conventional.row3.centre_processor"), std::string::npos);
+  EXPECT_NE(
+      save.find("^1 sensor.ls_conventional.sequencer.phase.txt\n@2024\nSystemC.ls_conventional.sequencer.phase[31:0]"),
+      std::string::npos)
+      << save;
+  std::ifstream names(dir + "/sensor.ls_conventional.sequencer.phase.txt");
+  const std::string phases((std::istreambuf_iterator<char>(names)), std::istreambuf_iterator<char>());
+  EXPECT_NE(phases.find("1 latch\n"), std::string::npos) << phases;
   // Sample every cycle at its opening clock edge (values written at an edge belong to the cycle it opens).
-  const std::vector<std::uint64_t> edges = vcd.rising_edges("clk");
+  const std::vector<std::uint64_t> edges = vcd.rising_edges(top + "clk");
   const long long F = rangesim::golden::frame_timing(c.timing, 4).frame_cycles;
   ASSERT_GE(static_cast<long long>(edges.size()), 1 + 3 * F);  // two reset edges; the stopping edge is not dumped
   long long latch_cycles = 0, frames_done = 0;
   const int B = c.timing.address_bits;
   for (int row : run.traced_rows) {
-    const std::string p = "row" + std::to_string(row) + "_";
+    const std::string p = top + "row" + std::to_string(row) + ".";
     std::uint64_t shift = 0, sum = 0;
     int bits = 0, count = 0;
     long long frame = 0;
     for (std::size_t e = 0; e < edges.size() && frame < 3; ++e) {
       const std::uint64_t t = edges[e];
-      if (vcd.sample("rst", t)) continue;
-      if (row == run.traced_rows.front()) latch_cycles += vcd.sample("latch", t);
-      if (vcd.sample(p + "addr_valid", t)) {
-        shift = (shift << 1) | vcd.sample(p + "addr_bit", t);
+      if (vcd.sample(top + "rst", t)) continue;
+      if (row == run.traced_rows.front()) latch_cycles += vcd.sample(seq + "latch", t);
+      if (vcd.sample(p + "address_search.addr_valid", t)) {
+        shift = (shift << 1) | vcd.sample(p + "address_search.addr_bit", t);
         if (++bits == 2 * B) {
           sum += (shift >> B) + (shift & ((1U << B) - 1));
           ++count;
@@ -126,13 +142,13 @@ TEST(LsConventionalSensorModule, TraceIsWrittenAndReadsBack) {
           bits = 0;
         }
       }
-      if (vcd.sample("frame_done", t)) {
+      if (vcd.sample(seq + "frame_done", t)) {
         const rs::CentreProcessorPins& k =
             sc.frames[static_cast<std::size_t>(frame)].rows[static_cast<std::size_t>(row)];
         EXPECT_EQ(sum, k.sum) << "row " << row << " frame " << frame;
         EXPECT_EQ(count, k.count) << "row " << row << " frame " << frame;
-        EXPECT_EQ(vcd.sample(p + "centre_q", t), k.centre_q) << "row " << row << " frame " << frame;
-        EXPECT_EQ(vcd.sample("frame", t), static_cast<std::uint64_t>(frame));
+        EXPECT_EQ(vcd.sample(p + "centre_processor.centre_q", t), k.centre_q) << "row " << row << " frame " << frame;
+        EXPECT_EQ(vcd.sample(seq + "frame", t), static_cast<std::uint64_t>(frame));
         if (row == run.traced_rows.front()) ++frames_done;
         sum = 0;
         count = 0;

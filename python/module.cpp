@@ -1,0 +1,50 @@
+// The Python module `rangesim` (docs/python.md): the verbs of the command line returning data,
+// and the clock kernels step by step for Python testbenches. Every sensor comes from the
+// registries, as on the command line.
+#include "python/bindings.h"
+
+#include "app/cli_common.h"
+#include "core/user_error.h"
+
+namespace rangesim::python {
+
+void register_errors(py::module_& m) {
+  // Kept for the life of the process: the translator below may run until the interpreter exits.
+  static py::object* error = new py::object(py::reinterpret_steal<py::object>(PyErr_NewExceptionWithDoc(
+      "rangesim.Error",
+      "Bad input: the message the command line prints for it (naming the file or argument, the key and "
+      "the allowed range); `key` is the parameter or argument at fault (None when there is no one key).",
+      PyExc_ValueError, nullptr)));
+  m.attr("Error") = *error;
+  py::register_exception_translator([](std::exception_ptr p) {
+    if (!p) return;
+    try {
+      std::rethrow_exception(p);
+    } catch (const UserError& e) {
+      py::object err = (*error)(py::str(e.what()));
+      err.attr("key") = e.key().empty() ? py::object(py::none()) : py::object(py::str(e.key()));
+      PyErr_SetObject(error->ptr(), err.ptr());
+    } catch (const app::NotModelled& e) {  // the command's exit code 3: a sensor without the model
+      PyErr_SetString(PyExc_NotImplementedError, e.message.c_str());
+    }
+  });
+}
+
+}  // namespace rangesim::python
+
+PYBIND11_MODULE(rangesim, m) {
+  namespace rp = rangesim::python;
+  m.doc() =
+      "rangesim: cycle-accurate simulator of 3-D range-finding image sensors, from Python.\n\n"
+      "presets(), load(preset, set={...}) -> Sensor, table(); Sensor.show(), .frame_rate(), .evaluate(),\n"
+      ".simulate(), .kernel(block); rangesim.kernels holds the clock kernels. See docs/python.md.";
+  m.attr("__version__") = RANGESIM_VERSION;
+  rp::register_errors(m);
+  rp::SensorClass sensor(m, "Sensor",
+                         "A sensor preset as rangesim.load() resolved it: inheritance and `set` applied, "
+                         "checked as on the command line.");
+  rp::bind_verbs(m, sensor);
+  rp::bind_evaluate(sensor);
+  rp::bind_simulate(sensor);
+  rp::bind_kernels(m, sensor);
+}

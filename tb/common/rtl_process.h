@@ -1,0 +1,18 @@
+#pragma once
+// Running the tools of the run-time verilation (Verilator, the compiler) as child processes.
+#include <string>
+#include <vector>
+
+namespace rangesim::tb {
+
+// Absolute path of `name` on PATH ("" if absent); a name with '/' is checked as it is.
+std::string find_program(const std::string& name);
+
+// Runs argv in `cwd` ("" = here) with stdout and stderr to `log` ("" = this process's stderr);
+// its exit status (128 + signal when killed).
+int run_program(const std::vector<std::string>& args, const std::string& cwd, const std::string& log);
+
+// The last `lines` lines of a log file, each indented by two spaces.
+std::string log_tail(const std::string& path, int lines);
+
+}  // namespace rangesim::tb

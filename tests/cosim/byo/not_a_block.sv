@@ -1,0 +1,2 @@
+module not_a_block(input logic clk);
+endmodule

@@ -1,0 +1,2 @@
+module centre_processor(input logic clk
+endmodule
