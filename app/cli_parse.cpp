@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <ostream>
 
@@ -114,9 +115,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
           "; a path to a\n"
           "preset .toml file works wherever a sensor is expected, and --set KEY=VALUE changes it.\n"
           "Exit codes: 0 ok, 1 internal error, 2 bad input (preset, flag, output directory),\n"
-          "3 sensor not modelled yet for the command, 4 evaluate --max-seconds ran out or cosim found\n"
-          "mismatches, 130 interrupted (Ctrl-C); evaluate's 4 and 130 and sweep's 130 keep the journal\n"
-          "and print the command that resumes.",
+          "3 sensor not modelled yet for the command, 4 a budget ran out (--max-seconds, --max-memory) or\n"
+          "cosim found mismatches, 128 + the signal when stopped by one (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP);\n"
+          "a journaled sweep (evaluate --trials, sweep, bench, cosim all) keeps its journal and prints the\n"
+          "command that resumes. An output folder has one writer at a time; another command's results in it\n"
+          "are replaced only with --force.",
       "rangesim"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rangesim 0.1.0");
@@ -190,7 +193,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->check(real_in(0, true, 1e9, "s"));
   ev->add_flag("--resume", ev_opt.resume,
                "Monte Carlo: continue the interrupted sweep whose journal is in --out (same options required);\n"
-               "the output is byte-identical to an uninterrupted run. Exit codes: 130 interrupted (Ctrl-C), 4 budget");
+               "the output is byte-identical to an uninterrupted run. Exit codes: 130, 143, 129 stopped by Ctrl-C,\n"
+               "SIGTERM, SIGHUP; 4 a budget ran out");
 
   FrameRateOptions& fr_opt = c.frame_rate;
   auto* fr = app.add_subcommand("frame-rate", "Frame time from the clock schedule, by phase, and the rates");
@@ -225,7 +229,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->type_name("KEY=VALUE");
   sim->add_option("--trace", sim_opt.trace,
                   "Write the waveform of the SystemC run to FILE.vcd, or FILE.fst (converted with vcd2fst from the "
-                  "gtkwave package); off by default");
+                  "gtkwave package); off by default")
+      ->check(kPath);
   sim->add_option("--trace-rows", sim_opt.trace_rows,
                   "With --trace: the rows whose blocks (address search, centre processor) the waveform shows, e.g.\n"
                   "0,5,9 (default: first, quarter, middle, last); sensors without per-row blocks refuse it")
@@ -252,7 +257,17 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
                   "seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default) = exact.\n"
                   "Error falls and cost rises as the step shrinks; sensors exact on their clock grid refuse it")
-      ->check(real_in(0, false, 1, "s"));
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            // Any number passes: the model's check names the range of its preset (T0 / 1e5 .. T0).
+            char* end = nullptr;
+            std::strtod(s.c_str(), &end);
+            return !s.empty() && *end == '\0' ? std::string()
+                                              : "'" + s +
+                                                    "' is not a number; allowed 0 (exact) or a step in seconds "
+                                                    "from source.pulse_width_s / 1e5 to source.pulse_width_s";
+          },
+          ""));
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(

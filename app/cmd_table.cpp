@@ -69,7 +69,8 @@ Column build_column(const golden::ThesisColumn& tc, golden::ProgressFn progress)
   c.modelled = golden::golden_model(tc.sensor) != nullptr;
   golden::EvalResult ev;
   if (c.modelled) {
-    ev = golden::evaluate_sensor(params, progress);
+    golden::DiscardPoints discard;  // the table needs the summary and the ranges only
+    ev = golden::evaluate_sensor_streamed(params, discard, progress);
     c.published = golden::published_figures(params);
   }
   const bool total_sbr = tc.sbr_total;  // eq. 3.11, or eq. 3.23/4.11

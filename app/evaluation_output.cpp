@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <fmt/format.h>
-#include <functional>
-#include <sstream>
 
 namespace rangesim::app {
 
@@ -13,50 +11,72 @@ std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) :
 
 nlohmann::json json_num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-std::string matrix(const golden::EvalResult& ev, const std::function<std::string(const golden::EvalPoint&)>& cell) {
-  std::ostringstream o;
-  o << fmt::format("background_{}\\signal_{}", ev.background.unit, ev.signal.unit);
-  for (double s : ev.signal.values) o << fmt::format(",{:.6g}", s);
-  o << "\n";
-  for (size_t ib = 0; ib < ev.background.values.size(); ++ib) {
-    o << fmt::format("{:.6g}", ev.background.values[ib]);
-    for (size_t is = 0; is < ev.signal.values.size(); ++is) o << "," << cell(ev.at(ib, is));
-    o << "\n";
-  }
-  return o.str();
+// The text of one matrix cell: the verdict, the accuracy in mm or a metric (metric index k).
+std::string cell_text(const golden::EvalPoint& p, const std::string& cell, size_t k) {
+  if (cell == "detect") return p.detect;
+  if (cell == "accuracy_mm") return num(p.accuracy_m * 1e3);
+  return k < p.metrics.size() ? num(p.metrics[k]) : std::string();
+}
+
+std::vector<golden::EvalPoint> row_of(const golden::EvalResult& ev, size_t ib) {
+  const auto ns = static_cast<std::ptrdiff_t>(ev.signal.values.size());
+  const auto first = ev.points.begin() + static_cast<std::ptrdiff_t>(ib) * ns;
+  return std::vector<golden::EvalPoint>(first, first + ns);
+}
+
+std::string matrix(const golden::EvalResult& ev, const std::string& cell) {
+  std::string o = matrix_csv_header(ev);
+  for (size_t ib = 0; ib < ev.background.values.size(); ++ib)
+    o += matrix_csv_row(ev, ev.background.values[ib], row_of(ev, ib), cell);
+  return o;
 }
 
 }  // namespace
 
-std::string points_csv(const golden::EvalResult& ev) {
-  std::ostringstream o;
-  o << fmt::format("signal_{},background_{},detect,sbr_total_dB,sbr_ratio_dB,accuracy_m", ev.signal.unit,
-                   ev.background.unit);
-  for (const auto& m : ev.metric_names) o << "," << m;
-  o << "\n";
-  for (const auto& p : ev.points) {
-    o << fmt::format("{:.6g},{:.6g},{},{},{},{}", p.signal, p.background, p.detect, num(p.sbr_total_dB),
+std::string points_csv_header(const golden::EvalResult& ev) {
+  std::string o = fmt::format("signal_{},background_{},detect,sbr_total_dB,sbr_ratio_dB,accuracy_m", ev.signal.unit,
+                              ev.background.unit);
+  for (const auto& m : ev.metric_names) o += "," + m;
+  return o + "\n";
+}
+
+std::string points_csv_rows(const std::vector<golden::EvalPoint>& row) {
+  std::string o;
+  for (const auto& p : row) {
+    o += fmt::format("{:.6g},{:.6g},{},{},{},{}", p.signal, p.background, p.detect, num(p.sbr_total_dB),
                      num(p.sbr_ratio_dB), num(p.accuracy_m));
-    for (double m : p.metrics) o << "," << num(m);
-    o << "\n";
+    for (double m : p.metrics) o += "," + num(m);
+    o += "\n";
   }
-  return o.str();
+  return o;
 }
 
-std::string detect_matrix_csv(const golden::EvalResult& ev) {
-  return matrix(ev, [](const golden::EvalPoint& p) { return p.detect; });
+std::string matrix_csv_header(const golden::EvalResult& ev) {
+  std::string o = fmt::format("background_{}\\signal_{}", ev.background.unit, ev.signal.unit);
+  for (double s : ev.signal.values) o += fmt::format(",{:.6g}", s);
+  return o + "\n";
 }
 
-std::string accuracy_mm_matrix_csv(const golden::EvalResult& ev) {
-  return matrix(ev, [](const golden::EvalPoint& p) { return num(p.accuracy_m * 1e3); });
-}
-
-std::string metric_matrix_csv(const golden::EvalResult& ev, const std::string& metric) {
+std::string matrix_csv_row(const golden::EvalResult& ev, double background, const std::vector<golden::EvalPoint>& row,
+                           const std::string& cell) {
   size_t k = 0;
-  while (k < ev.metric_names.size() && ev.metric_names[k] != metric) ++k;
-  return matrix(ev,
-                [k](const golden::EvalPoint& p) { return k < p.metrics.size() ? num(p.metrics[k]) : std::string(); });
+  while (k < ev.metric_names.size() && ev.metric_names[k] != cell) ++k;
+  std::string o = fmt::format("{:.6g}", background);
+  for (const auto& p : row) o += "," + cell_text(p, cell, k);
+  return o + "\n";
 }
+
+std::string points_csv(const golden::EvalResult& ev) {
+  std::string o = points_csv_header(ev);
+  for (size_t ib = 0; ib < ev.background.values.size(); ++ib) o += points_csv_rows(row_of(ev, ib));
+  return o;
+}
+
+std::string detect_matrix_csv(const golden::EvalResult& ev) { return matrix(ev, "detect"); }
+
+std::string accuracy_mm_matrix_csv(const golden::EvalResult& ev) { return matrix(ev, "accuracy_mm"); }
+
+std::string metric_matrix_csv(const golden::EvalResult& ev, const std::string& metric) { return matrix(ev, metric); }
 
 nlohmann::json summary_json(const golden::EvalResult& ev, const ParamSet& params) {
   const std::string su = ev.signal.unit, bu = ev.background.unit;
@@ -69,7 +89,7 @@ nlohmann::json summary_json(const golden::EvalResult& ev, const ParamSet& params
                {"background_min_" + bu, ev.background.values.front()},
                {"background_max_" + bu, ev.background.values.back()},
                {"background_points", ev.background.values.size()}};
-  j["points_total"] = ev.points.size();
+  j["points_total"] = ev.grid_points();
   j["points_detectable"] = ev.points_detectable;
   j["signal_range_dB"] = ev.signal_range.range_dB;
   j["signal_min_" + su] = json_num(ev.signal_range.lo);
@@ -103,7 +123,7 @@ std::string summary_text(const golden::EvalResult& ev) {
       fmt::format("{} evaluation: grid {} x {} (signal {:g}-{:g} {}, background {:g}-{:g} {})\n\n", ev.sensor,
                   ev.signal.values.size(), ev.background.values.size(), ev.signal.values.front(),
                   ev.signal.values.back(), su, ev.background.values.front(), ev.background.values.back(), bu);
-  s += fmt::format("  {:<36} {} / {}\n", "detectable points", ev.points_detectable, ev.points.size());
+  s += fmt::format("  {:<36} {} / {}\n", "detectable points", ev.points_detectable, ev.grid_points());
   if (ev.points_detectable == 0)
     return s + "  nothing is detectable on this grid: detectable_area.csv gives the reason at each point\n";
   auto edge_note = [](const golden::EvalRange& r) {

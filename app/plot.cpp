@@ -30,8 +30,11 @@ double accuracy_value(const golden::EvalPoint& p, int px_index) {
 // drawn from their lower-left corner, so an extra row/column closes the last cells.
 void write_grid_data(const std::string& path, const golden::EvalResult& ev) {
   std::ofstream out(path);
-  const auto& s = ev.signal.values;
-  const auto& b = ev.background.values;
+  const std::vector<size_t> rows = plot_indices(ev.background.values.size());
+  const std::vector<size_t> columns = plot_indices(ev.signal.values.size());
+  std::vector<double> s, b;  // the axes at the cells drawn
+  for (size_t is : columns) s.push_back(ev.signal.values[is]);
+  for (size_t ib : rows) b.push_back(ev.background.values[ib]);
   auto edge = [](const std::vector<double>& a, size_t i) {
     // Geometric cell edges around log-spaced points.
     if (a.size() == 1) return i == 0 ? a[0] / 1.12 : a[0] * 1.12;
@@ -42,7 +45,7 @@ void write_grid_data(const std::string& path, const golden::EvalResult& ev) {
   const int px = metric_index(ev, "accuracy_px");
   for (size_t ib = 0; ib <= b.size(); ++ib) {
     for (size_t is = 0; is <= s.size(); ++is) {
-      const auto& p = ev.at(std::min(ib, b.size() - 1), std::min(is, s.size() - 1));
+      const auto& p = ev.at(rows[std::min(ib, b.size() - 1)], columns[std::min(is, s.size() - 1)]);
       int reason = 0;
       for (size_t r = 0; r < ev.reasons.size(); ++r)
         if (ev.reasons[r].first == p.detect) reason = static_cast<int>(r);
@@ -121,6 +124,15 @@ void write_sweep_data(const std::string& path, const golden::EvalSweep& sw) {
 }
 
 }  // namespace
+
+std::vector<size_t> plot_indices(size_t n) {
+  constexpr size_t kMaxCells = 1000;
+  std::vector<size_t> kept;
+  const size_t stride = (n + kMaxCells - 1) / kMaxCells;
+  for (size_t i = 0; i < n; i += std::max<size_t>(stride, 1)) kept.push_back(i);
+  if (n > 0 && kept.back() != n - 1) kept.push_back(n - 1);
+  return kept;
+}
 
 std::string render_plots(OutputDir& out, const golden::EvalResult& ev) {
   if (std::system("command -v gnuplot >/dev/null 2>&1") != 0)

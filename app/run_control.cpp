@@ -8,6 +8,7 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <fstream>
 #include <limits>
 #include <mutex>
 #include <sys/syscall.h>
@@ -42,6 +43,7 @@ std::atomic<bool> g_ending{false};  // the run is being ended: only one thread d
 std::mutex g_reason_mutex;
 std::string g_budget_reason;  // what ran out (under g_reason_mutex)
 RunBudget g_budget;
+std::uint64_t g_memory_limit = 0;  // --max-memory, or 90% of the memory available at the start
 std::string g_command_line = "rangesim";
 
 void write_all(const char* text) {
@@ -145,13 +147,18 @@ void watch_budget() {
   for (;;) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
     const double t = seconds_since_start();
-    if (g_budget.max_memory_bytes > 0) {
+    if (g_memory_limit > 0) {
       const std::uint64_t rss = resident_bytes();
-      if (rss > g_budget.max_memory_bytes)
+      if (rss > g_memory_limit) {
+        const std::string limit = g_budget.max_memory_bytes > 0
+                                      ? fmt::format("--max-memory {}", g_budget.max_memory_text)
+                                      : fmt::format("90% of the memory available at the start ({}; --max-memory)",
+                                                    bytes_text(static_cast<double>(g_memory_limit)));
         budget_ran_out(
-            fmt::format("--max-memory {} exceeded: {} resident after {:.1f} s; raise it or reduce the "
-                        "work (grid points, trials, variants, frames)",
-                        g_budget.max_memory_text, bytes_text(static_cast<double>(rss)), t));
+            fmt::format("{} exceeded: {} resident after {:.1f} s; reduce the work (grid points, trials, "
+                        "variants, frames, pixels)",
+                        limit, bytes_text(static_cast<double>(rss)), t));
+      }
     }
     if (g_budget.max_seconds > 0 && t > g_budget.max_seconds && g_guards.load() == 0)
       budget_ran_out(
@@ -168,7 +175,12 @@ void install_stop_handlers() {
   sa.sa_handler = on_stop_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART;
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &sa, nullptr);
+  // A signal the caller ignores stays ignored (nohup, a background job of a script).
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction old {};
+    if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    ::sigaction(sig, &sa, nullptr);
+  }
 }
 
 int register_cleanup(const std::string& path, bool tree) {
@@ -221,16 +233,33 @@ std::string stop_reason() {
 
 void start_budget(const RunBudget& budget) {
   g_budget = budget;
-  if (budget.max_seconds > 0 || budget.max_memory_bytes > 0) std::thread(watch_budget).detach();
+  g_memory_limit = budget.max_memory_bytes;
+  if (g_memory_limit == 0) g_memory_limit = available_memory_bytes() / 10 * 9;
+  if (budget.max_seconds > 0 || g_memory_limit > 0) std::thread(watch_budget).detach();
 }
 
 const RunBudget& run_budget() { return g_budget; }
+
+void end_run_over_budget(const std::string& message) {
+  static std::string text;
+  text = "\nrangesim: " + message + "; temporary files removed, nothing written\n";
+  end_now(kExitBudget, text.c_str());
+}
 
 double seconds_since_start() { return std::chrono::duration<double>(Clock::now() - g_start).count(); }
 
 double time_budget_left() {
   if (g_budget.max_seconds <= 0) return std::numeric_limits<double>::infinity();
   return g_budget.max_seconds - seconds_since_start();
+}
+
+std::uint64_t available_memory_bytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string key, unit;
+  std::uint64_t kib = 0;
+  while (in >> key >> kib >> unit)
+    if (key == "MemAvailable:") return kib * 1024;
+  return 0;
 }
 
 std::uint64_t resident_bytes() {

@@ -19,7 +19,8 @@ namespace rangesim::app {
 
 inline constexpr int kExitBudget = 4;  // --max-seconds or --max-memory ran out
 
-// Installs the handlers of SIGINT, SIGTERM and SIGHUP (main(), once).
+// Installs the handlers of SIGINT, SIGTERM and SIGHUP (main(), once); a signal ignored by the
+// caller (nohup) stays ignored.
 void install_stop_handlers();
 
 // Paths removed when a run is ended at once; `tree` removes a folder with its contents, otherwise
@@ -49,19 +50,25 @@ int stop_exit_code();       // 128 + signal, or kExitBudget
 std::string stop_reason();  // "interrupted (SIGINT, Ctrl-C)", "--max-memory 1G exceeded (...)", ...
 
 // The budgets of this run, counted from the start of the process. The memory budget is watched
-// for every run (resident size, every 0.1 s); the time budget only ends runs outside a StopGuard:
-// a guarded sweep checks time_budget_left() between its points itself.
+// for every run (resident size, every 0.1 s; without --max-memory, 90% of the memory available at
+// the start, so a run that would be killed for memory ends with a message instead); the time
+// budget only ends runs outside a StopGuard: a guarded sweep checks time_budget_left() between its
+// points itself.
 struct RunBudget {
   double max_seconds = 0;                         // 0: none
   std::uint64_t max_memory_bytes = 0;             // 0: none
   std::string max_seconds_text, max_memory_text;  // as given, for messages
 };
 void start_budget(const RunBudget& budget);
+// Ends the run now as a budget that ran out does (cleanup, `message`, kExitBudget): for a run whose
+// pace shows it cannot finish within --max-seconds.
+[[noreturn]] void end_run_over_budget(const std::string& message);
 const RunBudget& run_budget();
 double seconds_since_start();
 double time_budget_left();  // seconds; +inf without a time budget
 std::uint64_t resident_bytes();
-std::string bytes_text(double bytes);  // "1.5 GiB"
+std::uint64_t available_memory_bytes();  // MemAvailable of /proc/meminfo (0 when unknown)
+std::string bytes_text(double bytes);    // "1.5 GiB"
 
 // The command line of this run (main()), for lock files and messages.
 void set_command_line(int argc, const char* const* argv);

@@ -126,6 +126,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   mc::McSweepOptions sopt = mc::sweep_options(opt);
   const std::unique_ptr<mc::McModel> model = mc::with_stuck_point_hook(rangesim::mc::make_mc_model(params), sopt.seed);
   const std::string dir = opt.out.empty() ? "rangesim-out/" + params.sensor_id() : opt.out;
+  check_resources("evaluate --trials", evaluate_estimate(params, true), dir);
   // Every rank checks --out; rank 0 holds its lock and commits.
   OutputDir out(dir, "--out", {"evaluate", opt.force, world.rank == 0});
   const std::string journal_dir = (std::filesystem::path(dir) / ".staging-sweep").string();

@@ -14,6 +14,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/evaluate_params.h"
 #include "app/mpi_world.h"
 #include "app/sweep/sweep_output.h"
 #include "app/sweep/sweep_spec.h"
@@ -199,6 +200,12 @@ int run_sweep(const SweepOptions& opt) {
     shard = {world.rank + 1, world.size};
   }
   const std::string dir = opt.out.empty() ? "rangesim-out/sweep/" + base.sensor_id() : opt.out;
+  ResourceEstimate estimate = evaluate_estimate(base, h.checks.trials > 0);
+  estimate.memory_bytes += static_cast<double>(vars.size()) * 2048;  // the rows, their JSON and the journal index
+  estimate.disk_bytes = static_cast<double>(vars.size()) * 1024;
+  estimate.what = fmt::format("{} variants of ~2 KiB, each evaluating {}", vars.size(), estimate.what);
+  estimate.reduce = "--vary (fewer values), or " + estimate.reduce;
+  if (world.rank == 0) check_resources("sweep", estimate, dir);
   std::unique_ptr<OutputDir> out;  // rank 0 writes; the other ranks only journal their share
   // A shard's file is not the sweep's output: shards into one folder are refused, not replaced.
   const std::string kind =

@@ -46,6 +46,19 @@ EvalResult evaluate_sensor(const ParamSet& params, ProgressFn progress) {
   return model_of(params).evaluate(params, progress);
 }
 
+EvalResult evaluate_sensor_streamed(const ParamSet& params, EvalSink& sink, ProgressFn progress) {
+  const GoldenModel& m = model_of(params);
+  if (m.evaluate_streamed) return m.evaluate_streamed(params, progress, sink);
+  EvalResult r = m.evaluate(params, progress);
+  sink.begin(r);
+  const std::size_t ns = r.signal.values.size();
+  for (std::size_t ib = 0; ib < r.background.values.size(); ++ib)
+    sink.row(ib, std::vector<EvalPoint>(r.points.begin() + static_cast<std::ptrdiff_t>(ib * ns),
+                                        r.points.begin() + static_cast<std::ptrdiff_t>((ib + 1) * ns)));
+  r.points.clear();
+  return r;
+}
+
 std::vector<PublishedFigure> published_figures(const ParamSet& params) {
   return model_of(params).published_figures(params);
 }

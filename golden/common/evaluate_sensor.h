@@ -25,6 +25,10 @@ struct GoldenModel {
   std::vector<PublishedFigure> (*published_figures)(const ParamSet& params);  // with rangesim's values
   FrameTiming (*frame_timing)(const ParamSet& params);  // the clock schedule (`rangesim frame-rate`)
   const ThesisColumn* table_column = nullptr;           // the sensor's column of thesis Table 5.1, if it has one
+  // The same evaluation handing each background row to the sink instead of keeping it, so memory
+  // stays bounded for any grid (golden/common/grid_scan.h); nullptr: evaluate_sensor_streamed
+  // feeds the sink from `evaluate`.
+  EvalResult (*evaluate_streamed)(const ParamSet& params, ProgressFn progress, EvalSink& sink) = nullptr;
 };
 
 // The model of a sensor id, nullptr when it has none.
@@ -34,6 +38,8 @@ void register_golden_model(const GoldenModel& model);
 
 // The preset's sensor's model; each throws std::logic_error for a sensor without one.
 EvalResult evaluate_sensor(const ParamSet& params, ProgressFn progress = nullptr);
+// The evaluation with its points handed to `sink` row by row (EvalResult::points stays empty).
+EvalResult evaluate_sensor_streamed(const ParamSet& params, EvalSink& sink, ProgressFn progress = nullptr);
 std::vector<PublishedFigure> published_figures(const ParamSet& params);
 FrameTiming frame_timing_for(const ParamSet& params);
 

@@ -15,17 +15,25 @@ void widen(double v, double& lo, double& hi) {
 
 }  // namespace
 
+void PointSummary::add(const EvalPoint& p) {
+  if (p.detect != "detectable") return;
+  ++detectable_;
+  widen(p.sbr_total_dB, sbr_min_, sbr_max_);
+  widen(p.sbr_ratio_dB, ratio_min_, ratio_max_);
+  widen(p.accuracy_m, acc_min_, acc_max_);
+}
+
+void PointSummary::into(EvalResult& r) const {
+  r.points_detectable = detectable_;
+  r.sbr_min_dB = sbr_min_, r.sbr_max_dB = sbr_max_;
+  r.sbr_ratio_min_dB = ratio_min_, r.sbr_ratio_max_dB = ratio_max_;
+  r.accuracy_min_m = acc_min_, r.accuracy_max_m = acc_max_;
+}
+
 void summarise_points(EvalResult& r) {
-  r.points_detectable = 0;
-  r.sbr_min_dB = r.sbr_max_dB = r.sbr_ratio_min_dB = r.sbr_ratio_max_dB = kNaN;
-  r.accuracy_min_m = r.accuracy_max_m = kNaN;
-  for (const auto& p : r.points) {
-    if (p.detect != "detectable") continue;
-    ++r.points_detectable;
-    widen(p.sbr_total_dB, r.sbr_min_dB, r.sbr_max_dB);
-    widen(p.sbr_ratio_dB, r.sbr_ratio_min_dB, r.sbr_ratio_max_dB);
-    widen(p.accuracy_m, r.accuracy_min_m, r.accuracy_max_m);
-  }
+  PointSummary s;
+  for (const auto& p : r.points) s.add(p);
+  s.into(r);
 }
 
 std::vector<double> log_spaced(double lo, double hi, int n) {

@@ -80,10 +80,41 @@ struct EvalResult {
   std::vector<EvalSweep> sweeps;
 
   const EvalPoint& at(size_t ib, size_t is) const { return points[ib * signal.values.size() + is]; }
+  // Points of the grid, also when they were streamed (EvalSink) and `points` is empty.
+  size_t grid_points() const { return signal.values.size() * background.values.size(); }
 };
 
-// Fills the summary fields (points_detectable, sbr/accuracy min/max) from the points; the
+// Where a streamed evaluation puts its points (golden/common/grid_scan.h): each background row in
+// order, handed over and then dropped.
+class EvalSink {
+ public:
+  virtual ~EvalSink() = default;
+  // Before the first row; the axes, reasons and metric names of `r` are set.
+  virtual void begin(const EvalResult& r) = 0;
+  // Background row `ib`, its points in signal order.
+  virtual void row(size_t ib, const std::vector<EvalPoint>& points) = 0;
+};
+
+// For a caller that needs only the summary and the ranges (sweep, table): the points go nowhere.
+class DiscardPoints : public EvalSink {
+ public:
+  void begin(const EvalResult&) override {}
+  void row(size_t, const std::vector<EvalPoint>&) override {}
+};
+
+// The summary fields (points_detectable, sbr/accuracy min/max) accumulated point by point; the
 // ranges are the sensor model's job (exact edges, not snapped to the grid).
+class PointSummary {
+ public:
+  void add(const EvalPoint& p);
+  void into(EvalResult& r) const;
+
+ private:
+  int detectable_ = 0;
+  double sbr_min_ = kNaN, sbr_max_ = kNaN, ratio_min_ = kNaN, ratio_max_ = kNaN, acc_min_ = kNaN, acc_max_ = kNaN;
+};
+
+// Fills the summary fields from r.points (PointSummary over all of them).
 void summarise_points(EvalResult& r);
 
 // Log-spaced axis from lo to hi with n points (n = 1 gives {lo}).

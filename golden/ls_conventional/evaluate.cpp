@@ -1,9 +1,12 @@
 // ls-conventional's evaluation (golden/ls_conventional/evaluation.h) as a sensor-independent
 // EvalResult, plus its published figures.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/ls_conventional/config.h"
 #include "golden/common/evaluate_sensor.h"
+#include "golden/common/grid_scan.h"
 #include "golden/ls_conventional/frame_timing.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "golden/ls_conventional/multisampling.h"
@@ -37,25 +40,25 @@ double mean_resolution_px(LsConventionalConfig cfg, int samplings, double backgr
   return sum / M;
 }
 
-}  // namespace
-
-EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress) {
+// The grid kept (sink == nullptr) or streamed; everything else is the same. The summary is the
+// one evaluate() (evaluation.h) makes, accumulated as the points go by.
+EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* sink) {
   const LsConventionalConfig cfg = ls_conventional_from_params(params);
-  const Evaluation ev = evaluate(cfg, progress);
   const FrameTiming t = frame_timing(cfg.timing, cfg.multisampling.samplings);
+  const auto& grid = cfg.grid;
 
   EvalResult r;
   r.sensor = params.sensor_id();
-  r.signal = {"signal", "V", ev.signal_V};
-  r.background = {"background", "V", ev.background_V};
+  r.signal = {"signal", "V", log_axis(grid.signal_min_V, grid.signal_max_V, grid.signal_points)};
+  r.background = {"background", "V", log_axis(grid.background_min_V, grid.background_max_V, grid.background_points)};
   r.reasons = {{"detectable", "range can be derived"},
                {"below_threshold", "signal + background at the spot peak stays below V_cmp"},
                {"saturated", "V_sig + V_bg > V_sat: activated, accuracy not controlled"},
                {"background_activation", "background alone activates pixels of the row"}};
   r.metric_names = {"accuracy_px",    "quantisation_rms_px", "resolution_px",
                     "worst_error_px", "noise_std_px",        "p_detect"};
-  r.points.reserve(ev.points.size());
-  for (const auto& p : ev.points) {
+  const auto point = [&](size_t ib, size_t is) {
+    const OperatingPoint p = evaluate_point(cfg, r.signal.values[is], r.background.values[ib]);
     EvalPoint q;
     q.signal = p.signal_V;
     q.background = p.background_V;
@@ -66,14 +69,28 @@ EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress)
     q.accuracy_m = ok ? p.accuracy_m : kNaN;
     q.metrics = ok ? std::vector<double>{p.accuracy_px,    p.quantisation_rms_px, p.resolution_px,
                                          p.worst_error_px, p.noise_std_px,        p.p_detect}
-                   : std::vector<double>(r.metric_names.size(), kNaN);
-    r.points.push_back(std::move(q));
-  }
-  summarise_points(r);
-  r.signal_range = to_range(ev.summary.signal, ev.background_V.front());
-  r.background_range = to_range(ev.summary.background, ev.signal_V.back());
+                   : std::vector<double>(6, kNaN);
+    return q;
+  };
+  EvaluationSummary s;
+  double acc_lo = std::numeric_limits<double>::infinity(), acc_hi = -acc_lo;
+  const auto observe = [&](const EvalPoint& q) {
+    if (q.detect != "detectable") return;
+    ++s.points_detectable;
+    acc_lo = std::min(acc_lo, q.metrics[0]);
+    acc_hi = std::max(acc_hi, q.metrics[0]);
+  };
+  // Points are independent: the rows share the cores, the grid is the same for any thread count.
+  scan_grid(r, point, progress, sink, true, observe);
+  s.samplings = cfg.multisampling.samplings;
+  s.adc_bits = cfg.comparator.adc_bits;
+  s.range_per_px_m = range_per_px_m(cfg.optics, cfg.pixel.pitch_m, cfg.optics.distance_m);
+  s.signal = signal_dynamic_range(cfg, r.background.values.front(), grid.signal_min_V, grid.signal_max_V);
+  s.background = background_dynamic_range(cfg, r.signal.values.back(), grid.background_min_V, grid.background_max_V);
+  if (s.points_detectable > 0) s.accuracy_min_px = acc_lo, s.accuracy_max_px = acc_hi;
+  r.signal_range = to_range(s.signal, r.background.values.front());
+  r.background_range = to_range(s.background, r.signal.values.back());
   r.distance_m = cfg.optics.distance_m;
-  const auto& s = ev.summary;
   r.summary_extra = {{"samplings", s.samplings},
                      {"adc_bits", s.adc_bits},
                      {"accuracy_min_px", s.accuracy_min_px},
@@ -97,12 +114,22 @@ EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress)
     EvalSeries res{"resolution (mean over detectable signals)", {}, {}};
     for (int n = 1; n <= 8; ++n) {
       res.x.push_back(n);
-      res.y.push_back(mean_resolution_px(cfg, n, ev.background_V.front(), s.signal.lo_V * 1.0001, s.signal.hi_V));
+      res.y.push_back(mean_resolution_px(cfg, n, r.background.values.front(), s.signal.lo_V * 1.0001, s.signal.hi_V));
     }
     sw.series.push_back(std::move(res));
     r.sweeps.push_back(std::move(sw));
   }
   return r;
+}
+
+}  // namespace
+
+EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress) {
+  return evaluate_grid(params, progress, nullptr);
+}
+
+EvalResult evaluate_ls_conventional_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink) {
+  return evaluate_grid(params, progress, &sink);
 }
 
 std::vector<PublishedFigure> published_figures_ls_conventional(const ParamSet& params) {

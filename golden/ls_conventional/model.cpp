@@ -3,8 +3,12 @@
 namespace rangesim::golden {
 
 const GoldenModel& ls_conventional_golden_model() {
-  static const GoldenModel model{"ls-conventional", &evaluate_ls_conventional, &published_figures_ls_conventional,
-                                 &frame_timing_ls_conventional, &ls_conventional_table_column()};
+  static const GoldenModel model{"ls-conventional",
+                                 &evaluate_ls_conventional,
+                                 &published_figures_ls_conventional,
+                                 &frame_timing_ls_conventional,
+                                 &ls_conventional_table_column(),
+                                 &evaluate_ls_conventional_streamed};
   return model;
 }
 

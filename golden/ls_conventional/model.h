@@ -8,6 +8,7 @@
 namespace rangesim::golden {
 
 EvalResult evaluate_ls_conventional(const ParamSet& params, ProgressFn progress);
+EvalResult evaluate_ls_conventional_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink);
 std::vector<PublishedFigure> published_figures_ls_conventional(const ParamSet& params);
 FrameTiming frame_timing_ls_conventional(const ParamSet& params);
 const ThesisColumn& ls_conventional_table_column();

@@ -1,12 +1,10 @@
 // ls-demodulation's evaluation over the signal x background grid as an EvalResult, its sweeps
 // (thesis Fig. 3.6, 3.8, 3.9, selectivity, step settling) and its published figures.
-#include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 #include "core/ls_demodulation/config.h"
 #include "golden/common/evaluate_sensor.h"
+#include "golden/common/grid_scan.h"
 #include "golden/ls_demodulation/evaluation.h"
 #include "golden/ls_demodulation/published.h"
 #include "golden/ls_demodulation/selectivity.h"
@@ -40,33 +38,8 @@ EvalPoint to_eval_point(const DemodPoint& p, size_t n_metrics) {
   return q;
 }
 
-// Evaluates f(i) for i < n over the cores; results depend only on i (thread-count independent).
-template <class F>
-void parallel_for(int n, F f, ProgressFn progress, int unit) {
-  std::atomic<int> next{0}, done{0};
-  auto work = [&](bool report) {
-    for (int i; (i = next.fetch_add(1)) < n;) {
-      f(i);
-      const int d = done.fetch_add(1) + 1;
-      if (report && progress) progress(d * unit, n * unit);
-    }
-  };
-  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<unsigned>(hw, static_cast<unsigned>(n)); ++t) pool.emplace_back(work, false);
-  try {
-    work(true);
-  } catch (...) {  // the progress callback cancelled the run: hand out nothing more, join, pass it on
-    next.store(n);
-    for (auto& t : pool) t.join();
-    throw;
-  }
-  for (auto& t : pool) t.join();
-}
-
-}  // namespace
-
-EvalResult evaluate_ls_demodulation(const ParamSet& params, ProgressFn progress) {
+// The grid kept (sink == nullptr) or streamed; everything else is the same.
+EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* sink) {
   const LsDemodulationConfig cfg = ls_demodulation_from_params(params);
   const auto& g = cfg.grid;
   EvalResult r;
@@ -82,18 +55,14 @@ EvalResult evaluate_ls_demodulation(const ParamSet& params, ProgressFn progress)
   r.metric_names = {"peak_output_V",    "background_output_V", "row_false_activation", "accuracy_px",
                     "bias_rms_px",      "noise_std_px",        "worst_error_px",       "p_detect",
                     "detected_fraction"};
-  const int ns = static_cast<int>(r.signal.values.size()), nb = static_cast<int>(r.background.values.size());
-  r.points.assign(static_cast<size_t>(ns) * nb, EvalPoint{});
-  parallel_for(
-      nb,
-      [&](int ib) {
-        for (int is = 0; is < ns; ++is)
-          r.points[static_cast<size_t>(ib) * ns + is] = to_eval_point(
-              evaluate_demod_point(cfg, r.signal.values[is], r.background.values[ib]), r.metric_names.size());
+  const size_t n_metrics = r.metric_names.size();
+  // Points are independent: the rows share the cores, the grid is the same for any thread count.
+  scan_grid(
+      r,
+      [&](size_t ib, size_t is) {
+        return to_eval_point(evaluate_demod_point(cfg, r.signal.values[is], r.background.values[ib]), n_metrics);
       },
-      progress, ns);
-  if (progress) progress(nb * ns, nb * ns);
-  summarise_points(r);
+      progress, sink, true);
   r.signal_range = demod_signal_range(cfg, r.background.values.front(), r.signal.values);
   r.background_range = demod_background_range(cfg, r.signal.values.back(), r.background.values);
   r.distance_m = cfg.optics.distance_m;
@@ -108,6 +77,16 @@ EvalResult evaluate_ls_demodulation(const ParamSet& params, ProgressFn progress)
                      {"lpf_settling_1pct_s", step_settling_time_s(cfg, 0.01)}};
   r.sweeps = demod_sweeps(cfg);
   return r;
+}
+
+}  // namespace
+
+EvalResult evaluate_ls_demodulation(const ParamSet& params, ProgressFn progress) {
+  return evaluate_grid(params, progress, nullptr);
+}
+
+EvalResult evaluate_ls_demodulation_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink) {
+  return evaluate_grid(params, progress, &sink);
 }
 
 std::vector<PublishedFigure> published_figures_ls_demodulation(const ParamSet& params) {

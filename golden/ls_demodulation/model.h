@@ -8,6 +8,7 @@
 namespace rangesim::golden {
 
 EvalResult evaluate_ls_demodulation(const ParamSet& params, ProgressFn progress);
+EvalResult evaluate_ls_demodulation_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink);
 std::vector<PublishedFigure> published_figures_ls_demodulation(const ParamSet& params);
 FrameTiming frame_timing_ls_demodulation(const ParamSet& params);
 const ThesisColumn& ls_demodulation_table_column();

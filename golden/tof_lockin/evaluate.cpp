@@ -5,6 +5,7 @@
 
 #include "core/tof_lockin/config.h"
 #include "golden/common/evaluate_sensor.h"
+#include "golden/common/grid_scan.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_lockin/lockin_sweeps.h"
 #include "golden/tof_lockin/pulse_timing.h"
@@ -54,9 +55,8 @@ double readout_time_s(const TofLockinConfig& cfg) {
          cfg.readout.clock_Hz;
 }
 
-}  // namespace
-
-EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
+// The grid kept (sink == nullptr) or streamed; everything else is the same.
+EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* sink) {
   const TofLockinConfig cfg = tof_lockin_from_params(params);
   const auto& e = cfg.eval;
   EvalResult r;
@@ -71,35 +71,32 @@ EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
   r.metric_names = {"std_m", "bias_m", "v1_V", "v2_V", "signal_V", "n1_e", "n2_e", "snr", "std_first_order_m"};
   const auto& sig = r.signal.values;
   const auto& bg = r.background.values;
-  r.points.reserve(sig.size() * bg.size());
-  for (size_t ib = 0; ib < bg.size(); ++ib) {
-    for (size_t is = 0; is < sig.size(); ++is) {
-      const LockinPoint p = evaluate_point(cfg, sig[is], bg[ib], e.distance_m, e.frames_averaged);
-      EvalPoint q;
-      q.signal = sig[is];
-      q.background = bg[ib];
-      q.detect = to_string(p.detect);
-      // SBR' on photocurrents: signal V1 + V2 over the background of one tap integrate over the
-      // same open time N T0, so the current ratio is the voltage ratio of eq. 3.11 / 4.11.
-      q.sbr_total_dB = 20.0 * std::log10((sig[is] + bg[ib]) / bg[ib]);
-      q.sbr_ratio_dB = 20.0 * std::log10(sig[is] / bg[ib]);
-      const bool ok = p.detect == LockinDetect::Detectable;
-      q.accuracy_m = ok ? p.accuracy_m : kNaN;
-      q.metrics =
-          ok ? std::vector<double>{p.std_m, p.bias_m, p.v1_V, p.v2_V, p.signal_V, p.n1_e, p.n2_e, p.snr, p.std_first_m}
-             : std::vector<double>(r.metric_names.size(), kNaN);
-      r.points.push_back(std::move(q));
-    }
-    if (progress) progress(static_cast<int>((ib + 1) * sig.size()), static_cast<int>(bg.size() * sig.size()));
-  }
-  summarise_points(r);
+  const size_t n_metrics = r.metric_names.size();
+  const auto point = [&](size_t ib, size_t is) {
+    const LockinPoint p = evaluate_point(cfg, sig[is], bg[ib], e.distance_m, e.frames_averaged);
+    EvalPoint q;
+    q.signal = sig[is];
+    q.background = bg[ib];
+    q.detect = to_string(p.detect);
+    // SBR' on photocurrents: signal V1 + V2 over the background of one tap integrate over the
+    // same open time N T0, so the current ratio is the voltage ratio of eq. 3.11 / 4.11.
+    q.sbr_total_dB = 20.0 * std::log10((sig[is] + bg[ib]) / bg[ib]);
+    q.sbr_ratio_dB = 20.0 * std::log10(sig[is] / bg[ib]);
+    const bool ok = p.detect == LockinDetect::Detectable;
+    q.accuracy_m = ok ? p.accuracy_m : kNaN;
+    q.metrics =
+        ok ? std::vector<double>{p.std_m, p.bias_m, p.v1_V, p.v2_V, p.signal_V, p.n1_e, p.n2_e, p.snr, p.std_first_m}
+           : std::vector<double>(n_metrics, kNaN);
+    return q;
+  };
+  // evaluate_point is a function of its arguments alone: the rows can share the cores.
+  const GridScan g = scan_grid(r, point, progress, sink, true);
 
   // Signal range at the lowest background, background range at the highest signal.
-  std::vector<bool> ok_sig(sig.size()), ok_bg(bg.size());
-  for (size_t is = 0; is < sig.size(); ++is) ok_sig[is] = r.at(0, is).detect == "detectable";
-  for (size_t ib = 0; ib < bg.size(); ++ib) ok_bg[ib] = r.at(ib, sig.size() - 1).detect == "detectable";
-  r.signal_range = axis_range(sig, ok_sig, bg.front(), [&](double s) { return detectable(cfg, s, bg.front()); });
-  r.background_range = axis_range(bg, ok_bg, sig.back(), [&](double b) { return detectable(cfg, sig.back(), b); });
+  r.signal_range =
+      axis_range(sig, g.first_row_detectable, bg.front(), [&](double s) { return detectable(cfg, s, bg.front()); });
+  r.background_range =
+      axis_range(bg, g.last_column_detectable, sig.back(), [&](double b) { return detectable(cfg, sig.back(), b); });
   r.distance_m = e.distance_m;
 
   const double frame_s = cfg.gates.accumulations_per_frame * repetition_period_s(cfg.source) + readout_time_s(cfg);
@@ -115,6 +112,16 @@ EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
                      {"signal_V_at_signal_max", evaluate_point(cfg, sig.back(), 0.0, e.distance_m, 1).signal_V}};
   r.sweeps = lockin_sweeps(cfg, sig, bg);
   return r;
+}
+
+}  // namespace
+
+EvalResult evaluate_tof_lockin(const ParamSet& params, ProgressFn progress) {
+  return evaluate_grid(params, progress, nullptr);
+}
+
+EvalResult evaluate_tof_lockin_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink) {
+  return evaluate_grid(params, progress, &sink);
 }
 
 }  // namespace rangesim::golden

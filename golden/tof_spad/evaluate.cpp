@@ -2,8 +2,10 @@
 // ways, accuracy at evaluation.distance_m, exact range edges, and the sweeps the issue asks for.
 #include "golden/tof_spad/evaluate.h"
 
+#include <atomic>
 #include <cmath>
 
+#include "golden/common/grid_scan.h"
 #include "golden/tof_spad/point_model.h"
 #include "golden/tof_spad/ranges.h"
 #include "golden/tof_spad/model.h"
@@ -85,7 +87,7 @@ EvalSweep distance_sweep(const SpadModel& m) {
 
 }  // namespace
 
-EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress) {
+EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress, EvalSink* sink) {
   const SpadModel model(cfg);
   const auto& e = cfg.evaluation;
   EvalResult r;
@@ -96,27 +98,21 @@ EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress) {
   r.metric_names = metric_names();
   const auto& sig = r.signal.values;
   const auto& bg = r.background.values;
-  r.points.reserve(sig.size() * bg.size());
-  int not_converged = 0;
-  for (size_t ib = 0; ib < bg.size(); ++ib) {
-    for (double s : sig) {
-      const PointResult p = model.evaluate(s, bg[ib], e.distance_m);
-      not_converged += !p.chain_converged;
-      r.points.push_back(to_point(p, s, bg[ib]));
-    }
-    if (progress) progress(static_cast<int>((ib + 1) * sig.size()), static_cast<int>(bg.size() * sig.size()));
-  }
-  summarise_points(r);
+  std::atomic<int> not_converged{0};
+  const auto point = [&](size_t ib, size_t is) {
+    const PointResult p = model.evaluate(sig[is], bg[ib], e.distance_m);
+    not_converged += !p.chain_converged;
+    return to_point(p, sig[is], bg[ib]);
+  };
+  // SpadModel::evaluate is const and keeps no state: the rows can share the cores.
+  const GridScan g = scan_grid(r, point, progress, sink, true);
   r.distance_m = e.distance_m;
 
   auto detectable = [&](double s, double b) { return model.evaluate(s, b, e.distance_m).detect == "detectable"; };
-  std::vector<bool> row(sig.size()), col(bg.size());
-  for (size_t is = 0; is < sig.size(); ++is) row[is] = r.at(0, is).detect == "detectable";
-  for (size_t ib = 0; ib < bg.size(); ++ib) col[ib] = r.at(ib, sig.size() - 1).detect == "detectable";
   r.signal_range = detectable_range(
-      sig, row, [&](double s) { return detectable(s, bg.front()); }, bg.front());
+      sig, g.first_row_detectable, [&](double s) { return detectable(s, bg.front()); }, bg.front());
   r.background_range = detectable_range(
-      bg, col, [&](double b) { return detectable(sig.back(), b); }, sig.back());
+      bg, g.last_column_detectable, [&](double b) { return detectable(sig.back(), b); }, sig.back());
 
   const PointResult ref = model.evaluate(e.reference_signal_Hz, e.reference_background_Hz, e.distance_m);
   r.summary_extra = {{"tdc_lsb_s", model.bins().lsb_s},
@@ -128,7 +124,7 @@ EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress) {
                      {"afterpulse_armed_fraction_max", afterpulse_armed_fraction(cfg)},
                      {"reference_accuracy_m", ref.accuracy_m},
                      {"reference_std_m", ref.std_m},
-                     {"chain_not_converged_points", not_converged}};
+                     {"chain_not_converged_points", not_converged.load()}};
   r.sweeps.push_back(coates_sweep(model, bg));
   r.sweeps.push_back(distance_sweep(model));
   return r;
@@ -138,6 +134,12 @@ EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress) {
 
 EvalResult evaluate_tof_spad(const ParamSet& params, ProgressFn progress) {
   EvalResult r = spad::evaluate_grid(tof_spad_from_params(params), progress);
+  r.sensor = params.sensor_id();
+  return r;
+}
+
+EvalResult evaluate_tof_spad_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink) {
+  EvalResult r = spad::evaluate_grid(tof_spad_from_params(params), progress, &sink);
   r.sensor = params.sensor_id();
   return r;
 }

@@ -8,7 +8,8 @@
 
 namespace rangesim::golden::spad {
 
-EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress = nullptr);
+// The grid's points are kept in EvalResult::points, or handed to `sink` row by row.
+EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress = nullptr, EvalSink* sink = nullptr);
 std::vector<PublishedFigure> published_figures(const TofSpadConfig& cfg);
 
 // Metric names of EvalPoint::metrics, in order.

@@ -8,6 +8,7 @@
 namespace rangesim::golden {
 
 EvalResult evaluate_tof_spad(const ParamSet& params, ProgressFn progress);
+EvalResult evaluate_tof_spad_streamed(const ParamSet& params, ProgressFn progress, EvalSink& sink);
 std::vector<PublishedFigure> published_figures_tof_spad(const ParamSet& params);
 FrameTiming frame_timing_tof_spad(const ParamSet& params);
 const ThesisColumn& tof_spad_table_column();

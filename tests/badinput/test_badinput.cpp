@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <toml++/toml.h>
 
 #include "run_command.h"
@@ -22,6 +23,9 @@ struct Case {
   std::vector<std::string> insert;   // section, line
   std::optional<std::string> text;   // whole file
   std::string make_file;             // a regular file to create in {tmp}
+  std::string make_dir;              // a directory to create in {tmp}
+  std::string make_fifo;             // a FIFO (named pipe) to create in {tmp}
+  std::string make_loop;             // a symbolic link to itself to create in {tmp}
   std::string args;
   std::vector<std::string> fragments;
 };
@@ -46,6 +50,9 @@ std::vector<Case> load_cases() {
     c.insert = strings(t, "insert");
     if (auto s = t["text"].value<std::string>()) c.text = *s;
     c.make_file = t["make_file"].value_or(std::string());
+    c.make_dir = t["make_dir"].value_or(std::string());
+    c.make_fifo = t["make_fifo"].value_or(std::string());
+    c.make_loop = t["make_loop"].value_or(std::string());
     c.args = t["args"].value_or(std::string());
     c.fragments = strings(t, "stderr");
     cases.push_back(c);
@@ -117,6 +124,11 @@ TEST_P(BadInput, ExitsWithCode2AndAClearMessageAndWritesNothing) {
       {"{file}", file}, {"{out}", out}, {"{tmp}", tmp}, {"{presets}", RANGESIM_PRESET_SOURCE_DIR}};
   if (!c.preset.empty() || c.text) std::ofstream(file, std::ios::binary) << edited_preset(c);
   if (!c.make_file.empty()) std::ofstream(tmp + "/" + c.make_file) << "not a directory\n";
+  if (!c.make_dir.empty()) fs::create_directory(tmp + "/" + c.make_dir);
+  if (!c.make_fifo.empty()) {
+    ASSERT_EQ(::mkfifo((tmp + "/" + c.make_fifo).c_str(), 0644), 0);
+  }
+  if (!c.make_loop.empty()) fs::create_symlink(c.make_loop, tmp + "/" + c.make_loop);
   const std::string args = substitute(c.args, vars);
 
   const CommandResult r =
@@ -131,8 +143,15 @@ TEST_P(BadInput, ExitsWithCode2AndAClearMessageAndWritesNothing) {
   }
   // Nothing written: the --out directory is absent or empty (no staging folder left either).
   EXPECT_FALSE(fs::exists(out) && !fs::is_empty(out)) << out << " has files";
-  for (const auto& e : fs::directory_iterator(tmp))
-    EXPECT_TRUE(e.path() == file || e.path().filename() == c.make_file) << "left behind: " << e.path();
+  for (const auto& e : fs::directory_iterator(tmp)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(e.path() == file || name == c.make_file || name == c.make_dir || name == c.make_fifo ||
+                name == c.make_loop)
+        << "left behind: " << e.path();
+  }
+  if (!c.make_dir.empty()) {
+    EXPECT_TRUE(fs::is_empty(tmp + "/" + c.make_dir)) << "written into " << c.make_dir;
+  }
   fs::remove_all(tmp);
 }
 

@@ -7,16 +7,12 @@
 #include <stdexcept>
 #include <sys/wait.h>
 
-namespace {
-
-std::string slurp(const std::string& path) {
+std::string read_text_file(const std::string& path) {
   std::ifstream in(path);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
 }
-
-}  // namespace
 
 std::string make_temp_dir() {
   char tmpl[] = "/tmp/rangesim-cli-XXXXXX";
@@ -30,8 +26,8 @@ CommandResult run_command(const std::string& command) {
   const int status = std::system(full.c_str());
   CommandResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(dir + "/out");
-  r.err = slurp(dir + "/err");
+  r.out = read_text_file(dir + "/out");
+  r.err = read_text_file(dir + "/err");
   std::system(("rm -rf " + dir).c_str());
   return r;
 }

@@ -1,0 +1,195 @@
+// The run-time side of reliability through the built binary: one writer per output folder, signals
+// (SIGTERM, SIGHUP) handled like Ctrl-C, no stale results of another run, stale staging folders
+// of dead runs removed, budgets that end a run early, progress lines counted once.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+#include "child_process.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBin = RANGESIM_BIN;
+const std::string kScenes = RANGESIM_SCENE_DIR;
+
+// A fresh folder per test: <tmp>/work is the children's working folder.
+struct Workspace {
+  fs::path root, work;
+  Workspace() {
+    char tmpl[] = "/tmp/rangesim-rel-XXXXXX";
+    root = ::mkdtemp(tmpl);
+    work = root / "work";
+    fs::create_directory(work);
+  }
+  ~Workspace() { fs::remove_all(root); }
+  ChildResult run(const std::string& args, double wall_s = 60) const {
+    std::vector<std::string> argv = split_args(args);
+    argv.insert(argv.begin(), kBin);
+    return run_child(argv, work.string(), {wall_s, 0});
+  }
+  Background start(const std::string& args) const {
+    std::vector<std::string> argv = split_args(args);
+    argv.insert(argv.begin(), kBin);
+    return start_child(argv, work.string());
+  }
+};
+
+std::set<std::string> names_in(const fs::path& dir) {
+  std::set<std::string> names;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) names.insert(e.path().filename().string());
+  return names;
+}
+
+bool wait_for(const fs::path& p, double seconds) {
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!fs::exists(p)) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > seconds) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return true;
+}
+
+// A Monte Carlo sweep of a few seconds: its last point costs ~1.4 s a trial on one thread.
+const std::string kSlowMc =
+    "evaluate tof-spad --signal 1e5:1e8:4 --background 1e5:1e5:1 --trials 3 --threads 1 --no-plots";
+
+TEST(Reliability, OneWriterPerFolderAndResumeNeverJoinsALiveRun) {
+  Workspace w;
+  const Background first = w.start(kSlowMc + " --out d");
+  ASSERT_TRUE(wait_for(w.work / "d" / ".rangesim.lock", 20));
+  const ChildResult second = w.run("evaluate tof-spad --no-plots --out d");
+  EXPECT_EQ(second.exit_code, 2) << second.err;
+  EXPECT_NE(second.err.find("--out d: another rangesim run is writing there (pid " + std::to_string(first.pid)),
+            std::string::npos)
+      << second.err;
+  EXPECT_NE(second.err.find("rangesim evaluate tof-spad --signal 1e5:1e8:4"), std::string::npos) << second.err;
+  const ChildResult resume = w.run(kSlowMc + " --out d --resume");
+  EXPECT_EQ(resume.exit_code, 2) << resume.err;
+  EXPECT_NE(resume.err.find("another rangesim run is writing there"), std::string::npos) << resume.err;
+  ::kill(first.pid, SIGTERM);
+  const ChildResult stopped = wait_child(first);
+  EXPECT_EQ(stopped.exit_code, 143) << stopped.err;
+  EXPECT_NE(stopped.err.find("stopped by SIGTERM"), std::string::npos) << stopped.err;
+  EXPECT_NE(stopped.err.find("--resume"), std::string::npos) << stopped.err;
+  // The journal stays for --resume; no staging folder, no lock.
+  EXPECT_EQ(names_in(w.work / "d"), std::set<std::string>{".staging-sweep"});
+  const ChildResult resumed = w.run(kSlowMc + " --out d --resume");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const ChildResult reference = w.run(kSlowMc + " --out ref");
+  ASSERT_EQ(reference.exit_code, 0) << reference.err;
+  for (const auto& f : names_in(w.work / "ref")) {
+    std::ifstream a(w.work / "ref" / f), b(w.work / "d" / f);
+    std::stringstream sa, sb;
+    sa << a.rdbuf(), sb << b.rdbuf();
+    EXPECT_EQ(sa.str(), sb.str()) << f;
+  }
+  EXPECT_EQ(names_in(w.work / "d"), names_in(w.work / "ref"));
+}
+
+TEST(Reliability, SigtermAndSighupEndAPlainRunLeavingNothing) {
+  for (const int sig : {SIGTERM, SIGHUP, SIGINT}) {
+    Workspace w;
+    const Background b = w.start("evaluate tof-lockin --signal 1e-11:1e-9:3000 --background 1e-14:1e-8:3000 --out d");
+    ASSERT_TRUE(wait_for(w.work / "d" / ".rangesim.lock", 20));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ::kill(b.pid, sig);
+    const ChildResult r = wait_child(b);
+    EXPECT_EQ(r.exit_code, 128 + sig) << r.err;
+    EXPECT_NE(r.err.find(sig == SIGINT    ? "interrupted (SIGINT"
+                         : sig == SIGTERM ? "stopped by SIGTERM"
+                                          : "SIGHUP"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("nothing written"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(w.work / "d")) << "the folder the run created stays: " << names_in(w.work / "d").size();
+  }
+}
+
+TEST(Reliability, ARunReplacesItsCommandsResultsKeepsUserFilesAndRefusesAnothersWithoutForce) {
+  Workspace w;
+  ASSERT_EQ(w.run("evaluate tof-lockin --trials 2 --signal 1e-10:1e-9:2 --background 1e-12:1e-11:2 --no-plots --out d")
+                .exit_code,
+            0);
+  std::ofstream(w.work / "d" / "my-notes.txt") << "mine\n";
+  const ChildResult again = w.run("evaluate tof-spad --no-plots --out d");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(names_in(w.work / "d"),
+            (std::set<std::string>{".rangesim-manifest", "accuracy_mm.csv", "detectable_area.csv", "my-notes.txt",
+                                   "points.csv", "summary.json"}));
+  const std::string scene = kScenes + "/tof-spad-plane.toml";
+  const ChildResult other = w.run("simulate tof-spad --scene " + scene + " --kernel-only --no-plots --out d");
+  EXPECT_EQ(other.exit_code, 2) << other.err;
+  EXPECT_NE(other.err.find("holds the results of another command (4 files of `rangesim evaluate`); add --force"),
+            std::string::npos)
+      << other.err;
+  const ChildResult forced = w.run("simulate tof-spad --scene " + scene + " --kernel-only --no-plots --force --out d");
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  const std::set<std::string> after = names_in(w.work / "d");
+  EXPECT_TRUE(after.count("my-notes.txt"));
+  EXPECT_TRUE(after.count("range_map.csv"));
+  EXPECT_FALSE(after.count("detectable_area.csv"));
+}
+
+TEST(Reliability, StagingFoldersOfDeadRunsAreRemoved) {
+  Workspace w;
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  fs::create_directories(w.work / "d" / (".staging-" + std::to_string(dead)));
+  std::ofstream(w.work / "d" / (".staging-" + std::to_string(dead)) / "points.csv") << "half\n";
+  const std::string live = ".staging-" + std::to_string(::getpid());
+  fs::create_directories(w.work / "d" / live);
+  ASSERT_EQ(w.run("evaluate tof-spad --no-plots --out d").exit_code, 0);
+  const std::set<std::string> names = names_in(w.work / "d");
+  EXPECT_FALSE(names.count(".staging-" + std::to_string(dead)));
+  EXPECT_TRUE(names.count(live)) << "a live process's staging folder is not touched";
+}
+
+TEST(Reliability, AGridThatCannotFinishInItsTimeBudgetEndsOnceItsPaceIsKnown) {
+  Workspace w;
+  const ChildResult r =
+      w.run("evaluate tof-lockin --signal 1e-11:1e-9:10000 --background 1e-14:1e-8:10000 --max-seconds 30 --out d");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_LT(r.wall_s, 15);
+  EXPECT_NE(r.err.find("--max-seconds 30: the grid would take ~"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("reduce --signal/--background N"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(w.work / "d"));
+}
+
+TEST(Reliability, ARunThatOutgrowsItsMemoryBudgetEndsWithExit4) {
+  Workspace w;
+  const ChildResult r = w.run("simulate tof-spad --scene " + kScenes +
+                              "/tof-spad-plane.toml --set array.rows=1024 --set array.columns=1024 --dense "
+                              "--kernel-only --frames 1 --max-memory 64M --out d");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_NE(r.err.find("--max-memory 64M exceeded"), std::string::npos) << r.err;
+  EXPECT_LT(r.max_rss_kib, 200 * 1024);
+  EXPECT_FALSE(fs::exists(w.work / "d"));
+}
+
+TEST(Reliability, ProgressCountsRealPointsOnce) {
+  Workspace w;
+  const ChildResult r = w.run("evaluate tof-spad --signal 1e3:1e7:45 --background 1e3:1e7:121 --no-plots --out d");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("evaluate: 5445/5445 operating points"), std::string::npos) << r.err;
+  const ChildResult t = w.run("table");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  std::istringstream lines(t.err);
+  std::set<std::string> seen;
+  for (std::string line; std::getline(lines, line);) {
+    const std::string counts = line.substr(0, line.find(" operating points"));
+    EXPECT_TRUE(seen.insert(counts).second) << "printed twice: " << line;
+  }
+}
+
+}  // namespace
