@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <ostream>
 
@@ -256,7 +257,17 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
                   "seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default) = exact.\n"
                   "Error falls and cost rises as the step shrinks; sensors exact on their clock grid refuse it")
-      ->check(real_in(0, false, 1, "s"));
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            // Any number passes: the model's check names the range of its preset (T0 / 1e5 .. T0).
+            char* end = nullptr;
+            std::strtod(s.c_str(), &end);
+            return !s.empty() && *end == '\0' ? std::string()
+                                              : "'" + s +
+                                                    "' is not a number; allowed 0 (exact) or a step in seconds "
+                                                    "from source.pulse_width_s / 1e5 to source.pulse_width_s";
+          },
+          ""));
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(

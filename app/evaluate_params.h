@@ -10,12 +10,12 @@ namespace rangesim::app {
 
 ParamSet evaluate_params(const EvaluateOptions& opt);
 
-// What `evaluate` over the preset's grid needs (app/resource_estimate.h): streamed, a block of rows
-// and the heat maps' cells in memory; with Monte Carlo, every point and its statistics.
-ResourceEstimate evaluate_estimate(const ParamSet& params, bool monte_carlo);
-
 // The grid and model flags of `evaluate` (--samplings, --adc-bits, --frames, --signal,
 // --background; the rest of `opt` is not read) applied to a loaded preset, with the same checks.
 void apply_evaluate_flags(ParamSet& params, const EvaluateOptions& opt);
+
+// What `evaluate` over the preset's grid needs (app/resource_estimate.h): streamed, a block of rows
+// and the heat maps' cells in memory; with Monte Carlo, every point and its statistics.
+ResourceEstimate evaluate_estimate(const ParamSet& params, bool monte_carlo);
 
 }  // namespace rangesim::app

@@ -44,8 +44,8 @@ GridScan scan_grid(EvalResult& r, const std::function<EvalPoint(std::size_t ib, 
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < std::min<std::size_t>(cores, rows); ++t) pool.emplace_back(work, false);
     try {
-      work(true);    // only the calling thread reports
-    } catch (...) {  // the progress callback cancelled the scan: hand out no more rows, join, pass it on
+      work(true);  // only the calling thread reports
+    } catch (...) {  // the progress callback cancelled the run: hand out nothing more, join, pass it on
       next.store(rows);
       for (auto& t : pool) t.join();
       throw;
