@@ -21,7 +21,8 @@ struct GridScan {
 
 // Scans r.signal x r.background with `point(ib, is)` (which must depend on its inputs only, so the
 // result is the same for any thread count); `parallel` shares each block's rows over the cores.
-// Fills r.points (sink == nullptr) or feeds the sink, and the summary of summarise_points();
+// Fills r.points (sink == nullptr) or feeds the sink, and the summary of summarise_points(); an
+// exception from `progress` (a cancel) stops the scan after the rows in flight and is passed on.
 // `observe` sees every point once, in grid order, on the calling thread (a model's own summary).
 GridScan scan_grid(EvalResult& r, const std::function<EvalPoint(std::size_t ib, std::size_t is)>& point,
                    ProgressFn progress, EvalSink* sink, bool parallel,
