@@ -1,13 +1,16 @@
 // The cost of one kernel step from C++ (docs/python.md, "Call overhead"): the loops
 // python/bench/kernel_step_bench.py runs through the Python module, here in plain C++ on the
 // same kernels made from the same presets. Prints JSON {step: {"ns_per_step", "steps"}}.
-//   rangesim-kernel-step-bench [STEPS]        (default 20000000 per step kind)
+//   rangesim-kernel-step-bench STEPS BLOCK=PRESET ...
+// Each timed block is made from the preset given for it; the Python side passes the preset
+// rangesim.kernels.blocks() lists first for the block, so both time the same kernel.
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fmt/format.h>
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,14 +47,40 @@ double time_steps(long long steps, const std::function<void(long long)>& run) {
   return best;
 }
 
+// The preset each block is made from, from BLOCK=PRESET arguments.
+std::map<std::string, std::string> g_presets;
+
+ParamSet preset_for(const std::string& block) {
+  const auto it = g_presets.find(block);
+  if (it == g_presets.end()) {
+    std::fprintf(stderr, "rangesim-kernel-step-bench: no preset for block %s: give %s=PRESET\n", block.c_str(),
+                 block.c_str());
+    std::exit(2);
+  }
+  return load_preset(it->second);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const long long steps = argc > 1 ? std::atoll(argv[1]) : 20000000;
+  const long long steps = argc > 1 ? std::atoll(argv[1]) : 0;
+  if (steps < 1) {
+    std::fprintf(stderr, "usage: rangesim-kernel-step-bench STEPS BLOCK=PRESET ... (STEPS >= 1)\n");
+    return 2;
+  }
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      std::fprintf(stderr, "rangesim-kernel-step-bench: %s: allowed BLOCK=PRESET\n", a.c_str());
+      return 2;
+    }
+    g_presets[a.substr(0, eq)] = a.substr(eq + 1);
+  }
   std::vector<std::pair<std::string, double>> out;
 
   // address_search.tick: operations back to back on one row (start again as soon as idle).
-  const LsConventionalConfig lc = ls_conventional_from_params(load_preset("ls-conventional"));
+  const LsConventionalConfig lc = ls_conventional_from_params(preset_for("address_search"));
   systemc::ActivationRow row(lc.search.columns);
   row.set(40), row.set(48);
   out.emplace_back("address_search.tick", time_steps(steps, [&](long long n) {
@@ -61,15 +90,16 @@ int main(int argc, char** argv) {
                        g_sink += k.pins().addr_bit;
                      }
                    }));
+  const LsConventionalConfig sc = ls_conventional_from_params(preset_for("multisampling_sequencer"));
   out.emplace_back("multisampling_sequencer.tick", time_steps(steps, [&](long long n) {
-                     systemc::MultisamplingSequencerKernel k(lc.timing, lc.multisampling.samplings);
+                     systemc::MultisamplingSequencerKernel k(sc.timing, sc.multisampling.samplings);
                      for (long long i = 0; i < n; ++i) {
                        k.tick(false);
                        g_sink += k.pins().sampling;
                      }
                    }));
 
-  const TofLockinConfig tl = tof_lockin_from_params(load_preset("tof-lockin"));
+  const TofLockinConfig tl = tof_lockin_from_params(preset_for("lockin_gate_generator"));
   out.emplace_back("lockin_gate_generator.advance", time_steps(steps, [&](long long n) {
                      systemc::lockin::LockinGateGeneratorKernel g(tl);
                      g.start();
@@ -78,7 +108,7 @@ int main(int argc, char** argv) {
                        g_sink += g.advance(1) + g.tx1();
                      }
                    }));
-  const systemc::lockin::ColumnAdcKernel adc(tl);
+  const systemc::lockin::ColumnAdcKernel adc(tof_lockin_from_params(preset_for("column_adc")));
   out.emplace_back("column_adc.code", time_steps(steps, [&](long long n) {
                      for (long long i = 0; i < n; ++i)
                        g_sink += static_cast<std::uint64_t>(adc.code(static_cast<double>(i & 1023) * 1e-3));
@@ -86,7 +116,7 @@ int main(int argc, char** argv) {
 
   // tdc.hit: one hit per laser cycle, cycling through the bins; a new integration when the
   // laser cycles run out.
-  const TofSpadConfig ts = tof_spad_from_params(load_preset("tof-spad"));
+  const TofSpadConfig ts = tof_spad_from_params(preset_for("tdc"));
   const systemc::spad::TofSpadKernel sk(ts, 1, ts.tdc.columns_per_tdc, systemc::spad::TofSpadKernelOptions{});
   const auto make_tdc = [&] {
     return systemc::spad::TdcGroupKernel(sk.phase_bins(), sk.codes(), sk.block_event_bins(), sk.block_overflow_bins(),

@@ -32,30 +32,41 @@ def best_ns(steps, run):
     return best
 
 
-def python_steps(steps):
-    lc, tl, ts = rangesim.load("ls-conventional"), rangesim.load("tof-lockin"), rangesim.load("tof-spad")
-    search = lc.kernel("address_search")
+def block_presets():
+    """The preset each timed block is made from: the first sensor rangesim.kernels.blocks() lists
+    for it (the C++ loops get the same, as BLOCK=PRESET)."""
+    presets = {}
+    for b in rangesim.kernels.blocks():
+        presets.setdefault(b["block"], b["sensor"])
+    return presets
+
+
+def python_steps(steps, presets):
+    def kernel(block):
+        return rangesim.load(presets[block]).kernel(block)
+
+    search = kernel("address_search")
     row = ActivationRow(search.columns)
     row.set(40)
     row.set(48)
     sink = [0]
 
     def address_search(n):
-        k = lc.kernel("address_search")
+        k = kernel("address_search")
         s = 0
         for _ in range(n):
             s += k.tick(False, k.idle, row).addr_bit
         sink[0] += s
 
     def sequencer(n):
-        k = lc.kernel("multisampling_sequencer")
+        k = kernel("multisampling_sequencer")
         s = 0
         for _ in range(n):
             s += k.tick().sampling
         sink[0] += s
 
     def gate(n):
-        g = tl.kernel("lockin_gate_generator")
+        g = kernel("lockin_gate_generator")
         g.start()
         s = 0
         for _ in range(n):
@@ -64,7 +75,7 @@ def python_steps(steps):
             s += g.advance(1) + g.tx1
         sink[0] += s
 
-    adc = tl.kernel("column_adc")
+    adc = kernel("column_adc")
 
     def adc_scalar(n):
         s = 0
@@ -78,7 +89,7 @@ def python_steps(steps):
         sink[0] += int(adc.codes(volts[:n]).sum())
 
     def tdc_hits(n):
-        t = ts.kernel("tdc")
+        t = kernel("tdc")
         cols, bins, cycles = t.columns, t.phase_bins, t.laser_cycles
         cycle, s = 0, 0
         for i in range(n):
@@ -109,9 +120,10 @@ def main():
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args()
 
-    cpp = json.loads(subprocess.run([args.cpp, str(args.cpp_steps)], capture_output=True, text=True,
-                                    check=True).stdout)
-    py = python_steps(args.steps)
+    presets = block_presets()
+    cpp = json.loads(subprocess.run([args.cpp, str(args.cpp_steps)] + [f"{b}={p}" for b, p in presets.items()],
+                                    capture_output=True, text=True, check=True).stdout)
+    py = python_steps(args.steps, presets)
     rows = []
     for name, reference, ns in py:
         base = cpp[reference]["ns_per_step"]

@@ -26,16 +26,9 @@ int DemodFrameResult::rows_detected() const {
 
 namespace {
 
-AddressSearchConfig search_config(const LsDemodulationConfig& cfg) {
-  AddressSearchConfig a;
-  a.columns = cfg.pixel.columns;
-  a.address_bits = cfg.readout.address_bits;
-  a.addresses_per_sampling = 2;
-  return a;
-}
-
+// The row's chain-settle cycles (core/ls_demodulation/config.h); below 1 the row cannot be read.
 int settle_cycles(const LsDemodulationConfig& cfg) {
-  const int s = cfg.readout.row_cycles - 1 - 2 * cfg.readout.address_bits;
+  const int s = readout_search_cycles(cfg.readout);
   if (s < 1)
     throw std::invalid_argument(
         "readout.row_cycles = " + std::to_string(cfg.readout.row_cycles) +
@@ -46,6 +39,14 @@ int settle_cycles(const LsDemodulationConfig& cfg) {
 
 }  // namespace
 
+AddressSearchKernel demod_address_search(const LsDemodulationConfig& cfg) {
+  AddressSearchConfig a;
+  a.columns = cfg.pixel.columns;
+  a.address_bits = cfg.readout.address_bits;
+  a.addresses_per_sampling = 2;
+  return AddressSearchKernel(a, settle_cycles(cfg));
+}
+
 DemodSensorKernel::DemodSensorKernel(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt)
     : cfg_(cfg),
       opt_(opt),
@@ -53,7 +54,7 @@ DemodSensorKernel::DemodSensorKernel(const LsDemodulationConfig& cfg, const Demo
       rows_(cfg.pixel.rows),
       columns_(cfg.pixel.columns),
       search_cycles_(settle_cycles(cfg)),
-      search_(search_config(cfg), settle_cycles(cfg)) {
+      search_(demod_address_search(cfg)) {
   if (rows_ < 1 || columns_ < 1) throw std::invalid_argument("pixel.rows / pixel.columns must be >= 1");
   if (cfg.grid.detections < 1) throw std::invalid_argument("evaluation.detections must be >= 1");
   if (cfg.comparator.adc_bits != 1)

@@ -76,6 +76,10 @@ struct DemodFrameResult {
   int rows_detected() const;
 };
 
+// The row search this sensor time-multiplexes over its rows: as wide as the array, two streamed
+// addresses, settling for the cycles the row readout leaves (core/ls_demodulation/config.h).
+AddressSearchKernel demod_address_search(const LsDemodulationConfig& cfg);
+
 class DemodSensorKernel {
  public:
   // Throws std::invalid_argument naming the key for a configuration it cannot simulate.

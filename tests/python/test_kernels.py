@@ -19,6 +19,18 @@ class Kernels(unittest.TestCase):
                          {"multisampling_sequencer", "address_search", "centre_processor", "lockin_gate_generator",
                           "column_adc", "tdc"})
 
+    def test_demodulation_search_is_its_readout(self):
+        # The row search the ls-demodulation kernel time-multiplexes: as wide as the array, settling
+        # for what the row readout leaves after start and the two streamed addresses.
+        s = rangesim.load("ls-demodulation", set={"pixel.columns": 64})
+        p = {k: v["value"] for k, v in s.show()["parameters"].items()}
+        k = s.kernel("address_search")
+        self.assertEqual((k.columns, k.address_bits), (64, p["readout.address_bits"]))
+        self.assertEqual(k.search_cycles, p["readout.row_cycles"] - 1 - 2 * p["readout.address_bits"])
+        row = ActivationRow([c in (10, 20) for c in range(64)])
+        r = k.run(row)
+        self.assertEqual((r.found, r.left, r.right), (True, 10, 20))
+
     def test_kernels_follow_set(self):
         s = rangesim.load("ls-conventional", set={"pixel.columns": 100, "timing.address_bits": 7})
         k = s.kernel("address_search")

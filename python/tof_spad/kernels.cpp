@@ -1,4 +1,4 @@
-// rangesim.kernels.TdcGroup: the TDC shared by one group of tof-spad columns, hit by hit
+// rangesim.kernels for tof-spad: TdcGroup, the TDC shared by one group of columns, hit by hit
 // (systemc/tof_spad/tdc_kernel.h), sized and timed by a preset as the sensor kernel sizes it.
 #include <pybind11/stl.h>
 
@@ -74,11 +74,15 @@ const char* kind_name(sp::TdcHit::Kind k) {
   return "?";
 }
 
-}  // namespace
-
 py::object make_tdc_group(const ParamSet& p) { return py::cast(TdcGroup(tof_spad_from_params(p))); }
 
-void bind_tdc(py::module_& k) {
+}  // namespace
+
+std::vector<KernelBlock> tof_spad_kernel_blocks() {
+  return {{"tdc", "TDC shared by a group of columns, hit by hit (TdcGroup)", &make_tdc_group}};
+}
+
+void tof_spad_bind_kernels(py::module_& k) {
   py::class_<sp::TdcHit>(k, "TdcHit", "What the TDC made of one hit: its transaction.")
       .def_property_readonly("kind", [](const sp::TdcHit& h) { return kind_name(h.kind); })
       .def_readonly("abs_bin", &sp::TdcHit::abs_bin)
@@ -88,7 +92,7 @@ void bind_tdc(py::module_& k) {
       });
   py::class_<TdcGroup>(
       k, "TdcGroup",
-      "The TDC shared by one group of tof-spad columns over one row integration: hits in time order "
+      "The TDC shared by one group of columns over one row integration: hits in time order "
       "(after first-hit arbitration) become events, overflows or losses (dead time, stop until the "
       "next START); finish() gives the histograms and the armed counts (systemc/tof_spad/tdc_kernel.h).")
       .def("hit", &TdcGroup::hit, py::arg("who"), py::arg("cycle"), py::arg("bin"),
