@@ -212,8 +212,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "simulate",
       "Clock-level model of the sensor (SystemC, or the bare cycle kernels) on a scene: range map with its\n"
       "error against the scene's ground truth, per-frame cycle counts by phase and the frame rate measured\n"
-      "from simulated time beside the clock schedule. Writes range_map.csv/.png, points.csv, frames.csv and\n"
-      "summary.json into --out.");
+      "from simulated time beside the clock schedule. Each pixel's range is valid or not by the sensor's rule\n"
+      "(preset keys; summary.json names it): invalid pixels are blank. Writes range_map.csv/.png,\n"
+      "range_error.png, confidence_map.csv, points.csv, frames.csv and summary.json (valid_fraction,\n"
+      "false_valid_fraction) into --out.");
   sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")->required();
   sim->add_option("--scene", sim_opt.scene,
                   "Scene file (TOML) for the sensor (examples in scenes/, docs/simulate.md); target.shape = "
@@ -252,7 +254,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                 "Run the periods or laser cycles the sensor's model aggregates (correlation periods, accumulation\n"
                 "periods, laser cycles: docs/simulate.md) one by one instead of in one exact jump or draw;\n"
                 "a sensor without aggregation refuses it");
-  sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png");
+  sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png and range_error.png");
   sim->add_option("--time-step", sim_opt.time_step_s,
                   "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
                   "seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default) = exact.\n"

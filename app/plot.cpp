@@ -1,5 +1,7 @@
 #include "app/plot.h"
 
+#include "app/plot_style.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -58,17 +60,25 @@ void write_grid_data(const std::string& path, const golden::EvalResult& ev) {
 }
 
 std::string terminal(const std::string& ext, const std::string& path) {
-  return fmt::format("reset\nset terminal {} size 900,700 font 'Sans,11'\nset output '{}'\n",
-                     ext == "png" ? "pngcairo" : "svg", path);
+  return fmt::format("reset\nset terminal {} size 900,700 font 'Sans,11'\nset output '{}'\n{}",
+                     ext == "png" ? "pngcairo" : "svg", path, plot_preamble());
 }
 
 std::string heatmap_header(const golden::EvalResult& ev) {
-  return fmt::format(
-      "set logscale xy\nset format x '10^{{%L}}'\nset format y '10^{{%L}}'\n"
-      "set xlabel 'signal [{}]'\nset ylabel 'background [{}]'\nset view map\n"
-      "set pm3d map corners2color c1\nset tics out\nunset key\nset autoscale xfix\nset autoscale yfix\n"
-      "set rmargin at screen 0.78\n",
-      ev.signal.unit, ev.background.unit);
+  return "set logscale xy\n" + log_format("x", ev.signal.unit) + log_format("y", ev.background.unit) +
+         fmt::format(
+             "set xlabel 'signal [{}]'\nset ylabel 'background [{}]'\nset view map\n"
+             "set pm3d map corners2color c1\nunset grid\nunset key\nset autoscale xfix\nset autoscale yfix\n"
+             "set rmargin at screen 0.78\n",
+             ev.signal.unit, ev.background.unit);
+}
+
+// Smallest and largest accuracy value the map draws.
+std::pair<double, double> accuracy_range(const golden::EvalResult& ev) {
+  const int px = metric_index(ev, "accuracy_px");
+  std::vector<std::vector<double>> values(1);
+  for (const auto& p : ev.points) values[0].push_back(accuracy_value(p, px));
+  return finite_range(values);
 }
 
 std::string area_script(const golden::EvalResult& ev, const std::string& data) {
@@ -90,11 +100,12 @@ std::string area_script(const golden::EvalResult& ev, const std::string& data) {
 
 std::string accuracy_script(const golden::EvalResult& ev, const std::string& data) {
   const bool px = metric_index(ev, "accuracy_px") >= 0;
-  return heatmap_header(ev) + fmt::format(
-                                  "set title '{} — range accuracy{}'\nset logscale cb\nset cblabel 'rms error [{}]'\n"
-                                  "set palette rgbformulae 22,13,-31\nsplot '{}' using 1:2:4 with pm3d\n",
-                                  ev.sensor, px ? " [pixel pitch]" : fmt::format(" at {:g} m", ev.distance_m),
-                                  px ? "px" : "mm", data);
+  const auto [lo, hi] = accuracy_range(ev);
+  return heatmap_header(ev) + viridis_palette() + log_cbtics(lo, hi) +
+         fmt::format(
+             "set title '{} — range accuracy{}'\nset logscale cb\nset cblabel 'rms error [{}]' offset 2,0\n"
+             "splot '{}' using 1:2:4 with pm3d\n",
+             ev.sensor, px ? " [pixel pitch]" : fmt::format(" at {:g} m", ev.distance_m), px ? "px" : "mm", data);
 }
 
 std::string sweep_script(const golden::EvalSweep& sw, const std::string& data) {
@@ -103,13 +114,14 @@ std::string sweep_script(const golden::EvalSweep& sw, const std::string& data) {
   };
   std::string s = fmt::format(
       "set termoption noenhanced\nset title '{}'\nset xlabel '{}'\nset ylabel '{}'\nset grid\n"
-      "set key outside bottom center horizontal\n"
+      "set key outside bottom center vertical maxrows 3 width 2\nset rmargin 6\n"
       "set datafile missing 'NaN'\n{}{}plot ",
-      sw.title, axis(sw.x_label, sw.x_unit), axis(sw.y_label, sw.y_unit), sw.log_x ? "set logscale x\n" : "",
-      sw.log_y ? "set logscale y\n" : "");
+      sw.title, axis(sw.x_label, sw.x_unit), axis(sw.y_label, sw.y_unit),
+      sw.log_x ? "set logscale x\n" + log_format("x", sw.x_unit) : "",
+      sw.log_y ? "set logscale y\n" + log_format("y", sw.y_unit) : "");
   for (size_t i = 0; i < sw.series.size(); ++i)
-    s += fmt::format("{}'{}' index {} using 1:2 with linespoints lw 2 pt 7 ps 0.6 title \"{}\"", i ? ", " : "", data, i,
-                     sw.series[i].label);
+    s += fmt::format("{}'{}' index {} using 1:2 with linespoints {} title \"{}\"", i ? ", " : "", data, i,
+                     series_style(i), sw.series[i].label);
   return s + "\n";
 }
 

@@ -79,6 +79,11 @@ py::object simulate(const Sensor& sensor, const py::object& scene, std::optional
   f["error_m"] = grid_array(rows, columns, [&](std::size_t row, std::size_t c) {
     return m.valid(row, c) ? m.range_m[row][c] - truth(row, c) : NAN;  // NaN too where there is no truth
   });
+  f["confidence"] = grid_array(rows, columns, [&m](std::size_t row, std::size_t c) {
+    return row < m.confidence.size() && c < m.confidence[row].size() ? m.confidence[row][c] : NAN;
+  });
+  f["confidence_label"] = m.confidence_label;
+  f["validity_rule"] = m.validity_rule;
   f["first_row"] = m.first_row;
   f["column_names"] = m.column_names;
   f["title"] = m.title;
@@ -103,8 +108,8 @@ elaborate twice); tick, noise_free, dense, no_aggregate, time_step: as --tick, -
 --no-aggregate, --time-step.
 
 Returns a namespace: range_m (2-D, NaN where no valid range), valid, truth_m (the ground truth the range is
-scored against, NaN where none), error_m = range_m - truth_m, first_row, column_names, title, x_label,
-y_label; points_csv and frames_csv (the command's points.csv and frames.csv); summary (its summary.json).
+scored against, NaN where none), error_m = range_m - truth_m, confidence (what the validity rule tested,
+in confidence_label's unit), validity_rule, first_row, column_names, title, x_label, y_label; points_csv and frames_csv (the command's points.csv and frames.csv); summary (its summary.json).
 Releases the GIL; Ctrl-C stops a kernel run (KeyboardInterrupt).)");
 }
 

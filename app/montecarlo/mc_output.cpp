@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/plot_style.h"
+
 namespace rangesim::app::mc {
 
 namespace {
@@ -151,19 +153,19 @@ std::string render_mc_plot(OutputDir& out, const McGrid& g) {
     script += "reset\n";
     script +=
         ext == "png" ? "set terminal pngcairo size 900,600 noenhanced\n" : "set terminal svg size 900,600 noenhanced\n";
-    script += fmt::format("set output '{}'\n", out.staged(images.back()));
+    script += fmt::format("set output '{}'\n", out.staged(images.back())) + plot_preamble();
     script += fmt::format(
-        "set title '{}: Monte Carlo accuracy with 95% CI (points) and golden closed form (lines)'\n"
-        "set logscale xy\nset xlabel 'signal ({})'\nset ylabel 'rms range error (mm)'\nset key outside right\n"
-        "set grid\n",
-        ev.sensor, ev.signal.unit);
+        "set title '{}: Monte Carlo (points, 95% CI) and golden (lines)'\n"
+        "set logscale xy\n{}set format y '%g'\nset xlabel 'signal [{}]'\nset ylabel 'rms range error [mm]'\n"
+        "set key outside right top title 'background'\nset grid\n",
+        ev.sensor, log_format("x", ev.signal.unit), ev.signal.unit);
     std::string plot = "plot ";
     for (std::size_t i = 0; i < pick.size(); ++i) {
       const std::string bg = fmt::format("{:.3g} {}", ev.background.values[pick[i]], ev.background.unit);
       plot += fmt::format(
-          "{}'{}' index {} using 1:2:3:4 with yerrorbars lc {} pt 7 ps 0.6 title 'MC bg {}', "
-          "'{}' index {} using 1:5 with lines lc {} notitle",
-          i ? ", " : "", data, i, i + 1, bg, data, i, i + 1);
+          "{}'{}' index {} using 1:2:3:4 with yerrorbars lc rgb '{}' pt 7 ps 0.6 title '{}', "
+          "'{}' index {} using 1:5 with lines lw 2 lc rgb '{}' notitle",
+          i ? ", " : "", data, i, series_colour(i), bg, data, i, series_colour(i));
     }
     script += plot + "\nunset output\n";
   }

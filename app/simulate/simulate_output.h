@@ -1,15 +1,16 @@
 #pragma once
-// range_map.png of `rangesim simulate`, the same plot for every sensor.
+// The images of `rangesim simulate`, the same for every sensor: range_map.png and, where the scene
+// gives a ground truth, range_error.png.
 #include <string>
-#include <vector>
 
 #include "app/output_dir.h"
+#include "systemc/common/simulation.h"
 
 namespace rangesim::app {
 
-// Stages range_map.png: a gnuplot image of `map` (rows of values in m; NaN = no range) with
-// the given axis labels. Returns "" or a warning (gnuplot missing/failed; nothing left behind).
-std::string render_range_map(OutputDir& out, const std::vector<std::vector<double>>& map, const std::string& title,
-                             const std::string& x_label, const std::string& y_label = "row");
+// Stages range_map.png (valid ranges on viridis, invalid pixels blank, one pixel a square) and
+// range_error.png (range - truth on a diverging map symmetric about 0, where both exist). Returns
+// "" or a warning (gnuplot missing/failed; nothing left behind).
+std::string render_range_map(OutputDir& out, const systemc::RangeMap& map);
 
 }  // namespace rangesim::app

@@ -67,15 +67,17 @@ class CommandHost : public systemc::SimulationHost {
   std::optional<OutputDir> out_;       // --out, once the scene is known
 };
 
-// range_map.csv, points.csv (where the sensor has points), frames.csv and range_map.png; returns
-// the plot's warning ("" when none).
+// range_map.csv, confidence_map.csv (where the sensor's validity rule measures one), points.csv
+// (where the sensor has points), frames.csv, range_map.png and range_error.png; returns the plot's warning ("" when
+// none).
 std::string write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r) {
   const systemc::RangeMap& m = r.range_map;
   out.write("range_map.csv", systemc::range_map_csv(m));
+  if (!m.confidence.empty()) out.write("confidence_map.csv", systemc::confidence_map_csv(m));
   if (!r.points_csv.empty()) out.write("points.csv", r.points_csv);
   out.write("frames.csv", r.frames_csv);
   if (opt.no_plots) return "";
-  return render_range_map(out, m.range_m, m.title, m.x_label, m.y_label);
+  return render_range_map(out, m);
 }
 
 // summary.json (with any warnings), the trace, the commit, then the JSON (--json) or the summary

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <map>
 
+#include "app/plot_style.h"
+
 namespace rangesim::app::sweep {
 
 namespace {
@@ -123,8 +125,8 @@ std::string sweep_text(const SweepHeader& h, const std::vector<SweepRow>& rows) 
 namespace {
 
 std::string terminal(const std::string& ext, const std::string& path) {
-  return fmt::format("reset\nset terminal {} size 1000,650 font 'Sans,11' noenhanced\nset output '{}'\n",
-                     ext == "png" ? "pngcairo" : "svg", path);
+  return fmt::format("reset\nset terminal {} size 1000,650 font 'Sans,11' noenhanced\nset output '{}'\n{}",
+                     ext == "png" ? "pngcairo" : "svg", path, plot_preamble());
 }
 
 // Data for the Pareto plot: block 0 every valid variant, block 1 the front in rate order.
@@ -150,10 +152,11 @@ std::string pareto_script(const std::string& data, const SweepHeader& h, const s
              "set title '{} sweep: range-map rate against accuracy'\nset logscale xy\nset grid\n"
              "set xlabel '{} rms range accuracy over the detectable area [mm]'\n"
              "set ylabel 'range maps per second'\nset key top right\n"
-             "plot '{}' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '#5b7bd5' title 'variant', "
+             "plot '{}' index 0 using 1:2 with points pt 7 ps 1.2 lc rgb '{}' title 'variant (label: its index)', "
              "'' index 0 using 1:2:3 with labels font ',8' offset 0.8,0.6 notitle, "
-             "'' index 1 using 1:2 with linespoints pt 6 ps 2 lw 2 lc rgb '#c0392b' title 'Pareto front'\n",
-             h.sensor, h.pareto_accuracy == "accuracy_max_m" ? "worst" : "best", data);
+             "'' index 1 using 1:2 with linespoints pt 6 ps 2 lw 2 lc rgb '{}' title 'Pareto front'\n",
+             h.sensor, h.pareto_accuracy == "accuracy_max_m" ? "worst" : "best", data, series_colour(0),
+             series_colour(1));
 }
 
 // One plot per numeric varied key: range-map rate (left axis) and worst accuracy (right axis)
@@ -198,9 +201,9 @@ std::string key_script(const std::string& data, const SweepHeader& h, std::size_
   for (std::size_t i = 0; i < shown; ++i) {
     const std::string title = titles[i].empty() ? "" : titles[i];
     s += fmt::format(
-        "{}'{}' index {} using 1:2 with linespoints pt 7 lc {} title '{}', '' index {} using 1:3 axes "
-        "x1y2 with linespoints pt 4 dt 2 lc {} notitle",
-        i ? ", " : "", data, i, i + 1, title.empty() ? "all variants" : title, i, i + 1);
+        "{}'{}' index {} using 1:2 with linespoints pt 7 lw 2 lc rgb '{}' title '{}', '' index {} using 1:3 axes "
+        "x1y2 with linespoints pt 4 dt 2 lw 2 lc rgb '{}' notitle",
+        i ? ", " : "", data, i, series_colour(i), title.empty() ? "all variants" : title, i, series_colour(i));
   }
   return s + "\n";
 }

@@ -41,6 +41,8 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.comparator.false_activation_max = p.real("comparator.false_activation_max");
 
   c.multisampling.samplings = static_cast<int>(p.integer("multisampling.samplings"));
+  c.validity.min_detecting_fraction = p.real("validity.min_detecting_fraction");
+  c.validity.edge_margin_px = p.real("validity.edge_margin_px");
 
   c.timing.clock_Hz = p.real("timing.clock_Hz");
   c.timing.reset_cycles = static_cast<int>(p.integer("timing.reset_cycles"));

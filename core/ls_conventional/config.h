@@ -82,6 +82,12 @@ struct EvaluationGridConfig {
   int subpixel_points = 16;
 };
 
+// When a row's range counts in a range map (systemc/ls_conventional/simulate.cpp).
+struct LsValidityConfig {
+  double min_detecting_fraction = 0;  // of the samplings that found the spot; 0: any one
+  double edge_margin_px = 1.5;        // the centre this far inside the first and last column
+};
+
 struct LsConventionalConfig {
   PixelConfig pixel;
   SpotConfig spot;
@@ -91,6 +97,7 @@ struct LsConventionalConfig {
   FrameTimingConfig timing;
   OpticsConfig optics;
   EvaluationGridConfig grid;
+  LsValidityConfig validity;
 };
 
 // The clock schedule of one frame access, one formula each (golden/ls_conventional/frame_timing,

@@ -66,6 +66,13 @@ const ParamSchema& ls_conventional_schema() {
           {"evaluation.background_points", K::Integer, "", 1, 10000, false, "log-spaced background points"},
           {"evaluation.subpixel_points", K::Integer, "", 1, 4096, false,
            "spot positions across one pixel averaged for accuracy"},
+          // Range-map validity (rangesim simulate).
+          {"validity.min_detecting_fraction", K::Real, "", 0, 1, false,
+           "a row's range counts when at least this fraction of the samplings found the spot (0: any one, the "
+           "centre processor's own rule)"},
+          {"validity.edge_margin_px", K::Real, "px", 0, 1e4, false,
+           "a row's centre counts only this far inside the array's first and last column: nearer, the spot may "
+           "be clipped by the edge and its centre pulled inward"},
       }};
   return schema;
 }

@@ -67,6 +67,8 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
   c.grid.subpixel_points = integer("evaluation.subpixel_points");
   c.grid.frames_averaged = integer("evaluation.frames_averaged");
   c.grid.detections = integer("evaluation.detections");
+  c.min_detecting_fraction = p.real("validity.min_detecting_fraction");
+  c.edge_margin_px = p.real("validity.edge_margin_px");
   c.grid.sweep_background_A = p.real("evaluation.sweep_background_A");
 
   // Cross-key checks.

@@ -99,6 +99,8 @@ struct LsDemodulationConfig {
   double distance_min_m = 0.8;  // evaluation distance span (Table 3.2)
   double distance_max_m = 1.2;
   DemodGridConfig grid;
+  double min_detecting_fraction = 0;  // a row's range counts when this fraction of the decisions found the spot
+  double edge_margin_px = 1.5;        // ... and its centre lies this far inside the first and last column
 };
 
 // Builds the config from a validated preset; throws UserError on cross-key inconsistencies

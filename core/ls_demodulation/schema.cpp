@@ -96,6 +96,13 @@ const ParamSchema& ls_demodulation_schema() {
            "correlation decisions per frame whose centres are averaged (thesis Fig. 3.9)"},
           {"evaluation.sweep_background_A", K::Real, "A", 0, 1, true,
            "background photocurrent of the one-dimensional accuracy sweeps"},
+          // Range-map validity (rangesim simulate).
+          {"validity.min_detecting_fraction", K::Real, "", 0, 1, false,
+           "a row's range counts when at least this fraction of the frame's correlation decisions found the spot "
+           "(0: any one)"},
+          {"validity.edge_margin_px", K::Real, "px", 0, 1e4, false,
+           "a row's centre counts only this far inside the array's first and last column: nearer, the spot may "
+           "be clipped by the edge and its centre pulled inward"},
       }};
   return schema;
 }

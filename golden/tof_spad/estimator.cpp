@@ -59,6 +59,11 @@ std::vector<double> coates_rates(const HistogramCounts& h) {
   return r;
 }
 
+int peak_bin(const HistogramCounts& h, const EstimatorConfig& cfg) {
+  const std::vector<double> y = cfg.coates ? coates_rates(h) : h.events;
+  return static_cast<int>(std::max_element(y.begin(), y.end()) - y.begin());
+}
+
 std::optional<double> estimate_time_s(const HistogramCounts& h, const TdcBins& bins, const EstimatorConfig& cfg) {
   const int codes = static_cast<int>(h.events.size());
   double total = 0;

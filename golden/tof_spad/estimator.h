@@ -38,6 +38,10 @@ struct HistogramCounts {
 // capped at q = 1 - 1 / (2 A_i). Returns our pixel's estimated mean detections per cycle.
 std::vector<double> coates_rates(const HistogramCounts& h);
 
+// The code the estimator centres its window on: the maximum of the Coates rates (or of the raw
+// events without the correction).
+int peak_bin(const HistogramCounts& h, const EstimatorConfig& cfg);
+
 // The estimator on one histogram: the round-trip time in s, or nothing when nothing is
 // detected (no events, or no counts above the background in the window).
 std::optional<double> estimate_time_s(const HistogramCounts& h, const TdcBins& bins, const EstimatorConfig& cfg);

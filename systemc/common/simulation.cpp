@@ -43,16 +43,49 @@ std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.9g}
 
 nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-std::string range_map_csv(const RangeMap& map) {
+namespace {
+
+std::string map_csv(const RangeMap& map, const std::vector<std::vector<double>>& values) {
   std::string csv = "row";
   for (const auto& name : map.column_names) csv += "," + name;
   csv += "\n";
-  for (std::size_t r = 0; r < map.range_m.size(); ++r) {
+  for (std::size_t r = 0; r < values.size(); ++r) {
     csv += std::to_string(map.first_row + static_cast<long long>(r));
-    for (double v : map.range_m[r]) csv += "," + csv_number(v);
+    for (double v : values[r]) csv += "," + csv_number(v);
     csv += "\n";
   }
   return csv;
+}
+
+nlohmann::json fraction(long long n, long long of) { return of > 0 ? json_number(double(n) / double(of)) : nullptr; }
+
+}  // namespace
+
+std::string range_map_csv(const RangeMap& map) { return map_csv(map, map.range_m); }
+std::string confidence_map_csv(const RangeMap& map) { return map_csv(map, map.confidence); }
+
+ValidityStats validity_of(const RangeMap& map) {
+  ValidityStats s;
+  for (std::size_t r = 0; r < map.range_m.size(); ++r)
+    for (std::size_t c = 0; c < map.range_m[r].size(); ++c) {
+      const bool valid = map.valid(r, c), echo = r < map.truth_m.size() && std::isfinite(map.truth_m[r][c]);
+      ++s.pixels, s.valid += valid;
+      if (echo)
+        ++s.echo, s.echo_valid += valid;
+      else
+        ++s.no_echo, s.false_valid += valid;
+    }
+  return s;
+}
+
+void add_validity_json(nlohmann::json& j, const RangeMap& map) {
+  const ValidityStats s = validity_of(map);
+  j["valid_fraction"] = fraction(s.valid, s.pixels);
+  j["false_valid_fraction"] = fraction(s.false_valid, s.no_echo);
+  j["echo_valid_fraction"] = fraction(s.echo_valid, s.echo);
+  j["validity"] = {{"rule", map.validity_rule},  {"confidence", map.confidence_label}, {"pixels", s.pixels},
+                   {"valid", s.valid},           {"pixels_without_echo", s.no_echo},   {"false_valid", s.false_valid},
+                   {"pixels_with_echo", s.echo}, {"echo_valid", s.echo_valid}};
 }
 
 }  // namespace rangesim::systemc

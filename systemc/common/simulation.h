@@ -108,16 +108,36 @@ void add_timing_json(nlohmann::json& j, const SimulationReport& r, const golden:
 // The range map: rows of ranges in m, NaN where a pixel (or beam position) has no valid range.
 struct RangeMap {
   std::vector<std::vector<double>> range_m;
-  // A pixel's validity is carried by its value: a finite range (CSV and plot leave the others empty).
+  // A pixel's validity is carried by its value: a finite range is a pixel the sensor's validity
+  // rule accepted; the others are no ranges (CSV and plot leave them empty, the error metrics skip
+  // them).
   bool valid(std::size_t row, std::size_t column) const { return std::isfinite(range_m[row][column]); }
-  // The ground truth each range is scored against (same shape), NaN where the run scores no error
-  // there (not visible, outside the beam): range_m - truth_m is the error map the Python module
-  // returns. Not written by the command (points.csv has the errors point by point).
+  // The ground truth each range is scored against (same shape), NaN where the scene puts no echo
+  // on the pixel (not visible, outside the beam): range_m - truth_m is the error map the Python
+  // module returns. Not written by the command (points.csv has the errors point by point).
   std::vector<std::vector<double>> truth_m;
+  // What the validity rule tested, per pixel (same shape; NaN where nothing was measured), in the
+  // unit of `confidence_label`; written as confidence_map.csv.
+  std::vector<std::vector<double>> confidence;
+  std::string confidence_label;                 // e.g. "peak significance [sigma]"
+  std::string validity_rule;                    // the rule, with its preset key and value
   std::vector<std::string> column_names;        // range_map.csv's columns after "row"
   int first_row = 0;                            // range_map.csv's label of range_m[0]
   std::string title, x_label, y_label = "row";  // range_map.png
 };
+
+// The range map's validity against the scene's ground truth (a pixel has an echo where truth_m
+// is finite): summary.json's valid_fraction (valid pixels over all), false_valid_fraction (valid
+// pixels where the scene puts no echo, over those pixels; null when every pixel has one) and
+// echo_valid_fraction (valid pixels among those with an echo), and "validity" with the counts
+// and the rule.
+struct ValidityStats {
+  long long pixels = 0, valid = 0;
+  long long no_echo = 0, false_valid = 0;
+  long long echo = 0, echo_valid = 0;
+};
+ValidityStats validity_of(const RangeMap& map);
+void add_validity_json(nlohmann::json& j, const RangeMap& map);
 
 struct SimulationResult {
   RangeMap range_map;
@@ -132,5 +152,7 @@ std::string csv_number(double v);
 nlohmann::json json_number(double v);
 // range_map.csv: "row,<column names>", then one line per row (values in m, empty where no range).
 std::string range_map_csv(const RangeMap& map);
+// confidence_map.csv: the same layout with the confidence values (empty where none).
+std::string confidence_map_csv(const RangeMap& map);
 
 }  // namespace rangesim::systemc

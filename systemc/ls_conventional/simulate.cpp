@@ -76,20 +76,27 @@ struct Reconstruction {
   bool timing_matches = true;
 };
 
-// One row of one frame access: the range, its error against the truth, its points.csv line.
+// One row of one frame access: the range, its error against the truth, its points.csv line. The
+// row's range counts when enough of the samplings found the spot and its centre lies inside the
+// edge margin (cfg.validity).
 void add_point(Reconstruction& out, const scene::SceneOptics& optics, const FrameResult& fr, int b, int r,
-               std::size_t f) {
+               std::size_t f, const LsConventionalConfig& cfg) {
   const scene::RowTruth t = optics.truth(b, r);
   const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
+  const double fraction = static_cast<double>(p.count) / cfg.multisampling.samplings;
+  const double margin = cfg.validity.edge_margin_px;
+  const bool valid = p.valid && fraction >= cfg.validity.min_detecting_fraction * (1 - 1e-12) &&
+                     p.centre_px() >= margin && p.centre_px() <= cfg.pixel.columns - 1 - margin;
+  out.map.confidence[static_cast<std::size_t>(r)][f] = fraction;
   double range = NAN, err_px = NAN, err_m = NAN;
-  if (p.valid) {
+  if (valid) {
     range = optics.range_from_centre_m(b, p.centre_px());
     out.map.range_m[static_cast<std::size_t>(r)][f] = range;
   }
   if (t.visible) {
     ++out.visible;
     out.map.truth_m[static_cast<std::size_t>(r)][f] = t.range_m;
-    if (p.valid) {
+    if (valid) {
       ++out.detected;
       err_px = p.centre_px() - t.centre_px;
       err_m = range - t.range_m;
@@ -97,24 +104,31 @@ void add_point(Reconstruction& out, const scene::SceneOptics& optics, const Fram
     } else {
       ++out.missed;
     }
-  } else if (p.valid) {
+  } else if (valid) {
     ++out.false_detections;
   }
   if (t.visible || p.valid)
-    out.points +=
-        fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
-                    t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
-                    p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px), csv_number(err_m));
+    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
+                              t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
+                              p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px),
+                              csv_number(err_m), valid ? 1 : 0, csv_number(fraction));
 }
 
-Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics, int rows,
-                           const golden::FrameTiming& gt) {
+Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics,
+                           const LsConventionalConfig& cfg, const golden::FrameTiming& gt) {
   Reconstruction out;
+  const int rows = cfg.pixel.rows, samplings = cfg.multisampling.samplings;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
   out.map.truth_m = out.map.range_m;
+  out.map.confidence = out.map.range_m;
+  out.map.confidence_label = "fraction of the samplings that found the spot";
+  out.map.validity_rule = fmt::format(
+      "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of its {} samplings (at "
+      "least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
+      cfg.validity.min_detecting_fraction, samplings, cfg.validity.edge_margin_px);
   out.points =
       "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_"
-      "m\n";
+      "m,valid,detecting_fraction\n";
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   for (std::size_t f = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
@@ -125,7 +139,7 @@ Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics&
       out.timing_matches = out.timing_matches && fr.phase_cycles[i] == gt.phases[i].cycles;
     }
     out.frames_csv += fmt::format(",{}\n", fr.rows_detected());
-    for (int r = 0; r < rows; ++r) add_point(out, optics, fr, b, r, f);
+    for (int r = 0; r < rows; ++r) add_point(out, optics, fr, b, r, f, cfg);
   }
   for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
   return out;
@@ -181,6 +195,7 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
       {"sc_errors", res.sc_errors},
   };
   add_timing_json(j, report, gt);
+  add_validity_json(j, rec.map);
   rec.err.to_json(j, true);
   return j;
 }
@@ -217,7 +232,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 
   const golden::FrameTiming gt = golden::frame_timing(c.cfg.timing, c.cfg.multisampling.samplings);
   SimulationResult out;
-  Reconstruction rec = reconstruct(res, optics, c.cfg.pixel.rows, gt);
+  Reconstruction rec = reconstruct(res, optics, c.cfg, gt);
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);

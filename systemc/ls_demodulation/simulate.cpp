@@ -73,23 +73,30 @@ struct Reconstruction {
   bool timing_matches = true;
 };
 
-// One row of one frame: the range, its error against the truth, its points.csv line.
-void add_point(Reconstruction& out, const scene::DemodOptics& optics, const DemodFrameResult& fr, int r,
-               std::size_t f) {
+// One row of one frame: the range, its error against the truth, its points.csv line. The row's
+// range counts when enough of the frame's decisions found the spot and its centre lies inside the
+// edge margin.
+void add_point(Reconstruction& out, const scene::DemodOptics& optics, const DemodFrameResult& fr, int r, std::size_t f,
+               const LsDemodulationConfig& cfg) {
   const auto b = static_cast<long long>(fr.frame);
   const auto& rr = fr.rows[static_cast<std::size_t>(r)];
   const bool vis = optics.visible(b, r);
+  const double fraction = static_cast<double>(rr.detections) / cfg.grid.detections;
+  const double margin = cfg.edge_margin_px;
+  const bool valid = rr.valid() && fraction >= cfg.min_detecting_fraction * (1 - 1e-12) && rr.centre_px() >= margin &&
+                     rr.centre_px() <= cfg.pixel.columns - 1 - margin;
+  out.map.confidence[static_cast<std::size_t>(r)][f] = fraction;
   const double truth_x = optics.centre_px(b, r),
                truth_z = optics.visible(b, r) || optics.range_m(b, r) > 0 ? optics.range_m(b, r) : NAN;
   double range = NAN, err_px = NAN, err_m = NAN;
-  if (rr.valid()) {
+  if (valid) {
     range = optics.range_from_centre_m(b, rr.centre_px());
     out.map.range_m[static_cast<std::size_t>(r)][f] = range;
   }
   if (vis) {
     ++out.visible;
     out.map.truth_m[static_cast<std::size_t>(r)][f] = truth_z;
-    if (rr.valid() && std::isfinite(range)) {
+    if (valid && std::isfinite(range)) {
       ++out.detected;
       err_px = rr.centre_px() - truth_x;
       err_m = range - truth_z;
@@ -97,21 +104,31 @@ void add_point(Reconstruction& out, const scene::DemodOptics& optics, const Demo
     } else {
       ++out.missed;
     }
-  } else if (rr.valid()) {
+  } else if (valid) {
     ++out.false_det;
   }
   if (vis || rr.valid())
-    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, csv_number(truth_x),
-                              csv_number(truth_z), rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "",
-                              csv_number(range), csv_number(err_px), csv_number(err_m));
+    out.points +=
+        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, csv_number(truth_x),
+                    csv_number(truth_z), rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "",
+                    csv_number(range), csv_number(err_px), csv_number(err_m), valid ? 1 : 0, csv_number(fraction));
 }
 
-Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& optics, int rows,
+Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& optics, const LsDemodulationConfig& cfg,
                            const golden::FrameTiming& gt) {
   Reconstruction out;
+  const int rows = cfg.pixel.rows;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
   out.map.truth_m = out.map.range_m;
-  out.points = "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m\n";
+  out.map.confidence = out.map.range_m;
+  out.map.confidence_label = "fraction of the frame's correlation decisions that found the spot";
+  out.map.validity_rule = fmt::format(
+      "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of the {} decision(s) of "
+      "its frame (at least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
+      cfg.min_detecting_fraction, cfg.grid.detections, cfg.edge_margin_px);
+  out.points =
+      "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m,valid,"
+      "detecting_fraction\n";
   out.frames_csv = "frame,cycles,end_cycle";
   for (const auto& p : gt.phases) out.frames_csv += "," + p.name;
   out.frames_csv += ",rows_detected\n";
@@ -124,7 +141,7 @@ Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& 
     }
     out.timing_matches = out.timing_matches && fr.cycles == gt.frame_cycles;
     out.frames_csv += fmt::format(",{}\n", fr.rows_detected());
-    for (int r = 0; r < rows; ++r) add_point(out, optics, fr, r, f);
+    for (int r = 0; r < rows; ++r) add_point(out, optics, fr, r, f, cfg);
   }
   for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", fr.frame));
   return out;
@@ -179,6 +196,7 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
   };
   add_timing_json(j, report, gt);
   j["golden"]["frames_per_range_map"] = gt.frames_per_range_map;
+  add_validity_json(j, rec.map);
   rec.err.to_json(j, true);
   return j;
 }
@@ -217,7 +235,7 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
   const DemodRunResult res = run_model(req, params, cfg, kopt, optics, frames, vcd_base, host);
 
   SimulationResult out;
-  Reconstruction rec = reconstruct(res, optics, cfg.pixel.rows, gt);
+  Reconstruction rec = reconstruct(res, optics, cfg, gt);
   const Run run{
       req, params, cfg, kopt, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);

@@ -9,6 +9,7 @@
 
 #include "core/physics.h"
 #include "core/user_error.h"
+#include "golden/tof_lockin/validity.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/tap_charge.h"
 #include "systemc/common/poisson_sampler.h"
@@ -170,6 +171,16 @@ void TofLockinSensorKernel::tap_values(long long m, int r, int c, double* a, dou
     if (cfg_.readout.ambient_subtraction) v[k] -= adc_.value_V(code(f + 1, r, c, k));
   }
   *a = v[0], *b = v[1];
+}
+
+double TofLockinSensorKernel::snr(long long m, int r, int c) const {
+  const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
+  golden::MeasuredTaps t;
+  for (int k = 0; k < 2; ++k) {
+    t.led_V[k] = adc_.value_V(code(f, r, c, k));
+    if (cfg_.readout.ambient_subtraction) t.ambient_V[k] = adc_.value_V(code(f + 1, r, c, k));
+  }
+  return golden::measured_snr(cfg_, t);
 }
 
 double TofLockinSensorKernel::range_m(long long m, int r, int c) const {

@@ -55,6 +55,8 @@ class TofLockinSensorKernel {
   // Range of pixel (r, c) in range map m (eq. 2.25), NaN if not detected /
   // saturated.
   double range_m(long long m, int r, int c) const;
+  // SNR of a + b of pixel (r, c) in range map m from its own tap values (golden/tof_lockin/validity.h).
+  double snr(long long m, int r, int c) const;
   // Tap values a = V1 - V_cal (- ambient), b likewise, of range map m.
   void tap_values(long long m, int r, int c, double* a, double* b) const;
   int rows() const { return rows_; }

@@ -94,7 +94,9 @@ ModelRun run_model(const SimulationRequest& req, const TofLockinConfig& cfg, con
   return m;
 }
 
-// The range map averaged over the range maps run, and every value's error against the scene.
+// The range map averaged over the range maps run, and every value's error against the scene. A
+// value counts where the kernel gives one (above readout.detection_threshold_V, not clipped) and
+// the SNR of its a + b, from its own taps, reaches readout.min_snr (golden/tof_lockin/validity.h).
 struct Reconstruction {
   RangeMap map;
   long long visible = 0, detected = 0, missed = 0;
@@ -103,27 +105,36 @@ struct Reconstruction {
 
 Reconstruction reconstruct(const lk::TofLockinSensorKernel& k, const lk::LockinScene& sc, int R, int C) {
   Reconstruction out;
+  const double min_snr = k.config().readout.min_snr;
   out.map.range_m.assign(static_cast<std::size_t>(R), std::vector<double>(static_cast<std::size_t>(C), NAN));
   out.map.truth_m = out.map.range_m;
+  out.map.confidence = out.map.range_m;
   for (int c = 0; c < C; ++c) out.map.column_names.push_back(fmt::format("c{}", c));
   for (int r = 0; r < R; ++r)
     for (int c = 0; c < C; ++c) {
+      const auto ur = static_cast<std::size_t>(r), uc = static_cast<std::size_t>(c);
       const double truth = sc.distance_at(r, c, C);
-      out.map.truth_m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = truth;
-      double acc = 0;
+      out.map.truth_m[ur][uc] = truth;
+      double acc = 0, snr_sum = 0;
       int n = 0;
       for (long long m = 0; m < k.range_maps(); ++m) {
-        const double L = k.range_m(m, r, c);
-        ++out.visible;
-        if (!std::isfinite(L)) {
+        const double L = k.range_m(m, r, c), snr = k.snr(m, r, c);
+        ++out.visible, snr_sum += snr;
+        if (!std::isfinite(L) || snr < min_snr) {
           ++out.missed;
           continue;
         }
         ++out.detected, ++n, acc += L;
         out.err.add(L - truth);
       }
-      if (n) out.map.range_m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = acc / n;
+      if (n) out.map.range_m[ur][uc] = acc / n;
+      if (k.range_maps() > 0) out.map.confidence[ur][uc] = snr_sum / static_cast<double>(k.range_maps());
     }
+  out.map.confidence_label = "SNR of V1 + V2 from the pixel's own taps, mean over range maps";
+  out.map.validity_rule = fmt::format(
+      "valid where V1 + V2 >= readout.detection_threshold_V = {:g} V, no tap clipped, and its SNR >= readout.min_snr = "
+      "{:g}",
+      k.config().readout.detection_threshold_V, min_snr);
   return out;
 }
 
@@ -255,6 +266,7 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
   add_timing_json(j, report, gt);
   j["golden"]["accuracy_rms_m"] = json_number(golden.rms_m);
   j["golden"]["points"] = golden.points;
+  add_validity_json(j, rec.map);
   rec.err.to_json(j, false);
   return j;
 }

@@ -1,5 +1,7 @@
 #include "systemc/tof_spad/sensor_kernel.h"
 
+#include "golden/tof_spad/validity.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -163,13 +165,18 @@ GroupHistogram TofSpadKernel::simulate_group_ticked(std::uint64_t frame, int row
   return g;
 }
 
-std::optional<double> TofSpadKernel::estimate(const std::vector<long long>& events,
-                                              const std::vector<long long>& armed) const {
+golden::spad::HistogramCounts TofSpadKernel::counts(const std::vector<long long>& events,
+                                                    const std::vector<long long>& armed) const {
   golden::spad::HistogramCounts h;
   h.events.assign(events.begin(), events.end());
   h.armed.assign(armed.begin(), armed.end());
   h.share = share_;
-  return golden::spad::estimate_time_s(h, bins_, est_);
+  return h;
+}
+
+std::optional<double> TofSpadKernel::estimate(const std::vector<long long>& events,
+                                              const std::vector<long long>& armed) const {
+  return golden::spad::estimate_time_s(counts(events, armed), bins_, est_);
 }
 
 PixelResult TofSpadKernel::make_pixel(int row, int column, const GroupHistogram& g, int index) const {
@@ -177,8 +184,10 @@ PixelResult TofSpadKernel::make_pixel(int row, int column, const GroupHistogram&
   p.row = row, p.column = column;
   p.events = g.events[static_cast<size_t>(index)];
   p.armed = g.armed;
-  p.time_s = estimate(p.events, p.armed);
+  const golden::spad::HistogramCounts h = counts(p.events, p.armed);
+  p.time_s = golden::spad::estimate_time_s(h, bins_, est_);
   p.range_m = p.time_s ? 0.5 * phys::kSpeedOfLight_m_per_s * *p.time_s : NAN;
+  if (p.time_s) p.significance = golden::spad::peak_significance(h, est_).sigma;
   return p;
 }
 

@@ -46,6 +46,7 @@ struct PixelResult {
   long long avalanches = 0;
   std::optional<double> time_s;  // estimator output (round trip)
   double range_m = 0;            // c t / 2 (NaN when nothing detected)
+  double significance = 0;       // of the peak over the histogram's own background, sigma (golden/tof_spad/validity.h)
 };
 
 struct FrameResult {
@@ -94,6 +95,8 @@ class TofSpadKernel {
                                                           const RateSource& rates) const;
   // Estimator of the golden model on one pixel's histogram.
   std::optional<double> estimate(const std::vector<long long>& events, const std::vector<long long>& armed) const;
+  // The histogram as the golden estimator and validity test read it.
+  golden::spad::HistogramCounts counts(const std::vector<long long>& events, const std::vector<long long>& armed) const;
   PixelResult make_pixel(int row, int column, const GroupHistogram& g, int index) const;
 
   // Adds a simulated group to the frame's totals and path counters.

@@ -76,20 +76,29 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
   return res;
 }
 
-// The range map (mean over the frames), points.csv, frames.csv, and the counts: detections on
-// pixels outside the beam are spurious peaks with no echo to range, so they stay out of the error.
+// The range map (mean over the frames), points.csv, frames.csv, and the counts. A pixel's range
+// counts where its histogram's peak stands detection_sigma above the histogram's own background
+// (golden/tof_spad/validity.h): estimates without that are spurious peaks, no ranges; valid ones
+// on pixels outside the beam are false valids and stay out of the error.
 struct Reconstruction {
   RangeMap map;
-  std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events\n";
+  std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events,valid,significance_sigma\n";
   std::string frames_csv = "frame,cycles,laser_cycles,histogram_readout,avalanches,photons\n";
-  long long points_total = 0, detected = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;
+  long long points_total = 0, detected = 0, valid = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;
   long long groups_bg = 0, groups_bg_cyc = 0, background_points = 0, background_detections = 0;
+  long long background_valid = 0;
   RangeErrorStats err;
   bool timing_matches = true;
 };
 
+// Per pixel over the frames: the sum of valid ranges, their count, the sum of significances.
+struct PixelSums {
+  std::vector<std::vector<int>> valid;
+  std::vector<std::vector<double>> significance;
+};
+
 void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadScene& sc, const golden::FrameTiming& gt,
-               std::vector<std::vector<int>>& cnt) {
+               double min_sigma, PixelSums& sums) {
   out.frames_csv += fmt::format("{},{},{},{},{},{}\n", f.frame, f.cycles, f.phase_cycles[0], f.phase_cycles[1],
                                 f.avalanches, f.photons);
   out.timing_matches = out.timing_matches && f.cycles == gt.frame_cycles && f.phase_cycles[0] == gt.phases[0].cycles &&
@@ -103,34 +112,49 @@ void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadS
     for (long long e : p.events) ev += e;
     ++out.points_total;
     double err = NAN;
-    const bool lit = sc.lit(p.row, p.column);
+    const bool lit = sc.lit(p.row, p.column), valid = p.time_s && p.significance >= min_sigma;
     const auto r = static_cast<std::size_t>(p.row - sc.first_row),
                c = static_cast<std::size_t>(p.column - sc.first_column);
     if (lit) out.map.truth_m[r][c] = truth;
     out.background_points += !lit;
     if (p.time_s && !lit) ++out.background_detections;
-    if (p.time_s) {
-      ++out.detected;
+    if (valid && !lit) ++out.background_valid;
+    out.detected += p.time_s.has_value(), out.valid += valid;
+    if (valid) {
       if (lit) err = p.range_m - truth, out.err.add(err);
-      out.map.range_m[r][c] += p.range_m, ++cnt[r][c];  // a sum until every frame is in
+      out.map.range_m[r][c] += p.range_m, ++sums.valid[r][c];  // a sum until every frame is in
     }
-    out.points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth),
-                              p.time_s ? 1 : 0, p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev);
+    sums.significance[r][c] += p.significance;
+    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth),
+                              p.time_s ? 1 : 0, p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev,
+                              valid ? 1 : 0, csv_number(p.significance));
   }
 }
 
-Reconstruction reconstruct(const sp::SystemcRun& res, const scene::SpadScene& sc, const golden::FrameTiming& gt) {
+Reconstruction reconstruct(const sp::SystemcRun& res, const scene::SpadScene& sc, const golden::FrameTiming& gt,
+                           double min_sigma) {
   Reconstruction out;
   const auto rows = static_cast<std::size_t>(sc.rows), columns = static_cast<std::size_t>(sc.columns);
   out.map.range_m.assign(rows, std::vector<double>(columns, 0.0));
   out.map.truth_m.assign(rows, std::vector<double>(columns, NAN));
-  std::vector<std::vector<int>> cnt(rows, std::vector<int>(columns, 0));
-  for (const auto& f : res.frames) add_frame(out, f, sc, gt, cnt);
+  PixelSums sums{std::vector<std::vector<int>>(rows, std::vector<int>(columns, 0)),
+                 std::vector<std::vector<double>>(rows, std::vector<double>(columns, 0.0))};
+  for (const auto& f : res.frames) add_frame(out, f, sc, gt, min_sigma, sums);
+  const double frames = static_cast<double>(res.frames.size());
+  out.map.confidence.assign(rows, std::vector<double>(columns, NAN));
   for (std::size_t r = 0; r < rows; ++r)
-    for (std::size_t c = 0; c < columns; ++c)
-      out.map.range_m[r][c] = cnt[r][c] ? out.map.range_m[r][c] / cnt[r][c] : NAN;
+    for (std::size_t c = 0; c < columns; ++c) {
+      const int n = sums.valid[r][c];
+      out.map.range_m[r][c] = n ? out.map.range_m[r][c] / n : NAN;
+      out.map.confidence[r][c] = sums.significance[r][c] / frames;
+    }
   out.map.first_row = sc.first_row;
   for (int c = 0; c < sc.columns; ++c) out.map.column_names.push_back(fmt::format("c{}", sc.first_column + c));
+  out.map.confidence_label = "peak significance over the histogram's background [sigma], mean over frames";
+  out.map.validity_rule = fmt::format(
+      "valid where the peak window's counts stand >= evaluation.detection_sigma = {:g} sigma above the background "
+      "level of the same histogram (Poisson, corrected for the peak search over the codes)",
+      min_sigma);
   return out;
 }
 
@@ -162,11 +186,9 @@ void add_paths(const Run& run, nlohmann::json& j) {
                       {"groups_aggregated", rec.groups_agg},
                       {"groups_per_cycle", rec.groups_cyc},
                       {"blocker", run.kernel.aggregation_blocker()}};
-  j["background_only"] = {{"points", rec.background_points},
-                          {"detections", rec.background_detections},
-                          {"groups_class", rec.groups_bg},
-                          {"groups_per_cycle", rec.groups_bg_cyc},
-                          {"blocker", run.kernel.background_blocker()}};
+  j["background_only"] = {{"points", rec.background_points},       {"detections", rec.background_detections},
+                          {"valid", rec.background_valid},         {"groups_class", rec.groups_bg},
+                          {"groups_per_cycle", rec.groups_bg_cyc}, {"blocker", run.kernel.background_blocker()}};
 }
 
 nlohmann::json summary(const Run& run, const SimulationReport& report) {
@@ -195,6 +217,7 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
       {"simulated_time_s", res.simulated_time_s},
       {"points", rec.points_total},
       {"points_detected", rec.detected},
+      {"points_valid", rec.valid},
       {"pixels_simulated", sc.rows * sc.columns},
       {"photons_simulated", rec.photons},
       {"avalanches_simulated", rec.avalanches},
@@ -205,6 +228,7 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
   };
   add_timing_json(j, report, gt);
   add_paths(run, j);
+  add_validity_json(j, rec.map);
   rec.err.to_json(j, false);
   return j;
 }
@@ -233,11 +257,11 @@ SimulationReport report(const Run& run) {
   r.frame_label = "frame";
   set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), gt.frames_per_range_map,
              rec.timing_matches);
-  r.points_line =
-      fmt::format("pixels {} x {} frames, detected {}", sc.rows * sc.columns, res.frames.size(), rec.detected);
+  r.points_line = fmt::format("pixels {} x {} frames, detected {}, valid {}", sc.rows * sc.columns, res.frames.size(),
+                              rec.detected, rec.valid);
   if (rec.background_points > 0)
-    r.points_line += fmt::format(" ({} of {} background-only points: spurious, not in the error)",
-                                 rec.background_detections, rec.background_points);
+    r.points_line += fmt::format(" ({} of {} background-only points valid: false valids, not in the error)",
+                                 rec.background_valid, rec.background_points);
   r.error = rec.err;
   r.wall_time_s = wall_s;
   r.wall_note = wall_note(run);
@@ -259,7 +283,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
 
   const golden::FrameTiming gt = golden::frame_timing_tof_spad(params);
   SimulationResult out;
-  Reconstruction rec = reconstruct(res, sc, gt);
+  Reconstruction rec = reconstruct(res, sc, gt, c.cfg.evaluation.detection_sigma);
   const Run run{req, params, kopt, kernel,     sc,
                 res, gt,     rec,  sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);

@@ -1,0 +1,68 @@
+#include "app/plot_style.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rangesim::app {
+
+namespace {
+
+// Okabe & Ito, "Color universal design": distinguishable with every common colour-vision deficiency.
+const char* kLineColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9", "#000000", "#f0e442"};
+const int kPointTypes[] = {7, 5, 9, 11, 13, 4, 6, 8};
+
+}  // namespace
+
+std::string plot_preamble() {
+  return "set encoding utf8\nset micro\nset tics out\nset grid lt 0 lw 1 lc rgb '#b0b0b0'\n";
+}
+
+std::string viridis_palette() {
+  return "set palette defined (0 '#440154', 1 '#482878', 2 '#3e4989', 3 '#31688e', 4 '#26828e', 5 '#1f9e89', "
+         "6 '#35b779', 7 '#6ece58', 8 '#b5de2b', 9 '#fde725')\n";
+}
+
+std::string diverging_palette() {
+  return "set palette defined (0 '#2166ac', 1 '#67a9cf', 2 '#d1e5f0', 3 '#f7f7f7', 4 '#fddbc7', 5 '#ef8a62', "
+         "6 '#b2182b')\n";
+}
+
+std::string log_format(const std::string& axis, const std::string& unit) {
+  static const char* no_prefix[] = {"", "px", "dB", "%", "LSB", "sigma"};
+  for (const char* u : no_prefix)
+    if (unit == u) return fmt::format("set format {} '%g'\n", axis);
+  return fmt::format("set format {} '%.0s%c'\n", axis);
+}
+
+std::string log_cbtics(double lo, double hi) {
+  if (!(lo > 0) || !(hi >= lo)) return "";
+  std::string tics;
+  for (int e = static_cast<int>(std::floor(std::log10(lo))); e <= static_cast<int>(std::ceil(std::log10(hi))); ++e)
+    for (double m : {1.0, 2.0, 5.0}) {
+      const double v = m * std::pow(10.0, e);
+      if (v < lo * (1 - 1e-9) || v > hi * (1 + 1e-9)) continue;
+      tics += fmt::format("{}\"{:g}\" {:g}", tics.empty() ? "" : ", ", v, v);
+    }
+  return tics.empty() ? "" : "set cbtics (" + tics + ")\n";
+}
+
+std::string series_style(std::size_t i) {
+  const std::size_t n = sizeof(kLineColours) / sizeof(*kLineColours);
+  return fmt::format("lc rgb '{}' dt {} pt {} lw {:.1f} ps {:.1f}", kLineColours[i % n], 1 + static_cast<int>(i % 4),
+                     kPointTypes[i % n], std::max(1.0, 3.5 - 0.8 * static_cast<double>(i)),
+                     std::max(0.5, 1.1 - 0.2 * static_cast<double>(i)));
+}
+
+std::string series_colour(std::size_t i) { return kLineColours[i % (sizeof(kLineColours) / sizeof(*kLineColours))]; }
+
+std::pair<double, double> finite_range(const std::vector<std::vector<double>>& rows) {
+  double lo = NAN, hi = NAN;
+  for (const auto& r : rows)
+    for (double v : r)
+      if (std::isfinite(v)) lo = std::isnan(lo) ? v : std::min(lo, v), hi = std::isnan(hi) ? v : std::max(hi, v);
+  return {lo, hi};
+}
+
+}  // namespace rangesim::app

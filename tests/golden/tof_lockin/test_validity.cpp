@@ -1,0 +1,48 @@
+// The tof-lockin range-map validity (golden/tof_lockin/validity.h): the SNR a pixel's own tap
+// values give is golden's SNR of V1 + V2 when the taps read their means, so a map's valid pixels
+// and the evaluate grid's detectable points follow one rule (readout.min_snr).
+#include <gtest/gtest.h>
+
+#include "golden/tof_lockin/lockin_point.h"
+#include "golden/tof_lockin/pulse_timing.h"
+#include "golden/tof_lockin/tap_charge.h"
+#include "golden/tof_lockin/validity.h"
+#include "lockin_test_util.h"
+
+namespace rangesim::golden {
+
+namespace {
+
+MeasuredTaps mean_taps(const TofLockinConfig& cfg, double signal_A, double background_A, double distance_m) {
+  const FrameCharge c = frame_charge(cfg, signal_A, background_A, round_trip_delay_s(distance_m));
+  MeasuredTaps t;
+  for (int k = 0; k < 2; ++k)
+    t.led_V[k] = tap_sample(cfg, k, c.total_e(k)).mean_V, t.ambient_V[k] = tap_sample(cfg, k, c.ambient_e()).mean_V;
+  return t;
+}
+
+}  // namespace
+
+TEST(LockinValidity, MeasuredSnrAtTheMeansIsGoldensSnr) {
+  const TofLockinConfig cfg = test::lockin_config();
+  int compared = 0;
+  for (double signal : {2e-11, 1e-10, 5e-10, 1.5e-9})
+    for (double background : {1e-14, 1e-11, 1e-9}) {
+      const LockinPoint pt = evaluate_point(cfg, signal, background, 1.0, 1);
+      if (pt.snr <= 0) continue;  // saturated or below threshold: no SNR computed
+      EXPECT_NEAR(measured_snr(cfg, mean_taps(cfg, signal, background, 1.0)) / pt.snr, 1.0, 0.02)
+          << signal << " A, " << background << " A";
+      ++compared;
+    }
+  EXPECT_GE(compared, 8);
+}
+
+TEST(LockinValidity, NoLightNoSnr) {
+  const TofLockinConfig cfg = test::lockin_config();
+  MeasuredTaps t = mean_taps(cfg, 0.0, 1e-10, 1.0);
+  EXPECT_LT(measured_snr(cfg, t), 1.0);
+  t.led_V[0] = t.ambient_V[0] - 0.01, t.led_V[1] = t.ambient_V[1] - 0.01;
+  EXPECT_EQ(measured_snr(cfg, t), 0.0);
+}
+
+}  // namespace rangesim::golden
