@@ -459,6 +459,12 @@ void write_text(const std::string& path, const std::string& text) {
   if (!out) throw std::runtime_error("cosim: cannot write " + path);
 }
 
+bool cosim_runs(const std::string& sensor) {
+  for (const auto& t : tb::cosim_targets())
+    if (sensor == t.name) return true;
+  return false;
+}
+
 int run_cosim(const CosimCommandOptions& opt) {
   const auto& targets = tb::cosim_targets();
   if (opt.list) {

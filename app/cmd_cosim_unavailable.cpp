@@ -4,6 +4,8 @@
 
 namespace rangesim::app {
 
+bool cosim_runs(const std::string&) { return false; }
+
 int run_cosim(const CosimCommandOptions&) {
   throw NotModelled{"rangesim cosim: this build has no RTL (configured with RANGESIM_WITH_RTL=OFF)"};
 }

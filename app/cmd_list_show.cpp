@@ -1,5 +1,6 @@
 // rangesim list / rangesim show: the presets and their resolved parameters.
 #include <fmt/format.h>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "app/command_data.h"
@@ -10,10 +11,37 @@
 
 namespace rangesim::app {
 
+namespace {
+std::vector<SensorCommand>& sensor_commands() {
+  static std::vector<SensorCommand> list;
+  return list;
+}
+
+const char* const kGoldenCommands[] = {"evaluate", "frame-rate", "table", "sweep"};
+
+// The commands in the order `list` shows them: the golden ones, then the registered ones.
+std::vector<std::string> command_names() {
+  std::vector<std::string> names(std::begin(kGoldenCommands), std::end(kGoldenCommands));
+  for (const auto& c : sensor_commands()) names.push_back(c.name);
+  return names;
+}
+}  // namespace
+
+void add_sensor_command(const SensorCommand& c) {
+  for (auto& e : sensor_commands())
+    if (e.name == c.name) return void(e = c);
+  sensor_commands().push_back(c);
+}
+
 nlohmann::json list_json() {
   nlohmann::json list = nlohmann::json::array();
   for (const auto& s : sensors()) {
     const bool modelled = golden::golden_model(s.id) != nullptr;  // evaluate, table and frame-rate
+    // Every command and whether it runs for this sensor: the golden ones (sweep varies the golden
+    // evaluation) and those whose registries the program linked.
+    nlohmann::json commands = nlohmann::json::object();
+    for (const char* c : kGoldenCommands) commands[c] = modelled;
+    for (const auto& c : sensor_commands()) commands[c.name] = c.runs(s.id);
     std::string file;
     try {
       file = resolve_preset(s.id);
@@ -25,6 +53,7 @@ nlohmann::json list_json() {
                     {"thesis_ref", s.thesis_ref},
                     {"golden_modelled", modelled},
                     {"timing_modelled", modelled},
+                    {"commands", commands},
                     {"file", file}});
   }
   return list;
@@ -36,12 +65,17 @@ int run_list(const ListOptions& opt) {
     fmt::print("{}\n", list.dump(2));
     return 0;
   }
-  fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", "preset", "thesis", "evaluate", "frame-rate", "architecture");
+  // One column per command.
+  const std::vector<std::string> names = command_names();
+  std::string head = fmt::format("{:<17} {:<7}", "preset", "thesis");
+  for (const auto& n : names) head += fmt::format(" {:<{}}", n, n.size());
+  fmt::print("{} architecture\n", head);
   for (const auto& s : list) {
-    const char* modelled = s["golden_modelled"].get<bool>() ? "yes" : "not yet";
-    fmt::print("{:<17} {:<7} {:<10} {:<11} {}\n", s["id"].get<std::string>(), s["thesis_ref"].get<std::string>(),
-               modelled, modelled, s["title"].get<std::string>());
+    std::string line = fmt::format("{:<17} {:<7}", s["id"].get<std::string>(), s["thesis_ref"].get<std::string>());
+    for (const auto& n : names) line += fmt::format(" {:<{}}", s["commands"][n].get<bool>() ? "yes" : "-", n.size());
+    fmt::print("{} {}\n", line, s["title"].get<std::string>());
   }
+  fmt::print("(\"-\": the command does not run for that sensor, exit 3)\n");
   return 0;
 }
 

@@ -44,6 +44,12 @@ std::vector<SimulateEntry>& simulate_registry() {
   return list;
 }
 
+bool simulate_runs(const std::string& sensor) {
+  for (const auto& e : simulate_registry())
+    if (e.sensor == sensor) return true;
+  return false;
+}
+
 namespace {
 
 // SystemC displays its reports on stdout, which must stay clean JSON under --json: display them

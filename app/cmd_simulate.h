@@ -42,6 +42,8 @@ int run_simulate(const SimulateOptions& opt);
 using SimulateEntry = systemc::SimulateEntry;
 // The shipped sensors' scene runs (core/sensor_list.h), then any added at run time.
 std::vector<SimulateEntry>& simulate_registry();
+// Whether `simulate` runs for the sensor (it has a scene run).
+bool simulate_runs(const std::string& sensor);
 
 // The scene run of the preset's sensor, with the flags only some runs take checked against it:
 // NotModelled without a clock-level model, UserError for --no-aggregate / --time-step where the

@@ -9,7 +9,16 @@
 
 namespace rangesim::app {
 
-// `list --json`: every registered sensor, what is modelled and its preset file.
+// A command that runs only for the sensors its level's registry holds (simulate, evaluate --trials,
+// cosim). `list` asks each one registered; the registries live in libraries this one does not
+// link, so the program that links them registers the question (app/main.cpp, python/module.cpp).
+struct SensorCommand {
+  std::string name;                        // as on the command line, e.g. "simulate"
+  bool (*runs)(const std::string& sensor);  // whether it runs for this sensor id
+};
+void add_sensor_command(const SensorCommand& c);
+
+// `list --json`: every registered sensor, which commands run for it and its preset file.
 nlohmann::json list_json();
 
 // `show --json`: the resolved parameters with unit, source, file, meaning and allowed range.

@@ -125,5 +125,7 @@ struct CosimCommandOptions {
   bool resume = false;
 };
 int run_cosim(const CosimCommandOptions& opt);
+// Whether `cosim <sensor>` has a target (false in a build without Verilator).
+bool cosim_runs(const std::string& sensor);
 
 }  // namespace rangesim::app

@@ -10,13 +10,22 @@
 #include "app/cli_common.h"
 #include "app/cli_parse.h"
 #include "app/cmd_simulate.h"
+#include "app/command_data.h"
 #include "app/commands.h"
 #include "app/run_control.h"
 #include "core/user_error.h"
+#include "systemc/common/montecarlo.h"
 
 using namespace rangesim::app;
 
 namespace {
+
+// The commands whose registries this program links, for `list`.
+void register_sensor_commands() {
+  add_sensor_command({"simulate", &simulate_runs});
+  add_sensor_command({"evaluate --trials", &rangesim::mc::has_mc_model});
+  add_sensor_command({"cosim", &cosim_runs});
+}
 
 int run(const ParsedCommand& c) {
   switch (c.kind) {
@@ -58,6 +67,7 @@ int main(int argc, char** argv) {
   const CommandLine cl = parse_command_line(argc, argv, std::cout, std::cerr);
   if (cl.finished) return cl.exit_code;
   start_budget(budget_of(cl.command));
+  register_sensor_commands();
   try {
     return run(cl.command);
   } catch (const std::bad_alloc&) {

@@ -4,7 +4,10 @@
 #include "python/bindings.h"
 
 #include "app/cli_common.h"
+#include "app/cmd_simulate.h"
+#include "app/command_data.h"
 #include "core/user_error.h"
+#include "systemc/common/montecarlo.h"
 
 namespace rangesim::python {
 
@@ -47,4 +50,7 @@ PYBIND11_MODULE(rangesim, m) {
   rp::bind_evaluate(sensor);
   rp::bind_simulate(sensor);
   rp::bind_kernels(m, sensor);
+  // What presets() reports per sensor: the module runs simulate and the Monte Carlo, not cosim.
+  rangesim::app::add_sensor_command({"simulate", &rangesim::app::simulate_runs});
+  rangesim::app::add_sensor_command({"evaluate --trials", &rangesim::mc::has_mc_model});
 }

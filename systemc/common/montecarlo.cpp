@@ -52,4 +52,10 @@ std::unique_ptr<McModel> make_mc_model(const ParamSet& params) {
 
 void register_mc_model(const std::string& sensor_id, McFactory make) { mc_registry().emplace_back(sensor_id, make); }
 
+bool has_mc_model(const std::string& sensor_id) {
+  for (const auto& [id, make] : mc_registry())
+    if (id == sensor_id) return true;
+  return false;
+}
+
 }  // namespace rangesim::mc

@@ -70,5 +70,7 @@ struct SpotPlacement {
 std::unique_ptr<McModel> make_mc_model(const ParamSet& params);
 using McFactory = std::unique_ptr<McModel> (*)(const ParamSet& params);
 void register_mc_model(const std::string& sensor_id, McFactory make);
+// Whether the sensor has a Monte Carlo model (`evaluate --trials` runs for it).
+bool has_mc_model(const std::string& sensor_id);
 
 }  // namespace rangesim::mc

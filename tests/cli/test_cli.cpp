@@ -57,6 +57,13 @@ TEST_F(Cli, ListNamesAllFourSensors) {
   ASSERT_EQ(j.size(), 4u);
   EXPECT_EQ(j[0]["id"], "ls-conventional");
   EXPECT_TRUE(j[0]["golden_modelled"].get<bool>());
+  // Every command per sensor, from the registries the binary links.
+  for (const auto& s : j)
+    for (const char* c : {"evaluate", "frame-rate", "table", "sweep", "simulate", "evaluate --trials", "cosim"})
+      EXPECT_TRUE(s["commands"].contains(c)) << s["id"] << " " << c;
+  EXPECT_TRUE(j[3]["commands"]["simulate"].get<bool>());
+  const auto text = rangesim("list").out;
+  EXPECT_NE(text.find("simulate evaluate --trials cosim"), std::string::npos) << text;
 }
 
 TEST_F(Cli, ShowGivesUnitsAndSources) {
