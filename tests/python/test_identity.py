@@ -30,7 +30,11 @@ class Identity(CommandCase):
     """list, show, frame-rate and evaluate (golden)."""
 
     def test_presets_is_list_json(self):
-        self.assertEqual(rangesim.presets(), cli_json("list", "--json"))
+        # The module does not co-simulate RTL: its command table has no "cosim"; the rest is the same.
+        cli = cli_json("list", "--json")
+        for s in cli:
+            del s["commands"]["cosim"]
+        self.assertEqual(rangesim.presets(), cli)
         self.assertGreaterEqual(len(rangesim.presets()), 4)
 
     def test_show_with_set_is_show_json(self):
