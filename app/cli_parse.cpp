@@ -413,6 +413,7 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   co->add_flag("--resume", co_opt.resume,
                "'all': continue a killed or interrupted run from its journal (same options); the report equals an\n"
                "uninterrupted run's apart from wall times");
+  add_budgets(co, c);
 
   try {
     app.parse(argc, argv);

@@ -8,11 +8,14 @@
 // and cached by tb/common/rtl_build.h; its report comes back as JSON and renders the same way.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -26,6 +29,8 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "app/output_lock.h"
+#include "app/run_control.h"
 #include "app/sweep_journal.h"
 #include "core/preset.h"
 #include "core/user_error.h"
@@ -377,11 +382,19 @@ json run_child(const std::string& target, const CosimCommandOptions& opt, unsign
       "rangesim", "cosim", target, "--json", "--cycles", std::to_string(cycles), "--seed", std::to_string(opt.seed)};
   if (!trace.empty()) args.insert(args.end(), {"--trace", trace});
   if (!coverage_out.empty()) args.insert(args.end(), {"--coverage-out", coverage_out});
+  // The child gets what is left of the time budget (it ends itself, exit 4) and the memory budget.
+  if (std::isfinite(time_budget_left()))
+    args.insert(args.end(), {"--max-seconds", fmt::format("{:.3f}", std::max(0.001, time_budget_left()))});
+  if (!run_budget().max_memory_text.empty()) args.insert(args.end(), {"--max-memory", run_budget().max_memory_text});
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("cosim all: pipe failed");
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("cosim all: fork failed");
   if (pid == 0) {
+    // A parent ended at once (a budget, a second signal) takes its target with it.
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(143);
     dup2(fds[1], STDOUT_FILENO);
     close(fds[0]);
     close(fds[1]);
@@ -517,7 +530,13 @@ int run_cosim(const CosimCommandOptions& opt) {
 
   std::vector<json> runs;
   std::unique_ptr<SweepJournal> journal;
+  std::unique_ptr<OutputLock> journal_lock;
   if (all) {
+    // One run per journal: a second `all` (or a --resume) on a live run's journal is refused.
+    const std::filesystem::path journal_dir = std::filesystem::absolute(opt.journal).parent_path();
+    std::error_code ec;
+    std::filesystem::create_directories(journal_dir, ec);
+    journal_lock = std::make_unique<OutputLock>(journal_dir.string(), "--journal");
     journal = std::make_unique<SweepJournal>(opt.journal, all_fingerprint(opt, cycles, targets), opt.resume);
     if (!journal->done().empty())
       fmt::print(stderr, "cosim: resuming: {} of {} targets from {}\n", journal->done().size(), targets.size(),
@@ -530,6 +549,11 @@ int run_cosim(const CosimCommandOptions& opt) {
         runs.push_back(json::parse(it->second));
         continue;
       }
+      if (time_budget_left() <= 0) {
+        fmt::print(stderr, "cosim: --max-seconds {} exceeded; {} of {} targets kept in {}; continue with:\n  {}\n",
+                   run_budget().max_seconds_text, runs.size(), targets.size(), journal->path(), resume_command(opt));
+        return kExitBudget;
+      }
       const std::string trace = per_target(opt.trace, ".vcd", t.name);
       // The full-size readout costs milliseconds of wall time per cycle (375 x 365 pixels): in
       // `all` it gets at most ten frame accesses, else a large N would run for hours. Run it
@@ -541,12 +565,14 @@ int run_cosim(const CosimCommandOptions& opt) {
       try {
         r = run_child(t.name, opt, n, trace, per_target(opt.coverage_out, ".dat", t.name));
       } catch (const std::runtime_error&) {
-        if (!sigint_flag().load()) throw;
+        if (!sigint_flag().load() && time_budget_left() > 0) throw;
       }
-      if (sigint_flag().load()) {
-        fmt::print(stderr, "cosim: interrupted; {} of {} targets kept in {}; continue with:\n  {}\n", runs.size(),
-                   targets.size(), journal->path(), resume_command(opt));
-        return kExitInterrupted;
+      if (sigint_flag().load() || time_budget_left() <= 0) {
+        const bool budget = !sigint_flag().load();
+        fmt::print(stderr, "cosim: {}; {} of {} targets kept in {}; continue with:\n  {}\n",
+                   budget ? fmt::format("--max-seconds {} exceeded", run_budget().max_seconds_text) : stop_reason(),
+                   runs.size(), targets.size(), journal->path(), resume_command(opt));
+        return budget ? kExitBudget : stop_exit_code();
       }
       journal->append(static_cast<long long>(i), r.dump());
       runs.push_back(std::move(r));

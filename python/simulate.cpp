@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "app/resource_estimate.h"
 #include "app/cmd_simulate.h"
 #include "app/simulate/simulate_render.h"
 #include "python/bindings.h"
@@ -25,6 +26,9 @@ class PythonHost : public systemc::SimulationHost {
   std::function<void(long long)> progress(const std::string&, long long) override {
     if (!interruptible_) return {};
     return [this](long long) { in_.check(); };
+  }
+  void check_memory(double bytes, const std::string& what, const std::string& reduce) override {
+    app::check_resources("simulate", {app::kBaseMemoryBytes + bytes, 0, what, reduce}, "");
   }
 
  private:

@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/output_dir.h"
+#include "app/resource_estimate.h"
 #include "app/simulate/simulate_output.h"
 #include "app/simulate/simulate_report.h"
 #include "app/simulate/trace_output.h"
@@ -49,6 +50,9 @@ class CommandHost : public systemc::SimulationHost {
   std::function<void(long long)> progress(const std::string& unit, long long total) override {
     auto p = std::make_shared<Progress>(unit, total, start_);
     return [p](long long done) { (*p)(done); };
+  }
+  void check_memory(double bytes, const std::string& what, const std::string& reduce) override {
+    check_resources("simulate", {kBaseMemoryBytes + bytes, 0, what, reduce}, "");
   }
 
   OutputDir& out() {

@@ -44,6 +44,9 @@ class SimulationHost {
   virtual void open_output(const std::string& scene_name) = 0;
   // Progress of a long run: called with the count of `unit`s done (of `total`).
   virtual std::function<void(long long done)> progress(const std::string& unit, long long total) = 0;
+  // The run's estimate of its peak memory, made before the model runs: a run that cannot fit is
+  // refused here (UserError naming `what` and the flags in `reduce`) instead of being ended late.
+  virtual void check_memory(double bytes, const std::string& what, const std::string& reduce) = 0;
 };
 
 // Range error of detected points against the ground truth (m; px where the sensor has one).

@@ -227,6 +227,9 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
         "--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
   const scene::Scene sc = scene::load_scene(req.scene, "ls-conventional");
   const scene::SceneOptics optics(c.cfg, sc);
+  // Per frame access and row: the centre, its points.csv line and the map's cells.
+  host.check_memory(static_cast<double>(c.frames) * c.cfg.pixel.rows * 256.0,
+                    fmt::format("{} frame accesses x {} rows", c.frames, c.cfg.pixel.rows), "--frames");
   host.open_output(sc.name);
   const SensorRunResult res = run_model(req, c.cfg, optics, c.frames, vcd_base, host);
 

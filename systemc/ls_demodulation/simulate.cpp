@@ -230,6 +230,9 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
   const long long frames = checked_frames(req, gt);
   const scene::DemodScene sc = scene::load_demod_scene(req.scene, cfg);
   const scene::DemodOptics optics{cfg, sc};
+  // Per frame and row: the result, the activation bits, its points.csv line and the map's cells.
+  host.check_memory(static_cast<double>(frames) * cfg.pixel.rows * (256.0 + cfg.pixel.columns / 8.0),
+                    fmt::format("{} frames x {} rows", frames, cfg.pixel.rows), "--frames");
   host.open_output(sc.name);
   const DemodKernelOptions kopt = kernel_options(req);
   const DemodRunResult res = run_model(req, params, cfg, kopt, optics, frames, vcd_base, host);

@@ -305,8 +305,12 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
   {
     lk::LockinGateGeneratorKernel check(cfg);
   }  // T_rep on the gate-clock grid, or UserError before anything is written
-  host.open_output(sc.name);
   const int R = sc.window_rows(cfg), C = sc.window_columns(cfg);
+  // Two ADC codes and two inputs per pixel and frame are kept, with each pixel's state.
+  host.check_memory(static_cast<double>(R) * C * (32.0 * static_cast<double>(frames) + 512),
+                    fmt::format("{} x {} pixels x {} frames, two taps each", R, C, frames),
+                    "--frames, the scene's window");
+  host.open_output(sc.name);
   const lk::LockinSimOptions kopt = kernel_options(req);
   const ModelRun model = run_model(req, cfg, kopt, sc, frames, gt, vcd_base, host);
 

@@ -274,9 +274,17 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
   const std::string vcd_base = host.open_trace();
   scene::SpadScene sc = scene::load_spad_scene(req.scene, c.cfg, c.array_rows, c.array_columns);
   if (req.dense) sc.first_row = 0, sc.rows = c.array_rows, sc.first_column = 0, sc.columns = c.array_columns;
-  host.open_output(sc.name);
   const sp::TofSpadKernelOptions kopt = kernel_options(req);
   const sp::TofSpadKernel kernel(c.cfg, c.array_rows, c.array_columns, kopt);
+  const int codes = kernel.codes();
+  // Every pixel's histogram and armed counts are kept per frame (8 bytes a code each), with its
+  // points.csv line and the map's cells.
+  const double pixel_frames = static_cast<double>(sc.rows) * sc.columns * static_cast<double>(c.frames);
+  host.check_memory(
+      pixel_frames * (16.0 * codes + 256),
+      fmt::format("{} x {} pixels x {} frames, two {}-code histograms each", sc.rows, sc.columns, c.frames, codes),
+      "--frames, the scene's window (or drop --dense)");
+  host.open_output(sc.name);
   double sim_wall_s = 0;
   const sp::SystemcRun res =
       run_model(req, kernel, sc, c.cfg.tdc.columns_per_tdc, c.frames, vcd_base, host, sim_wall_s);

@@ -193,3 +193,37 @@ TEST(Reliability, ProgressCountsRealPointsOnce) {
 }
 
 }  // namespace
+
+// cosim all: one run per journal, its time budget and SIGTERM end it between targets with the
+// journal kept and the exit code of the cause (4, 143), and --resume completes it.
+TEST(Reliability, CosimAllLocksItsJournalAndStopsBetweenTargets) {
+  Workspace w;
+  const Background first = w.start("cosim all --cycles 400000 --journal j/all.journal");
+  ASSERT_TRUE(wait_for(w.work / "j" / ".rangesim.lock", 20));
+  const ChildResult second = w.run("cosim all --cycles 400000 --journal j/all.journal --resume");
+  EXPECT_EQ(second.exit_code, 2) << second.err;
+  EXPECT_NE(second.err.find("--journal " + (w.work / "j").string() + ": another rangesim run is writing there (pid " +
+                            std::to_string(first.pid)),
+            std::string::npos)
+      << second.err;
+  ASSERT_TRUE(wait_for(w.work / "j" / "all.journal", 20));
+  ::kill(first.pid, SIGTERM);
+  const ChildResult stopped = wait_child(first);
+  EXPECT_EQ(stopped.exit_code, 143) << stopped.err;
+  EXPECT_NE(stopped.err.find("stopped by SIGTERM"), std::string::npos) << stopped.err;
+  EXPECT_NE(stopped.err.find("--resume"), std::string::npos) << stopped.err;
+  EXPECT_EQ(names_in(w.work / "j"), std::set<std::string>{"all.journal"});
+
+  const ChildResult budget = w.run("cosim all --cycles 400000 --journal k/all.journal --max-seconds 2");
+  EXPECT_EQ(budget.exit_code, 4) << budget.err;
+  EXPECT_NE(budget.err.find("cosim: --max-seconds 2 exceeded"), std::string::npos) << budget.err;
+  EXPECT_EQ(names_in(w.work / "k"), std::set<std::string>{"all.journal"});
+}
+
+TEST(Reliability, CosimOfOneTargetHonoursItsTimeBudget) {
+  Workspace w;
+  const ChildResult r = w.run("cosim address_search --cycles 100000000 --max-seconds 1");
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_NE(r.err.find("--max-seconds"), std::string::npos) << r.err;
+  EXPECT_LT(r.wall_s, 20);
+}
