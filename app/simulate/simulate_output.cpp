@@ -1,5 +1,6 @@
 #include "app/simulate/simulate_output.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,12 +15,22 @@ std::string render_range_map(OutputDir& out, const std::vector<std::vector<doubl
     return "gnuplot not found: range_map.png skipped (scripts/install-deps.sh installs gnuplot-nox)";
   const std::string data = out.scratch("range_map.dat");
   {
-    std::ofstream d(data);
+    // gnuplot's matrix text, "%.6g" through std::to_chars (no temporary strings: a full map has
+    // 137k values).
+    std::string text;
+    text.reserve(map.size() * (map.empty() ? 0 : map[0].size()) * 9);
+    char buf[32];
     for (const auto& row : map) {
-      for (std::size_t b = 0; b < row.size(); ++b)
-        d << (b ? " " : "") << (std::isfinite(row[b]) ? fmt::format("{:.6g}", row[b]) : "NaN");
-      d << "\n";
+      for (std::size_t b = 0; b < row.size(); ++b) {
+        if (b) text += ' ';
+        if (std::isfinite(row[b]))
+          text.append(buf, std::to_chars(buf, buf + sizeof buf, row[b], std::chars_format::general, 6).ptr);
+        else
+          text += "NaN";
+      }
+      text += '\n';
     }
+    std::ofstream(data, std::ios::binary) << text;
   }
   const std::string png = out.staged("range_map.png");
   const std::string gp = out.scratch("range_map.gp");

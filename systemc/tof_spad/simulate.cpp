@@ -80,7 +80,14 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
 // pixels outside the beam are spurious peaks with no echo to range, so they stay out of the error.
 struct Reconstruction {
   RangeMap map;
-  std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events\n";
+  Table points{{{"frame", true},
+                {"row", true},
+                {"column", true},
+                {"truth_range_m"},
+                {"detected", true},
+                {"range_m"},
+                {"error_m"},
+                {"events", true}}};
   std::string frames_csv = "frame,cycles,laser_cycles,histogram_readout,avalanches,photons\n";
   long long points_total = 0, detected = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;
   long long groups_bg = 0, groups_bg_cyc = 0, background_points = 0, background_detections = 0;
@@ -114,8 +121,8 @@ void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadS
       if (lit) err = p.range_m - truth, out.err.add(err);
       out.map.range_m[r][c] += p.range_m, ++cnt[r][c];  // a sum until every frame is in
     }
-    out.points += fmt::format("{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth),
-                              p.time_s ? 1 : 0, p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev);
+    out.points.add_row({static_cast<double>(f.frame), static_cast<double>(p.row), static_cast<double>(p.column), truth,
+                        p.time_s ? 1.0 : 0.0, p.time_s ? p.range_m : NAN, err, static_cast<double>(ev)});
   }
 }
 
@@ -264,7 +271,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
                 res, gt,     rec,  sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
-  out.points_csv = std::move(rec.points);
+  out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
   out.range_map.title =
