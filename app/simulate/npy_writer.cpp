@@ -1,6 +1,8 @@
 #include "app/simulate/npy_writer.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -30,31 +32,24 @@ std::string header(const std::string& descr, const std::string& shape) {
   return h + dict;
 }
 
-}  // namespace
-
-std::string npy_matrix(const std::vector<std::vector<double>>& rows, std::size_t columns) {
-  std::string out = header("'<f8'", "(" + std::to_string(rows.size()) + ", " + std::to_string(columns) + ")");
-  const std::size_t at = out.size();
-  out.resize(at + rows.size() * columns * 8);
-  char* p = out.data() + at;
-  for (const auto& r : rows) {
+std::string matrix_header(const std::vector<std::vector<double>>& rows, std::size_t columns) {
+  for (const auto& r : rows)
     if (r.size() != columns) throw std::logic_error("npy_matrix: ragged rows");
-    std::memcpy(p, r.data(), columns * 8);
-    p += columns * 8;
-  }
-  return out;
+  return header("'<f8'", "(" + std::to_string(rows.size()) + ", " + std::to_string(columns) + ")");
 }
 
-std::string npy_table(const systemc::Table& t) {
+std::string table_header(const systemc::Table& t) {
   std::string descr = "[";
   for (std::size_t c = 0; c < t.columns.size(); ++c)
     descr += (c ? ", ('" : "('") + t.columns[c].name + (t.columns[c].integer ? "', '<i8')" : "', '<f8')");
   descr += "]";
-  std::string out = header(descr, "(" + std::to_string(t.rows()) + ",)");
-  const std::size_t at = out.size(), C = t.columns.size();
-  out.resize(at + t.cells.size() * 8);
-  char* p = out.data() + at;
-  for (std::size_t i = 0; i < t.cells.size(); ++i, p += 8) {
+  return header(descr, "(" + std::to_string(t.rows()) + ",)");
+}
+
+// Cells [first, first + n) of `t` as record bytes at `p` (integer columns converted to int64).
+void table_bytes(const systemc::Table& t, std::size_t first, std::size_t n, char* p) {
+  const std::size_t C = t.columns.size();
+  for (std::size_t i = first; i < first + n; ++i, p += 8) {
     if (t.columns[i % C].integer) {
       const auto v = static_cast<std::int64_t>(t.cells[i]);
       std::memcpy(p, &v, 8);
@@ -62,7 +57,53 @@ std::string npy_table(const systemc::Table& t) {
       std::memcpy(p, &t.cells[i], 8);
     }
   }
-  return out;
+}
+
+class File {
+ public:
+  explicit File(const std::string& path) : path_(path), f_(std::fopen(path.c_str(), "wb")) {
+    if (!f_) throw std::runtime_error("cannot write " + path);
+  }
+  ~File() {
+    if (f_) std::fclose(f_);
+  }
+  void put(const void* data, std::size_t n) {
+    if (n && std::fwrite(data, 1, n, f_) != n) throw std::runtime_error("cannot write " + path_);
+  }
+  void close() {
+    const int rc = std::fclose(f_);
+    f_ = nullptr;
+    if (rc != 0) throw std::runtime_error("cannot write " + path_);
+  }
+
+ private:
+  std::string path_;
+  std::FILE* f_;
+};
+
+}  // namespace
+
+void write_npy_matrix(const std::string& path, const std::vector<std::vector<double>>& rows, std::size_t columns) {
+  const std::string h = matrix_header(rows, columns);
+  File f(path);
+  f.put(h.data(), h.size());
+  for (const auto& r : rows) f.put(r.data(), columns * 8);
+  f.close();
+}
+
+void write_npy_table(const std::string& path, const systemc::Table& t) {
+  const std::string h = table_header(t);
+  File f(path);
+  f.put(h.data(), h.size());
+  // Through a 256 KB buffer: the converted records never exist whole in memory.
+  constexpr std::size_t kChunk = 32768;
+  std::vector<char> buf(kChunk * 8);
+  for (std::size_t i = 0; i < t.cells.size(); i += kChunk) {
+    const std::size_t n = std::min(kChunk, t.cells.size() - i);
+    table_bytes(t, i, n, buf.data());
+    f.put(buf.data(), n * 8);
+  }
+  f.close();
 }
 
 }  // namespace rangesim::app

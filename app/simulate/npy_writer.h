@@ -9,10 +9,12 @@
 
 namespace rangesim::app {
 
+// Written straight to the file `path`, never whole in memory (a full ls-conventional map's points
+// are 12 MB); std::runtime_error if the write fails.
 // `rows` as a C-order float64 array of shape (rows, columns); every row must have `columns`
 // values. NaN stays NaN.
-std::string npy_matrix(const std::vector<std::vector<double>>& rows, std::size_t columns);
+void write_npy_matrix(const std::string& path, const std::vector<std::vector<double>>& rows, std::size_t columns);
 // `t` as a record array of shape (rows,): integer columns '<i8', the others '<f8' (NaN = empty).
-std::string npy_table(const systemc::Table& t);
+void write_npy_table(const std::string& path, const systemc::Table& t);
 
 }  // namespace rangesim::app

@@ -94,12 +94,12 @@ std::string write_files(const SimulateOptions& opt, OutputDir& out, const system
   const systemc::RangeMap& m = r.range_map;
   const std::size_t columns = m.column_names.size();
   if (as_npy(opt, m.range_m.size() * columns))
-    out.write("range_map.npy", npy_matrix(m.range_m, columns));
+    write_npy_matrix(out.staged("range_map.npy"), m.range_m, columns);
   else
     out.write("range_map.csv", systemc::range_map_csv(m));
   if (!r.points.empty()) {
     if (as_npy(opt, r.points.cells.size()))
-      out.write("points.npy", npy_table(r.points));
+      write_npy_table(out.staged("points.npy"), r.points);
     else
       out.write("points.csv", systemc::table_csv(r.points));
   }
