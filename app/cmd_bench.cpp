@@ -13,14 +13,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "app/bench/bench_aggregation.h"
 #include "app/bench/bench_figures.h"
-#include "app/bench/bench_numpy_peers.h"
-#include "app/bench/bench_sparse_spad.h"
-#include "app/bench/bench_ls_conventional.h"
+#include "app/bench/bench_groups.h"
 #include "app/bench/bench_pareto.h"
 #include "app/bench/bench_util.h"
-#include "app/bench/mc_bench_hook.h"
 #include "app/cli_common.h"
 #include "app/output_dir.h"
 #include "app/sweep_journal.h"
@@ -66,26 +62,6 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
   return "";
 }
 
-// Journal indices of the figure groups (Pareto rows use 0, 1, ...).
-constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002, kJournalSpad = 1003,
-                    kJournalSpadSparse = 1004, kJournalDemod = 1005, kJournalPeers = 1006;
-
-json mc_hook_json(const McBenchHookResult& m) {
-  return {{"mc_vs_bare_rng", m.mc_vs_bare_rng ? json(*m.mc_vs_bare_rng) : json(nullptr)},
-          {"threads2_vs_1", m.threads2_vs_1 ? json(*m.threads2_vs_1) : json(nullptr)},
-          {"details", m.details},
-          {"note", m.note}};
-}
-
-McBenchHookResult mc_hook_from_json(const json& j) {
-  McBenchHookResult m;
-  if (j["mc_vs_bare_rng"].is_number()) m.mc_vs_bare_rng = j["mc_vs_bare_rng"].get<double>();
-  if (j["threads2_vs_1"].is_number()) m.threads2_vs_1 = j["threads2_vs_1"].get<double>();
-  m.details = j["details"];
-  m.note = j["note"].get<std::string>();
-  return m;
-}
-
 }  // namespace
 
 int run_bench(const BenchOptions& opt) {
@@ -123,59 +99,27 @@ int run_bench(const BenchOptions& opt) {
   };
 
   std::vector<ParetoRow> pareto;
-  json ls, lockin, spad, spad_sparse, demod, mc_json, peers;
+  std::vector<json> results;  // one per figure group, in bench_groups() order
+  const BenchGroupContext context{opt.quick, out.scratch("runs")};
   try {
     pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
-    if (stop_requested()) return interrupted();
-    ls = group(kJournalLs, [&] {
-      return bench_ls_conventional(
-          LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0, out.scratch("runs")});
-    });
-    if (stop_requested()) return interrupted();
-    lockin = group(kJournalLockin, [&] { return bench_aggregation_lockin(opt.quick); });
-    if (stop_requested()) return interrupted();
-    spad = group(kJournalSpad, [&] { return bench_aggregation_spad(opt.quick); });
-    if (stop_requested()) return interrupted();
-    spad_sparse = group(kJournalSpadSparse, [&] { return bench_sparse_spad(opt.quick); });
-    demod = group(kJournalDemod, [&] { return bench_aggregation_demod(opt.quick); });
-    if (stop_requested()) return interrupted();
-    mc_json = group(kJournalMc, [&] {
-      progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
-      return mc_hook_json(mc_bench_hook(opt.quick));
-    });
-    if (stop_requested()) return interrupted();
-    peers = group(kJournalPeers, [&] { return bench_numpy_peers(opt.quick, out.scratch("runs")); });
+    for (const BenchGroup& g : bench_groups()) {
+      if (stop_requested()) return interrupted();
+      results.push_back(group(g.journal_index, [&] { return g.measure(context); }));
+    }
   } catch (const std::exception&) {
     if (stop_requested()) return interrupted();
     throw;
   }
   if (stop_requested()) return interrupted();
-  const McBenchHookResult mc = mc_hook_from_json(mc_json);
 
-  add_rtl_pareto_rows(ls, pareto);
+  json details, checks = json::object();
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const BenchGroup& g = bench_groups()[i];
+    g.collect(results[i], details, checks);
+    if (g.pareto_rows) g.pareto_rows(results[i], pareto);
+  }
   mark_pareto(pareto);
-
-  json details, checks = ls["checks"];
-  for (const auto& f : ls_conventional_figures()) details[f.key] = ls[f.key];
-  for (const auto& f : numpy_peer_figures()) details[f.key] = peers[f.key];
-  details["aggregated_vs_per_clock_lockin"] = lockin;
-  checks["lockin_aggregated_statistically_identical"] = lockin["statistically_identical"].get<bool>();
-  details["aggregated_vs_per_clock_spad"] = spad;
-  checks["spad_aggregated_statistically_identical"] = spad["statistically_identical"].get<bool>();
-  checks["spad_per_clock_equals_per_cycle"] = spad["per_clock_equals_per_cycle"].get<bool>();
-  details["sparse_vs_dense_spad"] = spad_sparse;
-  checks["spad_sparse_cycles_identical"] = spad_sparse["cycles_identical"].get<bool>();
-  checks["spad_sparse_lit_pixels_identical"] = spad_sparse["lit_pixels_identical"].get<bool>();
-  checks["spad_sparse_background_statistically_identical"] =
-      spad_sparse["background_statistically_identical"].get<bool>();
-  details["aggregated_vs_per_clock_demod"] = demod;
-  checks["demod_aggregated_statistically_identical"] = demod["statistically_identical"].get<bool>();
-  details["mc_vs_bare_rng"] =
-      json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
-  details["threads2_vs_1"] =
-      json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
-  if (!mc.details.is_null()) details["monte_carlo"] = mc.details;
-  checks["mc_threads_bit_identical"] = mc.threads2_vs_1.has_value();
 
   json j;
   for (const auto& f : all_figures()) j[f.key] = details[f.key]["value"];
