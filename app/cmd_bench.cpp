@@ -7,17 +7,16 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "app/bench/bench_aggregation.h"
-#include "app/bench/bench_sparse_spad.h"
-#include "app/bench/bench_ls_conventional.h"
+#include "app/bench/bench_figures.h"
+#include "app/bench/bench_groups.h"
 #include "app/bench/bench_pareto.h"
 #include "app/bench/bench_util.h"
-#include "app/bench/mc_bench_hook.h"
 #include "app/cli_common.h"
 #include "app/output_dir.h"
 #include "app/sweep_journal.h"
@@ -28,33 +27,6 @@ namespace {
 
 using nlohmann::json;
 using namespace rangesim::app::bench;
-
-// The figures in the order of the issue, with their targets.
-struct FigureSpec {
-  const char* key;
-  const char* target;
-  const char* meaning;
-};
-const FigureSpec kFigures[] = {
-    {"sparse_vs_dense", ">= 20", "ls-conventional map: dense / sparse CPU time per frame access, bit-identical output"},
-    {"model_vs_rtl", ">= 100",
-     "RTL readout CPU time / clock-level model CPU time per frame access, identical addresses and cycles"},
-    {"touch_limit_ratio", "<= 4", "model time / a loop reading each lit pixel once per sampling"},
-    {"systemc_vs_kernel", ">= 0.5", "bare kernel time / SystemC module time (both per clock)"},
-    {"mc_vs_bare_rng", ">= 0.5", "Monte Carlo sweep variates per second / bare loop drawing them"},
-    {"aggregated_vs_per_clock_lockin", ">= 1000",
-     "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
-    {"aggregated_vs_per_clock_spad", ">= 1000",
-     "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
-    {"sparse_vs_dense_spad", ">= 5",
-     "tof-spad beam spot: dense / sparse CPU time per frame (background-only groups as one class), lit pixels "
-     "identical"},
-    {"aggregated_vs_per_clock_demod", ">= 1000",
-     "ls-demodulation per-period frame time / aggregated frame time (N = 10,000 periods), statistically identical"},
-    {"threads2_vs_1", ">= 1.8", "Monte Carlo sweep time with 1 thread / with 2 threads"},
-    {"realtime_factor", "report (chip 1.0)",
-     "simulated time / CPU time of the ls-conventional map (full 375 frame accesses)"},
-};
 
 std::string value_text(const json& v) { return v.is_number() ? fmt::format("{:.4g}", v.get<double>()) : "null"; }
 
@@ -88,26 +60,6 @@ std::string render_pareto(OutputDir& out, const std::vector<ParetoRow>& rows) {
   if (std::system(fmt::format("gnuplot '{}' >'{}' 2>&1", gp, out.scratch("gnuplot.log")).c_str()) != 0)
     return "gnuplot failed: pareto plot skipped";
   return "";
-}
-
-// Journal indices of the figure groups (Pareto rows use 0, 1, ...).
-constexpr long long kJournalLs = 1000, kJournalLockin = 1001, kJournalMc = 1002, kJournalSpad = 1003,
-                    kJournalSpadSparse = 1004, kJournalDemod = 1005;
-
-json mc_hook_json(const McBenchHookResult& m) {
-  return {{"mc_vs_bare_rng", m.mc_vs_bare_rng ? json(*m.mc_vs_bare_rng) : json(nullptr)},
-          {"threads2_vs_1", m.threads2_vs_1 ? json(*m.threads2_vs_1) : json(nullptr)},
-          {"details", m.details},
-          {"note", m.note}};
-}
-
-McBenchHookResult mc_hook_from_json(const json& j) {
-  McBenchHookResult m;
-  if (j["mc_vs_bare_rng"].is_number()) m.mc_vs_bare_rng = j["mc_vs_bare_rng"].get<double>();
-  if (j["threads2_vs_1"].is_number()) m.threads2_vs_1 = j["threads2_vs_1"].get<double>();
-  m.details = j["details"];
-  m.note = j["note"].get<std::string>();
-  return m;
 }
 
 }  // namespace
@@ -147,80 +99,45 @@ int run_bench(const BenchOptions& opt) {
   };
 
   std::vector<ParetoRow> pareto;
-  json ls, lockin, spad, spad_sparse, demod, mc_json;
+  std::vector<json> results;  // one per figure group, in bench_groups() order
+  const BenchGroupContext context{opt.quick, out.scratch("runs")};
   try {
     pareto = run_pareto(opt.quick, out.scratch("runs"), &journal);
-    if (stop_requested()) return interrupted();
-    ls = group(kJournalLs, [&] {
-      return bench_ls_conventional(LsConventionalBenchOptions{opt.quick, RANGESIM_BENCH_HAS_RTL != 0});
-    });
-    if (stop_requested()) return interrupted();
-    lockin = group(kJournalLockin, [&] { return bench_aggregation_lockin(opt.quick); });
-    if (stop_requested()) return interrupted();
-    spad = group(kJournalSpad, [&] { return bench_aggregation_spad(opt.quick); });
-    if (stop_requested()) return interrupted();
-    spad_sparse = group(kJournalSpadSparse, [&] { return bench_sparse_spad(opt.quick); });
-    demod = group(kJournalDemod, [&] { return bench_aggregation_demod(opt.quick); });
-    if (stop_requested()) return interrupted();
-    mc_json = group(kJournalMc, [&] {
-      progress("Monte Carlo figures (sweep on 1 and 2 threads, bare variate loop)");
-      return mc_hook_json(mc_bench_hook(opt.quick));
-    });
+    for (const BenchGroup& g : bench_groups()) {
+      if (stop_requested()) return interrupted();
+      results.push_back(group(g.journal_index, [&] { return g.measure(context); }));
+    }
   } catch (const std::exception&) {
     if (stop_requested()) return interrupted();
     throw;
   }
   if (stop_requested()) return interrupted();
-  const McBenchHookResult mc = mc_hook_from_json(mc_json);
 
-  // The RTL readout as a Pareto point: the same addresses as the model, so the same error.
-  if (ls["model_vs_rtl"]["value"].is_number())
-    for (const auto& r : std::vector<ParetoRow>(pareto))
-      if (r.sensor == "ls-conventional" && r.setting == "kernel, sparse, event skipping") {
-        ParetoRow x = r;
-        x.setting = "verilated RTL readout";
-        x.harness = "rtl";
-        const double per_frame =
-            ls["model_vs_rtl"]["rtl_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
-        const double wall_per_frame =
-            ls["model_vs_rtl"]["rtl_wall_s"].get<double>() / ls["model_vs_rtl"]["rtl_frames"].get<double>();
-        x.cpu_s = per_frame * static_cast<double>(r.frames);
-        x.wall_s = wall_per_frame * static_cast<double>(r.frames);
-        x.note = fmt::format("RTL time of {} frame accesses scaled to {}; error as the model (identical addresses)",
-                             ls["model_vs_rtl"]["rtl_frames"].get<long long>(), r.frames);
-        pareto.push_back(x);
-      }
+  json details, checks = json::object();
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const BenchGroup& g = bench_groups()[i];
+    g.collect(results[i], details, checks);
+    if (g.pareto_rows) g.pareto_rows(results[i], pareto);
+  }
   mark_pareto(pareto);
 
-  json details, checks = ls["checks"];
-  for (const char* k : {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "realtime_factor"})
-    details[k] = ls[k];
-  details["aggregated_vs_per_clock_lockin"] = lockin;
-  checks["lockin_aggregated_statistically_identical"] = lockin["statistically_identical"].get<bool>();
-  details["aggregated_vs_per_clock_spad"] = spad;
-  checks["spad_aggregated_statistically_identical"] = spad["statistically_identical"].get<bool>();
-  checks["spad_per_clock_equals_per_cycle"] = spad["per_clock_equals_per_cycle"].get<bool>();
-  details["sparse_vs_dense_spad"] = spad_sparse;
-  checks["spad_sparse_cycles_identical"] = spad_sparse["cycles_identical"].get<bool>();
-  checks["spad_sparse_lit_pixels_identical"] = spad_sparse["lit_pixels_identical"].get<bool>();
-  checks["spad_sparse_background_statistically_identical"] =
-      spad_sparse["background_statistically_identical"].get<bool>();
-  details["aggregated_vs_per_clock_demod"] = demod;
-  checks["demod_aggregated_statistically_identical"] = demod["statistically_identical"].get<bool>();
-  details["mc_vs_bare_rng"] =
-      json{{"value", mc.mc_vs_bare_rng ? json(*mc.mc_vs_bare_rng) : json(nullptr)}, {"note", mc.note}};
-  details["threads2_vs_1"] =
-      json{{"value", mc.threads2_vs_1 ? json(*mc.threads2_vs_1) : json(nullptr)}, {"note", mc.note}};
-  if (!mc.details.is_null()) details["monte_carlo"] = mc.details;
-  checks["mc_threads_bit_identical"] = mc.threads2_vs_1.has_value();
-
   json j;
-  for (const auto& f : kFigures) j[f.key] = details[f.key]["value"];
-  json targets;
-  for (const auto& f : kFigures) targets[f.key] = f.target;
+  for (const auto& f : all_figures()) j[f.key] = details[f.key]["value"];
+  // A met flag per target (null: report only, or no value); the missed ones are printed last.
+  json targets, met;
+  std::vector<std::string> missed;
+  for (const auto& f : all_figures()) {
+    targets[f.key] = f.target;
+    const std::optional<bool> m = target_met(f.target, j[f.key]);
+    met[f.key] = m ? json(*m) : json(nullptr);
+    if (!m || !*m)
+      missed.push_back(fmt::format("{} = {} (target {}{})", f.key, value_text(j[f.key]), f.target,
+                                   m ? "" : ", no value"));
+  }
   bool all_ok = true;
   for (const auto& [k, v] : checks.items()) all_ok = all_ok && v.get<bool>();
   j["targets"] = targets;
+  j["met"] = met;
   j["checks"] = checks;
   j["checks_passed"] = all_ok;
   j["quick"] = opt.quick;
@@ -228,9 +145,10 @@ int run_bench(const BenchOptions& opt) {
   j["pareto"] = pareto_json(pareto);
   j["wall_s"] = seconds_since(t0);
 
-  std::string figures_md = "| figure | value | target | meaning |\n|---|---:|---|---|\n";
-  for (const auto& f : kFigures)
-    figures_md += fmt::format("| `{}` | {} | {} | {} |\n", f.key, value_text(j[f.key]), f.target, f.meaning);
+  std::string figures_md = "| figure | value | target | met | meaning |\n|---|---:|---|---|---|\n";
+  for (const auto& f : all_figures())
+    figures_md += fmt::format("| `{}` | {} | {} | {} | {} |\n", f.key, value_text(j[f.key]), f.target,
+                              met[f.key].is_null() ? "—" : met[f.key].get<bool>() ? "yes" : "NO", f.meaning);
   std::string checks_md;
   for (const auto& [k, v] : checks.items())
     checks_md += fmt::format("- {}: {}\n", k, v.get<bool>() ? "passed" : "FAILED");
@@ -254,6 +172,16 @@ int run_bench(const BenchOptions& opt) {
                pareto_markdown(pareto));
   }
   if (!warning.empty()) fmt::print(stderr, "rangesim: warning: {}\n", warning);
+  // The speed targets are reported, not enforced (exit 0 either way); the missed ones come last
+  // (stderr with --json, whose stdout is the JSON).
+  if (!missed.empty()) {
+    std::string text = fmt::format("\nTargets missed ({} of {}):\n", missed.size(), all_figures().size());
+    for (const auto& m : missed) text += "  " + m + "\n";
+    if (opt.json)
+      fmt::print(stderr, "{}", text);
+    else
+      fmt::print("{}", text);
+  }
   if (!all_ok) fmt::print(stderr, "rangesim: bench: an identity check failed (see checks in bench.json)\n");
   return all_ok ? 0 : 1;
 }

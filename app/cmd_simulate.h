@@ -30,6 +30,10 @@ struct SimulateOptions {
   bool no_aggregate = false;  // --no-aggregate: ls-demodulation correlation periods / tof-lockin accumulation periods /
                               // tof-spad laser cycles one by one
   bool no_plots = false;      // --no-plots: skip range_map.png
+  // --csv / --npy: range map and points as CSV / as .npy; default: .npy for a table of more than
+  // kNpyMinValues numbers, CSV for smaller ones (simulate_render.h). frames.csv is always CSV.
+  bool csv = false;
+  bool npy = false;
   double time_step_s = 0;  // --time-step S: tof-lockin pulse/gate overlaps integrated at step S (0 = exact closed form)
 };
 

@@ -19,7 +19,8 @@ struct ResourceEstimate {
 inline constexpr double kBaseMemoryBytes = 32.0 * (1 << 20);
 
 // Throws UserError naming `command`, the estimate and `reduce` when the run cannot fit; `dir` is
-// where the outputs go ("" for none).
+// where the outputs go ("" for none). RANGESIM_SKIP_ESTIMATES=1 in the environment skips the check
+// (tests/reliability uses it to reach the run-time watchdog).
 void check_resources(const std::string& command, const ResourceEstimate& e, const std::string& dir);
 
 }  // namespace rangesim::app

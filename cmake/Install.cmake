@@ -73,6 +73,11 @@ install(DIRECTORY "${PROJECT_SOURCE_DIR}/presets/"
   DESTINATION "${CMAKE_INSTALL_DATADIR}/rangesim/presets"
   FILES_MATCHING PATTERN "*.toml")
 
+# The bench's NumPy peers (app/bench/bench_numpy_peers.cpp looks here).
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/app/bench/peers/"
+  DESTINATION "${CMAKE_INSTALL_DATADIR}/rangesim/peers"
+  FILES_MATCHING PATTERN "*.py")
+
 # The package: targets file + config + version.
 install(EXPORT rangesimTargets
   NAMESPACE rangesim::

@@ -93,7 +93,7 @@ py::object simulate(const Sensor& sensor, const py::object& scene, std::optional
   f["title"] = m.title;
   f["x_label"] = m.x_label;
   f["y_label"] = m.y_label;
-  f["points_csv"] = r.points_csv;
+  f["points_csv"] = r.points.empty() ? std::string() : systemc::table_csv(r.points);
   f["frames_csv"] = r.frames_csv;
   f["summary"] = to_python(r.summary);
   return make_result(f);

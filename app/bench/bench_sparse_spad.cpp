@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/bench/bench_aggregation.h"
+#include "app/bench/bench_figures.h"
 #include "app/bench/bench_stats.h"
 #include "app/bench/bench_util.h"
 #include "core/preset.h"
@@ -12,6 +13,15 @@
 #include "systemc/tof_spad/sensor_kernel.h"
 
 namespace rangesim::app::bench {
+
+const std::vector<FigureSpec>& sparse_spad_figures() {
+  static const std::vector<FigureSpec> f = {
+      {"sparse_vs_dense_spad", ">= 5",
+       "tof-spad beam spot: dense / sparse CPU time per frame (background-only groups as one class), lit pixels "
+       "identical"},
+  };
+  return f;
+}
 
 namespace {
 namespace sp = rangesim::systemc::spad;

@@ -4,9 +4,18 @@
 
 #include <exception>
 
+#include "app/bench/bench_figures.h"
 #include "app/bench_mc.h"
 
 namespace rangesim::app::bench {
+
+const std::vector<FigureSpec>& monte_carlo_figures() {
+  static const std::vector<FigureSpec> f = {
+      {"mc_vs_bare_rng", ">= 0.5", "Monte Carlo sweep variates per second / bare loop drawing them"},
+      {"threads2_vs_1", ">= 1.8", "Monte Carlo sweep time with 1 thread / with 2 threads"},
+  };
+  return f;
+}
 
 McBenchHookResult mc_bench_hook(bool quick) {
   McBenchHookResult r;

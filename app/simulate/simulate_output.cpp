@@ -1,6 +1,7 @@
 #include "app/simulate/simulate_output.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,13 +14,23 @@ namespace rangesim::app {
 
 namespace {
 
+// gnuplot's matrix text, "%.6g" through std::to_chars (no temporary strings: a full map has 137k
+// values).
 void write_matrix(const std::string& path, const std::vector<std::vector<double>>& rows) {
-  std::ofstream d(path);
+  std::string text;
+  text.reserve(rows.size() * (rows.empty() ? 0 : rows[0].size()) * 9);
+  char buf[32];
   for (const auto& row : rows) {
-    for (std::size_t b = 0; b < row.size(); ++b)
-      d << (b ? " " : "") << (std::isfinite(row[b]) ? fmt::format("{:.6g}", row[b]) : "NaN");
-    d << "\n";
+    for (std::size_t b = 0; b < row.size(); ++b) {
+      if (b) text += ' ';
+      if (std::isfinite(row[b]))
+        text.append(buf, std::to_chars(buf, buf + sizeof buf, row[b], std::chars_format::general, 6).ptr);
+      else
+        text += "NaN";
+    }
+    text += '\n';
   }
+  std::ofstream(path, std::ios::binary) << text;
 }
 
 // The map's error where both the range and the truth exist.

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <sys/resource.h>
+
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -9,6 +12,7 @@
 #include "app/cli_common.h"
 #include "app/output_dir.h"
 #include "app/resource_estimate.h"
+#include "app/simulate/npy_writer.h"
 #include "app/simulate/simulate_output.h"
 #include "app/simulate/simulate_report.h"
 #include "app/simulate/trace_output.h"
@@ -71,14 +75,43 @@ class CommandHost : public systemc::SimulationHost {
   std::optional<OutputDir> out_;       // --out, once the scene is known
 };
 
-// range_map.csv, confidence_map.csv (where the sensor's validity rule measures one), points.csv
-// (where the sensor has points), frames.csv, range_map.png and range_error.png; returns the plot's warning ("" when
-// none).
+// CPU time of this process and of its waited-for children (gnuplot), s.
+double cpu_with_children_s() {
+  double s = 0;
+  for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage u{};
+    ::getrusage(who, &u);
+    for (const timeval& t : {u.ru_utime, u.ru_stime})
+      s += static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  }
+  return s;
+}
+
+// A table of `values` numbers goes out as .npy (true) or CSV.
+bool as_npy(const SimulateOptions& opt, std::size_t values) { return opt.npy || (!opt.csv && values > kNpyMinValues); }
+
+// range_map.{csv,npy}, confidence_map.{csv,npy} (where the sensor's validity rule measures one),
+// points.{csv,npy} (where the sensor has points), frames.csv, range_map.png and range_error.png;
+// returns the plot's warning ("" when none).
 std::string write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r) {
   const systemc::RangeMap& m = r.range_map;
-  out.write("range_map.csv", systemc::range_map_csv(m));
-  if (!m.confidence.empty()) out.write("confidence_map.csv", systemc::confidence_map_csv(m));
-  if (!r.points_csv.empty()) out.write("points.csv", r.points_csv);
+  const std::size_t columns = m.column_names.size();
+  if (as_npy(opt, m.range_m.size() * columns))
+    write_npy_matrix(out.staged("range_map.npy"), m.range_m, columns);
+  else
+    out.write("range_map.csv", systemc::range_map_csv(m));
+  if (!m.confidence.empty()) {
+    if (as_npy(opt, m.confidence.size() * columns))
+      write_npy_matrix(out.staged("confidence_map.npy"), m.confidence, columns);
+    else
+      out.write("confidence_map.csv", systemc::confidence_map_csv(m));
+  }
+  if (!r.points.empty()) {
+    if (as_npy(opt, r.points.cells.size()))
+      write_npy_table(out.staged("points.npy"), r.points);
+    else
+      out.write("points.csv", systemc::table_csv(r.points));
+  }
   out.write("frames.csv", r.frames_csv);
   if (opt.no_plots) return "";
   return render_range_map(out, m);
@@ -110,7 +143,12 @@ int finish(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace, nlohm
 int run_and_render(const SimulateOptions& opt, const ParamSet& params, const SimulateEntry& entry) {
   CommandHost host(opt);
   systemc::SimulationResult r = entry.run(simulation_request(opt), params, host);
+  const auto t0 = Progress::Clock::now();
+  const double c0 = cpu_with_children_s();
   const std::string warning = write_files(opt, host.out(), r);
+  // What the outputs cost (files and plot, gnuplot's CPU included), for `bench`'s output_share.
+  r.summary["output_wall_time_s"] = std::chrono::duration<double>(Progress::Clock::now() - t0).count();
+  r.summary["output_cpu_s"] = cpu_with_children_s() - c0;
   return finish(opt, host.out(), host.trace(), r.summary, warning, r.report);
 }
 

@@ -39,7 +39,11 @@ void add_timing_json(nlohmann::json& j, const SimulationReport& r, const golden:
                  {"range_maps_per_s", gt.range_maps_per_s}};
 }
 
-std::string csv_number(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : ""; }
+std::string csv_number(double v) {
+  std::string s;
+  append_csv_number(s, v);
+  return s;
+}
 
 nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
@@ -49,10 +53,14 @@ std::string map_csv(const RangeMap& map, const std::vector<std::vector<double>>&
   std::string csv = "row";
   for (const auto& name : map.column_names) csv += "," + name;
   csv += "\n";
+  csv.reserve(csv.size() + values.size() * (8 + 12 * map.column_names.size()));
   for (std::size_t r = 0; r < values.size(); ++r) {
-    csv += std::to_string(map.first_row + static_cast<long long>(r));
-    for (double v : values[r]) csv += "," + csv_number(v);
-    csv += "\n";
+    append_csv_integer(csv, map.first_row + static_cast<long long>(r));
+    for (double v : values[r]) {
+      csv += ',';
+      append_csv_number(csv, v);
+    }
+    csv += '\n';
   }
   return csv;
 }

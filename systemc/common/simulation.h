@@ -15,6 +15,7 @@
 
 #include "golden/common/frame_timing.h"
 #include "systemc/common/simulate_entry.h"
+#include "systemc/common/table.h"
 
 namespace rangesim::systemc {
 
@@ -144,13 +145,13 @@ void add_validity_json(nlohmann::json& j, const RangeMap& map);
 
 struct SimulationResult {
   RangeMap range_map;
-  std::string points_csv;   // points.csv ("" = the sensor has none)
+  Table points;             // points.csv / points.npy (empty: the sensor has none)
   std::string frames_csv;   // frames.csv
   nlohmann::json summary;   // summary.json (the renderer adds warnings and the trace)
   SimulationReport report;  // the terminal summary
 };
 
-// Number for CSV ("" for NaN/inf) and for JSON (null for NaN/inf).
+// Number for CSV (printf "%.9g", "" for NaN/inf) and for JSON (null for NaN/inf).
 std::string csv_number(double v);
 nlohmann::json json_number(double v);
 // range_map.csv: "row,<column names>", then one line per row (values in m, empty where no range).

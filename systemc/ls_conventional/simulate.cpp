@@ -70,7 +70,8 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
 // The range map, points.csv and frames.csv, and the counts against the ground truth.
 struct Reconstruction {
   RangeMap map;
-  std::string points, frames_csv;
+  Table points;
+  std::string frames_csv;
   long long visible = 0, detected = 0, missed = 0, false_detections = 0;
   RangeErrorStats err;
   bool timing_matches = true;
@@ -108,10 +109,9 @@ void add_point(Reconstruction& out, const scene::SceneOptics& optics, const Fram
     ++out.false_detections;
   }
   if (t.visible || p.valid)
-    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, b, r, t.visible ? 1 : 0,
-                              t.hit ? csv_number(t.centre_px) : "", t.hit ? csv_number(t.range_m) : "", p.valid ? 1 : 0,
-                              p.valid ? csv_number(p.centre_px()) : "", csv_number(range), csv_number(err_px),
-                              csv_number(err_m), valid ? 1 : 0, csv_number(fraction));
+    out.points.add_row({static_cast<double>(fr.frame), static_cast<double>(b), static_cast<double>(r),
+                        t.visible ? 1.0 : 0.0, t.hit ? t.centre_px : NAN, t.hit ? t.range_m : NAN, p.valid ? 1.0 : 0.0,
+                        p.valid ? p.centre_px() : NAN, range, err_px, err_m, valid ? 1.0 : 0.0, fraction});
 }
 
 Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics,
@@ -126,9 +126,19 @@ Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics&
       "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of its {} samplings (at "
       "least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
       cfg.validity.min_detecting_fraction, samplings, cfg.validity.edge_margin_px);
-  out.points =
-      "frame,beam_position,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_"
-      "m,valid,detecting_fraction\n";
+  out.points = Table({{"frame", true},
+                      {"beam_position", true},
+                      {"row", true},
+                      {"truth_visible", true},
+                      {"truth_centre_px"},
+                      {"truth_range_m"},
+                      {"detected", true},
+                      {"centre_px"},
+                      {"range_m"},
+                      {"error_px"},
+                      {"error_m"},
+                      {"valid", true},
+                      {"detecting_fraction"}});
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   for (std::size_t f = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
@@ -239,7 +249,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
-  out.points_csv = std::move(rec.points);
+  out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
   out.range_map.title = fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size());

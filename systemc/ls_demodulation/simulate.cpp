@@ -67,7 +67,8 @@ DemodRunResult run_model(const SimulationRequest& req, const ParamSet& params, c
 // The range map, points.csv and frames.csv, and the counts against the ground truth.
 struct Reconstruction {
   RangeMap map;
-  std::string points, frames_csv;
+  Table points;
+  std::string frames_csv;
   long long visible = 0, detected = 0, missed = 0, false_det = 0;
   RangeErrorStats err;
   bool timing_matches = true;
@@ -108,10 +109,9 @@ void add_point(Reconstruction& out, const scene::DemodOptics& optics, const Demo
     ++out.false_det;
   }
   if (vis || rr.valid())
-    out.points +=
-        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", fr.frame, r, vis ? 1 : 0, csv_number(truth_x),
-                    csv_number(truth_z), rr.valid() ? 1 : 0, rr.valid() ? csv_number(rr.centre_px()) : "",
-                    csv_number(range), csv_number(err_px), csv_number(err_m), valid ? 1 : 0, csv_number(fraction));
+    out.points.add_row({static_cast<double>(fr.frame), static_cast<double>(r), vis ? 1.0 : 0.0, truth_x, truth_z,
+                        rr.valid() ? 1.0 : 0.0, rr.valid() ? rr.centre_px() : NAN, range, err_px, err_m,
+                        valid ? 1.0 : 0.0, fraction});
 }
 
 Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& optics, const LsDemodulationConfig& cfg,
@@ -126,9 +126,18 @@ Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& 
       "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of the {} decision(s) of "
       "its frame (at least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
       cfg.min_detecting_fraction, cfg.grid.detections, cfg.edge_margin_px);
-  out.points =
-      "frame,row,truth_visible,truth_centre_px,truth_range_m,detected,centre_px,range_m,error_px,error_m,valid,"
-      "detecting_fraction\n";
+  out.points = Table({{"frame", true},
+                      {"row", true},
+                      {"truth_visible", true},
+                      {"truth_centre_px"},
+                      {"truth_range_m"},
+                      {"detected", true},
+                      {"centre_px"},
+                      {"range_m"},
+                      {"error_px"},
+                      {"error_m"},
+                      {"valid", true},
+                      {"detecting_fraction"}});
   out.frames_csv = "frame,cycles,end_cycle";
   for (const auto& p : gt.phases) out.frames_csv += "," + p.name;
   out.frames_csv += ",rows_detected\n";
@@ -243,7 +252,7 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
       req, params, cfg, kopt, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
-  out.points_csv = std::move(rec.points);
+  out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
   out.range_map.title = fmt::format("{} — {} ({} frames)", sc.name, params.sensor_id(), res.frames.size());

@@ -1,5 +1,6 @@
 // Monte Carlo trials of tof-lockin on the sensor kernel (one pixel, one kernel run per trial).
 #include <cmath>
+#include <optional>
 
 #include "systemc/tof_lockin/montecarlo.h"
 #include "golden/tof_lockin/pulse_timing.h"
@@ -21,12 +22,18 @@ class Runner : public McPointRunner {
 
   McTrial trial(long long t) override {
     using namespace systemc::lockin;
-    const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
-    const long long per_map = cfg_.readout.ambient_subtraction ? 2 : 1;
-    // A kernel per trial, its streams keyed by the trial: (trial key, frame, row 0, column 0).
-    TofLockinSensorKernel k(cfg_,
-                            LockinSimOptions{true, true, aggregate_, trial_key(key_, static_cast<std::uint64_t>(t))}, 1,
-                            1, {stim_}, maps * per_map);
+    // One kernel for all the point's trials, restarted with the trial's streams: (trial key,
+    // frame, row 0, column 0), the same bits as a kernel built per trial.
+    const std::uint64_t seed = trial_key(key_, static_cast<std::uint64_t>(t));
+    if (!kernel_) {
+      const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
+      const long long per_map = cfg_.readout.ambient_subtraction ? 2 : 1;
+      kernel_.emplace(cfg_, LockinSimOptions{true, true, aggregate_, seed}, 1, 1,
+                      std::vector<LockinPixelStimulus>{stim_}, maps * per_map);
+    } else {
+      kernel_->restart(seed);
+    }
+    TofLockinSensorKernel& k = *kernel_;
     k.run();  // bounded: the frames' schedule has a fixed number of events
     double sum = 0;
     McTrial out;
@@ -45,6 +52,7 @@ class Runner : public McPointRunner {
   bool aggregate_;
   std::uint64_t key_;
   systemc::lockin::LockinPixelStimulus stim_;
+  std::optional<systemc::lockin::TofLockinSensorKernel> kernel_;  // built at the first trial
 };
 
 }  // namespace

@@ -39,6 +39,17 @@ TofLockinSensorKernel::TofLockinSensorKernel(const TofLockinConfig& cfg, const L
   inputs_.assign(codes_.size(), 0.0);
 }
 
+void TofLockinSensorKernel::restart(std::uint64_t seed) {
+  opt_.seed = seed;
+  records_.clear();
+  phase_ = LockinPhase::Idle;
+  frame_ = 0, row_ = 0, in_phase_ = 0;
+  gate_cycles_ = 0, readout_cycles_ = 0, events_ = 0;
+  started_ = false;
+  // codes_ and inputs_ are rewritten frame by frame before they are read; the pixels and the
+  // gates are reset at each frame's start.
+}
+
 bool TofLockinSensorKernel::led_on() const { return !(cfg_.readout.ambient_subtraction && frame_ % 2 == 1); }
 
 double TofLockinSensorKernel::time_s() const {

@@ -30,6 +30,10 @@ class TofLockinSensorKernel {
     }
   }
   bool done() const { return frame_ >= frames_; }
+  // Back to the state of a newly built kernel, with the noise streams keyed by `seed`: Monte Carlo
+  // runs every trial of a point on one kernel, with no allocation, and keeps the frame means
+  // (stimulus and gates are unchanged). Same seed, same bits as a new kernel.
+  void restart(std::uint64_t seed);
 
   // State for ports / tracing.
   LockinPhase phase() const { return phase_; }

@@ -82,7 +82,16 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
 // on pixels outside the beam are false valids and stay out of the error.
 struct Reconstruction {
   RangeMap map;
-  std::string points = "frame,row,column,truth_range_m,detected,range_m,error_m,events,valid,significance_sigma\n";
+  Table points{{{"frame", true},
+                {"row", true},
+                {"column", true},
+                {"truth_range_m"},
+                {"detected", true},
+                {"range_m"},
+                {"error_m"},
+                {"events", true},
+                {"valid", true},
+                {"significance_sigma"}}};
   std::string frames_csv = "frame,cycles,laser_cycles,histogram_readout,avalanches,photons\n";
   long long points_total = 0, detected = 0, valid = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;
   long long groups_bg = 0, groups_bg_cyc = 0, background_points = 0, background_detections = 0;
@@ -125,9 +134,9 @@ void add_frame(Reconstruction& out, const sp::FrameResult& f, const scene::SpadS
       out.map.range_m[r][c] += p.range_m, ++sums.valid[r][c];  // a sum until every frame is in
     }
     sums.significance[r][c] += p.significance;
-    out.points += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", f.frame, p.row, p.column, csv_number(truth),
-                              p.time_s ? 1 : 0, p.time_s ? csv_number(p.range_m) : "", csv_number(err), ev,
-                              valid ? 1 : 0, csv_number(p.significance));
+    out.points.add_row({static_cast<double>(f.frame), static_cast<double>(p.row), static_cast<double>(p.column), truth,
+                        p.time_s ? 1.0 : 0.0, p.time_s ? p.range_m : NAN, err, static_cast<double>(ev),
+                        valid ? 1.0 : 0.0, p.significance});
   }
 }
 
@@ -296,7 +305,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
                 res, gt,     rec,  sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
-  out.points_csv = std::move(rec.points);
+  out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
   out.range_map.title =

@@ -22,17 +22,22 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);  // stdout is the JSON and nothing else
   for (const char* key :
-       {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
+       {"sparse_vs_dense", "model_vs_rtl", "floor_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
         "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
-        "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor"}) {
+        "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor", "output_share", "numpy_peer_ls_conventional",
+        "numpy_peer_lockin_mc"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_number() || j[key].is_null()) << key;
     EXPECT_TRUE(j["targets"].contains(key)) << key;
+    // Every target has its met flag: a bool where there is a value, null without one.
+    ASSERT_TRUE(j["met"].contains(key)) << key;
+    EXPECT_EQ(j["met"][key].is_boolean(), j[key].is_number()) << key;
     if (j[key].is_null()) EXPECT_TRUE(j["details"][key].contains("note")) << key << ": a missing figure says why";
   }
   for (const char* key :
-       {"sparse_vs_dense", "model_vs_rtl", "touch_limit_ratio", "systemc_vs_kernel", "aggregated_vs_per_clock_lockin",
-        "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod", "sparse_vs_dense_spad", "realtime_factor"}) {
+       {"sparse_vs_dense", "model_vs_rtl", "floor_ratio", "systemc_vs_kernel", "aggregated_vs_per_clock_lockin",
+        "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod", "sparse_vs_dense_spad", "realtime_factor",
+        "output_share"}) {
     ASSERT_TRUE(j[key].is_number()) << key << " is measured by the bench itself";
     EXPECT_GT(j[key].get<double>(), 0.0) << key;
   }
@@ -48,6 +53,13 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
     EXPECT_TRUE(j["checks"][check].get<bool>()) << check;
   }
   EXPECT_TRUE(j["details"]["sparse_vs_dense"]["bit_identical"].get<bool>());
+  // The floor counts only uncertain pixel-samplings: some, and fewer than the lit ones.
+  EXPECT_GT(j["details"]["floor_ratio"]["uncertain_samplings"].get<long long>(), 0);
+  EXPECT_LT(j["details"]["floor_ratio"]["uncertain_samplings"].get<long long>(),
+            j["details"]["floor_ratio"]["lit_pixel_samplings"].get<long long>());
+  // The NumPy peer, where NumPy is installed, at equal error.
+  if (j["numpy_peer_lockin_mc"].is_number())
+    EXPECT_TRUE(j["details"]["numpy_peer_lockin_mc"]["errors_agree"].get<bool>()) << j["details"]["numpy_peer_lockin_mc"];
   // The full readout RTL: quick = 15 frame accesses, every row's centre and thousands of streams.
   EXPECT_GT(j["details"]["model_vs_rtl"]["streams_compared"].get<long long>(), 1000);
   EXPECT_EQ(j["details"]["model_vs_rtl"]["centres_compared"].get<long long>(), 15 * 365);

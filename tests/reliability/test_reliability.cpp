@@ -168,9 +168,17 @@ TEST(Reliability, AGridThatCannotFinishInItsTimeBudgetEndsOnceItsPaceIsKnown) {
 
 TEST(Reliability, ARunThatOutgrowsItsMemoryBudgetEndsWithExit4) {
   Workspace w;
-  const ChildResult r = w.run("simulate tof-spad --scene " + kScenes +
-                              "/tof-spad-plane.toml --set array.rows=1024 --set array.columns=1024 --dense "
-                              "--kernel-only --frames 1 --max-memory 64M --out d");
+  const std::string run = "simulate tof-spad --scene " + kScenes +
+                          "/tof-spad-plane.toml --set array.rows=1024 --set array.columns=1024 --dense "
+                          "--kernel-only --frames 1 --max-memory 64M --out d";
+  // The estimate refuses it up front...
+  const ChildResult refused = w.run(run);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("simulate: needs about 4.28 GiB"), std::string::npos) << refused.err;
+  // ... and without it the watchdog ends it as it grows.
+  ::setenv("RANGESIM_SKIP_ESTIMATES", "1", 1);
+  const ChildResult r = w.run(run);
+  ::unsetenv("RANGESIM_SKIP_ESTIMATES");
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_NE(r.err.find("--max-memory 64M exceeded"), std::string::npos) << r.err;
   EXPECT_LT(r.max_rss_kib, 200 * 1024);

@@ -46,8 +46,11 @@ TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
   EXPECT_GT(j["points_detected"].get<long long>(), 40 * 300);
   EXPECT_LT(j["range_error_rms_px"].get<double>(), 0.3);
   EXPECT_LT(j["range_error_rms_m"].get<double>(), 5e-3);
-  for (const char* f : {"range_map.csv", "points.csv", "frames.csv", "summary.json"})
+  // The default file choice: the range map (365 x 40 = 14,600 values) stays CSV, points (about
+  // 14,600 rows x 11 columns) go to .npy.
+  for (const char* f : {"range_map.csv", "points.npy", "frames.csv", "summary.json"})
     EXPECT_TRUE(fs::exists(dir + "/o/" + f)) << f;
+  for (const char* f : {"range_map.npy", "points.csv"}) EXPECT_FALSE(fs::exists(dir + "/o/" + f)) << f;
   const std::string frames = slurp(dir + "/o/frames.csv");
   EXPECT_EQ(std::count(frames.begin(), frames.end(), '\n'), 41);
   EXPECT_NE(frames.find("\n0,0,100,100,4,4,8,72,12,"), std::string::npos) << frames.substr(0, 200);

@@ -57,7 +57,7 @@ TEST(RangeMapValidity, TheSpadRuleIsThePresetsDetectionSigma) {
 
 TEST(RangeMapValidity, LightSectionEdgeMarginRemovesClippedSpots) {
   const std::string dir = make_temp_dir();
-  const std::string scene = "--scene " + kScenes + "/step.toml --out " + dir + "/o";
+  const std::string scene = "--scene " + kScenes + "/step.toml --csv --out " + dir + "/o";
   const auto with = simulate("ls-conventional", scene);
   EXPECT_EQ(with["false_valid_fraction"].get<double>(), 0.0);
   EXPECT_GT(with["echo_valid_fraction"].get<double>(), 0.999);

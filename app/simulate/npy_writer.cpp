@@ -1,0 +1,109 @@
+#include "app/simulate/npy_writer.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace rangesim::app {
+
+namespace {
+
+static_assert(sizeof(double) == 8 && sizeof(std::int64_t) == 8, "npy: 8-byte cells");
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "npy_writer writes the host's bytes and declares them little-endian ('<')"
+#endif
+
+// Magic, version 1.0, header length, then the header dict padded with spaces and ended by '\n' so
+// that the data starts on a 64-byte boundary (what numpy itself writes; v1.0 asks for 16).
+std::string header(const std::string& descr, const std::string& shape) {
+  std::string dict = "{'descr': " + descr + ", 'fortran_order': False, 'shape': " + shape + ", }";
+  const std::size_t prefix = 10;  // magic (6) + version (2) + length (2)
+  std::size_t total = prefix + dict.size() + 1;
+  total = (total + 63) / 64 * 64;
+  const std::size_t len = total - prefix;
+  if (len > 65535) throw std::runtime_error("npy: header too long for format 1.0");
+  dict.append(len - dict.size() - 1, ' ');
+  dict += '\n';
+  std::string h("\x93NUMPY\x01\x00", 8);
+  h += static_cast<char>(len & 0xff);
+  h += static_cast<char>(len >> 8);
+  return h + dict;
+}
+
+std::string matrix_header(const std::vector<std::vector<double>>& rows, std::size_t columns) {
+  for (const auto& r : rows)
+    if (r.size() != columns) throw std::logic_error("npy_matrix: ragged rows");
+  return header("'<f8'", "(" + std::to_string(rows.size()) + ", " + std::to_string(columns) + ")");
+}
+
+std::string table_header(const systemc::Table& t) {
+  std::string descr = "[";
+  for (std::size_t c = 0; c < t.columns.size(); ++c)
+    descr += (c ? ", ('" : "('") + t.columns[c].name + (t.columns[c].integer ? "', '<i8')" : "', '<f8')");
+  descr += "]";
+  return header(descr, "(" + std::to_string(t.rows()) + ",)");
+}
+
+// Cells [first, first + n) of `t` as record bytes at `p` (integer columns converted to int64).
+void table_bytes(const systemc::Table& t, std::size_t first, std::size_t n, char* p) {
+  const std::size_t C = t.columns.size();
+  for (std::size_t i = first; i < first + n; ++i, p += 8) {
+    if (t.columns[i % C].integer) {
+      const auto v = static_cast<std::int64_t>(t.cells[i]);
+      std::memcpy(p, &v, 8);
+    } else {
+      std::memcpy(p, &t.cells[i], 8);
+    }
+  }
+}
+
+class File {
+ public:
+  explicit File(const std::string& path) : path_(path), f_(std::fopen(path.c_str(), "wb")) {
+    if (!f_) throw std::runtime_error("cannot write " + path);
+  }
+  ~File() {
+    if (f_) std::fclose(f_);
+  }
+  void put(const void* data, std::size_t n) {
+    if (n && std::fwrite(data, 1, n, f_) != n) throw std::runtime_error("cannot write " + path_);
+  }
+  void close() {
+    const int rc = std::fclose(f_);
+    f_ = nullptr;
+    if (rc != 0) throw std::runtime_error("cannot write " + path_);
+  }
+
+ private:
+  std::string path_;
+  std::FILE* f_;
+};
+
+}  // namespace
+
+void write_npy_matrix(const std::string& path, const std::vector<std::vector<double>>& rows, std::size_t columns) {
+  const std::string h = matrix_header(rows, columns);
+  File f(path);
+  f.put(h.data(), h.size());
+  for (const auto& r : rows) f.put(r.data(), columns * 8);
+  f.close();
+}
+
+void write_npy_table(const std::string& path, const systemc::Table& t) {
+  const std::string h = table_header(t);
+  File f(path);
+  f.put(h.data(), h.size());
+  // Through a 256 KB buffer: the converted records never exist whole in memory.
+  constexpr std::size_t kChunk = 32768;
+  std::vector<char> buf(kChunk * 8);
+  for (std::size_t i = 0; i < t.cells.size(); i += kChunk) {
+    const std::size_t n = std::min(kChunk, t.cells.size() - i);
+    table_bytes(t, i, n, buf.data());
+    f.put(buf.data(), n * 8);
+  }
+  f.close();
+}
+
+}  // namespace rangesim::app
