@@ -1,6 +1,7 @@
 // `rangesim compare`'s files: compare.json, compare.csv (thesis Table 5.1 in physical units, one
 // row per sensor), sbr_vs_background.csv (the Fig. 1.4-style regions), accuracy_vs_background.csv,
-// the two plots (gnuplot, PNG and SVG) and report.html (self-contained: the SVG plots inline).
+// the two plots (gnuplot, PNG and SVG) and report.html (self-contained: the PNG plots inline as
+// data: URIs).
 #include <cmath>
 #include <cstdlib>
 #include <fmt/format.h>
@@ -203,14 +204,18 @@ std::string fig14_script(const CompareResult& r, const std::vector<std::string>&
       "set termoption noenhanced\nset title \"SBR' against background illuminance at the target (scene '{}', "
       "{:g} m): detectable region per sensor\"\n"
       "set xlabel 'background illuminance at the target [lx]'\nset ylabel \"SBR' [dB]\"\n{}"
-      "set grid xtics ytics mxtics lc rgb '#dddddd'\nset key outside right top vertical box\n"
+      "set grid xtics ytics mxtics lc rgb '#dddddd'\nset key outside bottom center horizontal maxrows 2 box\nset bmargin 8\n"
       "set datafile missing 'NaN'\nset style fill transparent solid 0.35 border\n"
       "set arrow from {:g}, graph 0 to {:g}, graph 1 nohead dt 2 lc rgb '#555555'\n"
-      "set label 'scene' at {:g}, graph 0.97 offset 0.5,0 tc rgb '#555555'\nset rmargin 24\nplot ",
+      "set label 'scene' at {:g}, graph 0.97 offset 0.5,0 tc rgb '#555555'\nplot ",
       r.scene_name, r.scene_distance_m, kLuxTics, scene_lux, scene_lux, scene_lux);
-  for (size_t i = 0; i < r.sensors.size(); ++i)
-    s += fmt::format("{}'{}' using 1:2:3 with filledcurves lc rgb '{}' title '{}'", i ? ", " : "", data[i], colour(i),
-                     r.sensors[i].sensor);
+  for (size_t i = 0; i < r.sensors.size(); ++i) {
+    const bool any = r.sensors[i].grid.points_detectable > 0;
+    s += any ? fmt::format("{}'{}' using 1:2:3 with filledcurves lc rgb '{}' title '{}'", i ? ", " : "", data[i],
+                           colour(i), r.sensors[i].sensor)
+             : fmt::format("{}keyentry with filledcurves lc rgb '{}' title '{} (nothing detectable)'", i ? ", " : "",
+                           colour(i), r.sensors[i].sensor);
+  }
   return s + "\n";
 }
 
@@ -220,12 +225,17 @@ std::string accuracy_script(const CompareResult& r, const std::vector<std::strin
       "in the scene)'\n"
       "set xlabel 'background illuminance at the target [lx]'\nset ylabel 'rms range error [mm]'\n{}"
       "set logscale y\nset format y '%g'\nset grid xtics ytics mxtics lc rgb '#dddddd'\n"
-      "set key outside right top vertical box\nset datafile missing 'NaN'\nset rmargin 24\n"
+      "set key outside bottom center horizontal maxrows 2 box\nset bmargin 8\nset datafile missing 'NaN'\n"
       "set arrow from {:g}, graph 0 to {:g}, graph 1 nohead dt 2 lc rgb '#555555'\nplot ",
       r.scene_name, kLuxTics, scene_lux, scene_lux);
-  for (size_t i = 0; i < r.sensors.size(); ++i)
-    s += fmt::format("{}'{}' using 1:2 with lines lw 2.5 lc rgb '{}' dt {} title '{} ({:g} m)'", i ? ", " : "", data[i],
-                     colour(i), i + 1, r.sensors[i].sensor, r.sensors[i].accuracy_distance_m);
+  for (size_t i = 0; i < r.sensors.size(); ++i) {
+    bool any = false;
+    for (const auto& p : r.sensors[i].profile.points) any = any || std::isfinite(p.accuracy_m);
+    s += any ? fmt::format("{}'{}' using 1:2 with lines lw 2.5 lc rgb '{}' dt {} title '{} ({:g} m)'", i ? ", " : "",
+                           data[i], colour(i), i + 1, r.sensors[i].sensor, r.sensors[i].accuracy_distance_m)
+             : fmt::format("{}keyentry with lines lw 2.5 lc rgb '{}' dt {} title '{} (not detectable at this power)'",
+                           i ? ", " : "", colour(i), i + 1, r.sensors[i].sensor);
+  }
   return s + "\n";
 }
 
@@ -240,13 +250,27 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
-std::string inline_svg(const std::string& path) {
-  const std::string svg = slurp(path);
-  const size_t at = svg.find("<svg");
-  return at == std::string::npos ? "" : svg.substr(at);
+// A PNG as an <img> with a data: URI, so the report is one self-contained file.
+std::string inline_png(const std::string& path, const std::string& alt) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const std::string in = slurp(path);
+  if (in.empty()) return "";
+  std::string out;
+  out.reserve(in.size() * 4 / 3 + 4);
+  for (size_t i = 0; i < in.size(); i += 3) {
+    const unsigned a = static_cast<unsigned char>(in[i]);
+    const unsigned b = i + 1 < in.size() ? static_cast<unsigned char>(in[i + 1]) : 0;
+    const unsigned c = i + 2 < in.size() ? static_cast<unsigned char>(in[i + 2]) : 0;
+    const unsigned v = (a << 16) | (b << 8) | c;
+    out += k[(v >> 18) & 63];
+    out += k[(v >> 12) & 63];
+    out += i + 1 < in.size() ? k[(v >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? k[v & 63] : '=';
+  }
+  return "<img alt=\"" + alt + "\" style=\"max-width:100%\" src=\"data:image/png;base64," + out + "\">";
 }
 
-std::string report_html(const CompareResult& r, const CompareOptions& opt, const std::vector<std::string>& svgs) {
+std::string report_html(const CompareResult& r, const CompareOptions& opt, const std::vector<std::string>& figures) {
   std::string h = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>rangesim compare: {}</title>\n"
       "<style>body{{font-family:sans-serif;max-width:1100px;margin:2em auto;color:#222}}"
@@ -272,8 +296,8 @@ std::string report_html(const CompareResult& r, const CompareOptions& opt, const
       "Fig. 1.4-style map: SBR' against the background illuminance at the target; each sensor's region spans the SBR' "
       "of its detectable operating points over the source-power axis (dashed: the scene's illuminance).",
       "Range accuracy against background illuminance at the scene's source power and distance."};
-  for (size_t i = 0; i < svgs.size() && i < 2; ++i)
-    if (!svgs[i].empty()) h += fmt::format("<figure>{}<figcaption>{}</figcaption></figure>\n", svgs[i], captions[i]);
+  for (size_t i = 0; i < figures.size() && i < 2; ++i)
+    if (!figures[i].empty()) h += fmt::format("<figure>{}<figcaption>{}</figcaption></figure>\n", figures[i], captions[i]);
   h += "<table><caption>Thesis Table 5.1 in physical units</caption><tr><th>quantity</th><th>unit</th>";
   for (const auto& c : r.sensors) h += "<th>" + c.sensor + "</th>";
   h += "</tr>\n";
@@ -314,7 +338,7 @@ std::string write_compare(OutputDir& out, const CompareResult& r, const CompareO
   out.write("compare.csv", table_csv(r));
   out.write("sbr_vs_background.csv", band_csv(r));
   out.write("accuracy_vs_background.csv", accuracy_csv(r));
-  std::vector<std::string> svgs;
+  std::vector<std::string> figures;
   std::string warning;
   const double scene_lux = r.sensors.empty() ? 1.0 : r.sensors.front().scene_lux;
   if (!opt.no_plots) {
@@ -353,12 +377,12 @@ std::string write_compare(OutputDir& out, const CompareResult& r, const CompareO
                               "accuracy_vs_background.png", "accuracy_vs_background.svg"})
           std::remove(out.staged(n).c_str());
       } else {
-        svgs.push_back(inline_svg(out.staged("fig1_4_sbr_vs_background.svg")));
-        svgs.push_back(inline_svg(out.staged("accuracy_vs_background.svg")));
+        figures.push_back(inline_png(out.staged("fig1_4_sbr_vs_background.png"), "SBR' against background illuminance"));
+        figures.push_back(inline_png(out.staged("accuracy_vs_background.png"), "accuracy against background illuminance"));
       }
     }
   }
-  out.write("report.html", report_html(r, opt, svgs));
+  out.write("report.html", report_html(r, opt, figures));
   return warning;
 }
 

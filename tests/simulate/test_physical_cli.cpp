@@ -146,9 +146,12 @@ TEST(Compare, SmokeFilesAndContent) {
                         "accuracy_vs_background.png"})
     EXPECT_TRUE(fs::exists(dir + "/c/" + f)) << f;
   const std::string html = slurp(dir + "/c/report.html");
-  EXPECT_NE(html.find("<svg"), std::string::npos);
+  EXPECT_NE(html.find("src=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);  // the PNG inline
   EXPECT_NE(html.find("Table 5.1 in physical units"), std::string::npos);
-  EXPECT_EQ(html.find("src=\""), std::string::npos);  // self-contained: nothing referenced
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos);  // self-contained: nothing referenced
+  EXPECT_EQ(html.find(".png\""), std::string::npos);
+  for (const char* sensor : {"ls-conventional", "ls-demodulation", "tof-lockin", "tof-spad"})
+    EXPECT_NE(html.find(std::string("<td>") + sensor + "</td>"), std::string::npos) << sensor;
   const std::string csv = slurp(dir + "/c/compare.csv");
   EXPECT_EQ(csv.rfind("quantity,unit,ls-conventional,ls-demodulation,tof-lockin,tof-spad\n", 0), 0U) << csv;
   EXPECT_NE(r.err.find("compare"), std::string::npos);  // the progress line's final count
