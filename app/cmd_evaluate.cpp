@@ -197,12 +197,16 @@ int run_evaluate(const EvaluateOptions& opt) {
   fmt::print("{}\n", summary_text(ev));
   if (!physical.is_null()) {
     for (const auto& n : physical["notes"]) fmt::print(stderr, "rangesim evaluate: note: {}\n", n.get<std::string>());
-    if (physical.contains("background_range_lux"))
+    if (physical.contains("background_range_lux") && !(physical["background_range_lux"]["hi"].get<double>() > 0))
+      fmt::print("detectable background: none at the grid's highest signal (detectable_area.csv has the map)\n");
+    else if (physical.contains("background_range_lux"))
       fmt::print("detectable background: {:.4g} .. {:.4g} lx (at the grid's highest signal; {:.4g} {} per lx)\n",
                  physical["background_range_lux"]["lo"].get<double>(), physical["background_range_lux"]["hi"].get<double>(),
                  physical["background"]["native_per_lux"].get<double>(),
                  physical["background"]["native_unit"].get<std::string>());
-    if (physical.contains("signal_range_W"))
+    if (physical.contains("signal_range_W") && !(physical["signal_range_W"]["hi"].get<double>() > 0))
+      fmt::print("detectable signal: none at the grid's lowest background (detectable_area.csv has the map)\n");
+    else if (physical.contains("signal_range_W"))
       fmt::print("detectable signal: {:.4g} .. {:.4g} W of source power (at the grid's lowest background; {:.4g} {} per W)\n",
                  physical["signal_range_W"]["lo"].get<double>(), physical["signal_range_W"]["hi"].get<double>(),
                  physical["signal"]["native_per_W"].get<double>(), physical["signal"]["native_unit"].get<std::string>());

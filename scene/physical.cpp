@@ -114,6 +114,10 @@ std::vector<double> depth_grid_m(const Scene& s, int rows, int columns, double p
                                       "({}, {}) of a {} x {} array; allowed: tilts whose plane faces every pixel",
                                       s.file, r, c, rows, columns));
         d = s.distance_m / den;
+      } else if (s.shape == TargetShape::Objects) {
+        const double u = (c + 0.5) / columns, v = (r + 0.5) / rows;  // the pixel centre in the field of view
+        for (const auto& o : s.objects)
+          if (u >= o.left && u < o.right && v >= o.top && v < o.bottom) d = std::min(d, o.distance_m);
       } else if (s.shape == TargetShape::Step) {
         if (s.has("target.step_y_m"))
           d = s.near_distance_m * yr > s.step_y_m ? s.near_distance_m : s.distance_m;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
 #include <set>
 #include <toml++/toml.h>
 #include <vector>
@@ -22,6 +23,7 @@ const char* shape_name(TargetShape s) {
     case TargetShape::Tilted: return "tilted";
     case TargetShape::Step: return "step";
     case TargetShape::DepthMap: return "depth_map";
+    case TargetShape::Objects: return "objects";
   }
   return "?";
 }
@@ -149,6 +151,41 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   std::map<std::string, int> line_of;
   for (const auto& [section_key, section_node] : root) {
     const std::string section(section_key.str());
+    if (section == "object") {  // [[object]]: the objects of target.shape = "objects"
+      const toml::array* a = section_node.as_array();
+      if (!a || !a->is_array_of_tables())
+        throw UserError(fmt::format("{}: 'object' must be an array of tables, [[object]]", where(path, section_node)));
+      for (const auto& item : *a) {
+        SceneObject o;
+        std::map<std::string, double> v;
+        for (const auto& [k, node] : *item.as_table()) {
+          const std::string key(k.str());
+          const bool distance = key == "distance_m";
+          if (!distance && key != "left" && key != "right" && key != "top" && key != "bottom")
+            throw UserError(fmt::format("{}: unknown key 'object.{}'; allowed in [[object]]: distance_m, left, right, "
+                                        "top, bottom",
+                                        where(path, node), key));
+          std::optional<double> d = node.value<double>();
+          const double lo = distance ? 0.01 : 0.0, hi = distance ? 1e4 : 1.0;
+          if (!d || !std::isfinite(*d) || *d < lo || *d > hi)
+            throw UserError(fmt::format("{}: object.{} must be a number in [{:g}, {:g}]{}", where(path, node), key, lo,
+                                        hi, distance ? " m" : " (a fraction of the field of view)"));
+          v[key] = *d;
+        }
+        if (!v.count("distance_m"))
+          throw UserError(fmt::format("{}: missing key 'object.distance_m' in an [[object]]; allowed: [0.01, 10000]",
+                                      where(path, item)));
+        o.distance_m = v["distance_m"];
+        o.left = v.count("left") ? v["left"] : 0.0, o.right = v.count("right") ? v["right"] : 1.0;
+        o.top = v.count("top") ? v["top"] : 0.0, o.bottom = v.count("bottom") ? v["bottom"] : 1.0;
+        if (!(o.left < o.right) || !(o.top < o.bottom))
+          throw UserError(fmt::format("{}: an [[object]] needs left < right and top < bottom (fractions of the field "
+                                      "of view); got left {:g}, right {:g}, top {:g}, bottom {:g}",
+                                      where(path, item), o.left, o.right, o.top, o.bottom));
+        s.objects.push_back(o);
+      }
+      continue;
+    }
     const toml::table* t = section_node.as_table();
     if (!t)
       throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections of a {} scene: {}",
@@ -245,7 +282,8 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   const std::string shape = text.count("target.shape") ? text["target.shape"] : "plane";
   bool known_shape = false;
   for (const auto& sh : rules.shapes) known_shape = known_shape || sh == shape;
-  const bool any_shape = shape == "plane" || shape == "tilted" || shape == "step" || shape == "depth_map";
+  const bool any_shape =
+      shape == "plane" || shape == "tilted" || shape == "step" || shape == "depth_map" || shape == "objects";
   if (!known_shape && any_shape && sensor.rasterises)
     s.notes.push_back(fmt::format("{}: target.shape = \"{}\" is not modelled natively by {}: rasterised into a depth "
                                   "map at its pixel grid",
@@ -256,7 +294,14 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   s.shape = shape == "tilted"      ? TargetShape::Tilted
             : shape == "step"      ? TargetShape::Step
             : shape == "depth_map" ? TargetShape::DepthMap
+            : shape == "objects"   ? TargetShape::Objects
                                    : TargetShape::Plane;
+  if (s.shape == TargetShape::Objects && s.objects.empty())
+    throw UserError(fmt::format("{}: target.shape = \"objects\" needs at least one [[object]] (distance_m, left, "
+                                "right, top, bottom)",
+                                path));
+  if (s.shape != TargetShape::Objects && !s.objects.empty())
+    throw UserError(fmt::format("{}: [[object]] tables apply to target.shape = \"objects\" only", path));
   auto forbid = [&](const std::string& key) {
     if (s.values.count(key) || text.count(key))
       throw UserError(fmt::format("{}: key '{}' does not apply to target.shape = \"{}\"", path, key, shape));

@@ -33,7 +33,9 @@
 //                (spot: [beam] first_row, rows, first_column, columns), pulse_width_s and
 //                modulation_Hz (the sensor's timing is its preset's; noted)
 //   [camera]     filter_bandwidth_m (the narrow-band filter in front of the lens), f_number
-//   [target]     reflectance (Lambertian albedo, every sensor)
+//   [target]     reflectance (Lambertian albedo, every sensor); shape = "objects": the wall at
+//                distance_m with [[object]] tables in front (distance_m, left, right, top, bottom:
+//                fractions of the field of view), rasterised for every sensor
 // A key some sensor uses and this one cannot is a note (Scene::notes), not an error; a sensor's own
 // light keys ([light], [rates], beam.signal_A, background.*) override the physical light for it.
 // Every sensor takes every shape: a shape or step it does not model natively is rasterised into a
@@ -48,7 +50,15 @@
 
 namespace rangesim::scene {
 
-enum class TargetShape { Plane, Tilted, Step, DepthMap };
+enum class TargetShape { Plane, Tilted, Step, DepthMap, Objects };
+
+// One object of an "objects" scene: a rectangle facing the sensor at distance_m, covering the
+// fractions [left, right) x [top, bottom) of the field of view (0 = left / top edge, 1 = right /
+// bottom), in front of the wall at target.distance_m. Nearer objects hide farther ones.
+struct SceneObject {
+  double distance_m = 1.0;
+  double left = 0, right = 1, top = 0, bottom = 1;
+};
 enum class BeamShape { Sheet, Flood, Spot };
 
 // The light of a physical scene ([ambient], [source], [camera] filter), common to every sensor.
@@ -77,6 +87,7 @@ struct Scene {
   double near_distance_m = 0;                 // step: depth of the near face
   double step_y_m = 0;                        // step: the near face covers y > step_y_m
   std::shared_ptr<const DepthMap> depth_map;  // depth_map: the image, in metres
+  std::vector<SceneObject> objects;           // objects: the [[object]] tables, in file order
   // [beam]
   double beam_power_W = 0.5e-3;
   double reference_distance_m = 1.1;

@@ -6,11 +6,12 @@ set -u
 bin=${1:-build/app/rangesim}
 out=${2:-$(mktemp -d)}
 here=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$out"
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 frames() {
   case $1 in
-    ls-conventional) echo "--frames 375" ;;  # one range map
-    ls-demodulation) echo "--frames 120" ;;
+    ls-conventional) echo "--frames 40" ;;  # 40 of the 375 beam positions of a range map
+    ls-demodulation) echo "--frames 40" ;;
     tof-lockin) echo "--frames 2" ;;
     *) echo "--frames 1" ;;
   esac

@@ -22,6 +22,7 @@ Scene ls_conventional_scene(Scene s, const ParamSet& params) {
                                   s.file));
     s = rasterised(s, rad);
   }
+  if (s.shape == TargetShape::Objects) s = rasterised(s, rad);
   if (s.light.present) {
     const NativeLight n = native_light(s, rad, &s.notes);
     if (s.has("beam.power_W") || s.has("background.irradiance_W_per_m2"))
@@ -90,6 +91,7 @@ RowTruth SceneOptics::truth(int b, int row) const {
       z = scene_.near_distance_m * y_e / f > scene_.step_y_m ? scene_.near_distance_m : scene_.distance_m;
       break;
     case TargetShape::DepthMap: z = depth_map_z(b, row); break;
+    case TargetShape::Objects: z = -1; break;  // rasterised into a depth map by ls_conventional_scene
   }
   RowTruth t;
   t.background_V = background_V_;

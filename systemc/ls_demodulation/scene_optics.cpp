@@ -14,7 +14,8 @@ namespace rangesim::scene {
 DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg, const ParamSet& params) {
   Scene in = load_scene(path, "ls-demodulation");
   const SensorRadiometry rad = ls_demodulation_radiometry(params);
-  if (in.shape == TargetShape::Tilted || in.shape == TargetShape::Step) in = rasterised(in, rad);
+  if (in.shape == TargetShape::Tilted || in.shape == TargetShape::Step || in.shape == TargetShape::Objects)
+    in = rasterised(in, rad);
   DemodScene s;
   s.notes = in.notes;
   s.file = path;

@@ -17,8 +17,8 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& scene_in, const TofLoc
   };
   const bool native_step = scene_in.shape != TargetShape::Step ||
                            (!scene_in.has("target.step_y_m") && !scene_in.has("target.step_distance_m"));
-  const Scene s = scene_in.shape == TargetShape::Tilted || !native_step ? rasterised(scene_in, need_radiometry())
-                                                                        : scene_in;
+  const bool rasterise = scene_in.shape == TargetShape::Tilted || scene_in.shape == TargetShape::Objects || !native_step;
+  const Scene s = rasterise ? rasterised(scene_in, need_radiometry()) : scene_in;
   LockinScene l;
   l.notes = s.notes;
   l.file = s.file;

@@ -32,7 +32,8 @@ SpadScene load_spad_scene(const std::string& path, const TofSpadConfig& cfg, int
   Scene in = load_scene(path, "tof-spad");
   const bool native_step =
       in.shape != TargetShape::Step || (!in.has("target.step_y_m") && !in.has("target.step_column_fraction"));
-  if (in.shape == TargetShape::Tilted || !native_step) in = rasterised(in, need_radiometry());
+  if (in.shape == TargetShape::Tilted || in.shape == TargetShape::Objects || !native_step)
+    in = rasterised(in, need_radiometry());
   SpadScene s;
   s.notes = in.notes;
   s.file = path;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/preset.h"
 #include "core/sensor_registry.h"
@@ -140,7 +141,7 @@ TEST(Radiometry, OtherSensorsKeysAreNotes) {
   EXPECT_TRUE(s.light.present);
   for (const char* name : {"plane", "tilted", "step", "depth-map", "sunlit-wall", "ls-demodulation-plane",
                            "ls-demodulation-depth-map", "tof-lockin-plane", "tof-lockin-step", "tof-lockin-depth-map",
-                           "tof-spad-plane", "tof-spad-step", "tof-spad-depth-map", "tof-spad-spot"})
+                           "tof-spad-plane", "tof-spad-step", "tof-spad-depth-map", "tof-spad-spot", "objects"})
     for (const auto& sensor : rangesim::sensors()) {
       const sc::Scene x = sc::load_scene(kScenes + "/" + name + ".toml", sensor.id);
       EXPECT_TRUE(x.light.present) << name << " " << sensor.id;
@@ -172,4 +173,22 @@ TEST(Radiometry, OutOfRangeValuesNameKeyAndRange) {
   EXPECT_NE(e.find("ambient.spectrum = \"neon\" is not a known spectrum; allowed: \"sunlight\", \"halogen\", \"led\""),
             std::string::npos)
       << e;
+}
+
+// Several objects: rasterised at a sensor's grid, the nearest face wins; bad tables name the key.
+TEST(Radiometry, ObjectsRasterise) {
+  const sc::Scene s = sc::load_scene(kScenes + "/objects.toml", "tof-spad");
+  ASSERT_EQ(s.objects.size(), 2U);
+  const std::vector<double> z = sc::depth_grid_m(s, 10, 20, 25e-6, 8e-3);
+  EXPECT_DOUBLE_EQ(z[0], 1.2);                 // row 0, column 0: the wall
+  EXPECT_DOUBLE_EQ(z[4 * 20 + 5], 0.9);        // row 4 (v = 0.45), column 5 (u = 0.275): the first box
+  EXPECT_DOUBLE_EQ(z[6 * 20 + 13], 1.0);       // row 6 (v = 0.65), column 13 (u = 0.675): the second box
+  std::string t = "[scene]\nname = \"o\"\n[target]\nshape = \"objects\"\ndistance_m = 2\n[[object]]\ndistance_m = 1\n"
+                  "left = 0.6\nright = 0.2\n[source]\npower_W = 1\n";
+  std::string e = error_of(t, "ls-demodulation");
+  EXPECT_NE(e.find("left < right"), std::string::npos) << e;
+  t = "[scene]\nname = \"o\"\n[target]\nshape = \"objects\"\ndistance_m = 2\n[[object]]\ndistance_m = -1\n"
+      "[source]\npower_W = 1\n";
+  e = error_of(t, "tof-lockin");
+  EXPECT_NE(e.find("object.distance_m must be a number in [0.01, 10000] m"), std::string::npos) << e;
 }
