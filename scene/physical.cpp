@@ -121,10 +121,10 @@ std::vector<double> depth_grid_m(const Scene& s, int rows, int columns, double p
       } else if (s.shape == TargetShape::Step) {
         if (s.has("target.step_y_m"))
           d = s.near_distance_m * yr > s.step_y_m ? s.near_distance_m : s.distance_m;
-        else if (s.has("target.step_column_fraction"))
-          d = c < s.get("target.step_column_fraction", 0.5) * columns ? s.near_distance_m : s.distance_m;
-        else
+        else if (s.has("target.step_column") || s.has("target.step_distance_m"))
           d = c < s.get("target.step_column", columns / 2) ? s.distance_m : s.get("target.step_distance_m", s.distance_m);
+        else  // a column fraction (default 0.5) of near face on the left
+          d = c < s.get("target.step_column_fraction", 0.5) * columns ? s.near_distance_m : s.distance_m;
       }
       z[static_cast<std::size_t>(r) * columns + c] = d;
     }

@@ -352,8 +352,8 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   if (s.shape == TargetShape::Step) {
     // The step's edge: a row edge (step_y_m), a column fraction (step_column_fraction) or a column
     // (step_column, with step_distance_m on its right); a sensor rasterises the ones it lacks.
-    if (!s.has("target.step_y_m") && !s.has("target.step_column_fraction") && !s.has("target.step_column") &&
-        !s.has("target.step_distance_m"))
+    if (rules.step_y && !s.has("target.step_y_m") && !s.has("target.step_column_fraction") &&
+        !s.has("target.step_column") && !s.has("target.step_distance_m"))
       throw UserError(fmt::format(
           "{}: missing key 'target.step_y_m' (step: the near face covers y > step_y_m; or "
           "target.step_column_fraction, or target.step_column with target.step_distance_m)",
