@@ -155,6 +155,18 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   ev->add_option("--signal", ev_opt.signal,
                  "Signal grid LO:HI:N, log-spaced, in the sensor's unit: " + signal_units() + " (default: preset)");
   ev->add_option("--background", ev_opt.background, "Background grid LO:HI:N, same unit as --signal (default: preset)");
+  ev->add_option("--background-lux", ev_opt.background_lux,
+                 "Background grid LO:HI:N in lux of ambient light at the target (log-spaced), turned into the\n"
+                 "sensor's unit by its radiometry under --scene (docs/radiometry.md); instead of --background")
+      ->type_name("LO:HI:N");
+  ev->add_option("--signal-power", ev_opt.signal_power,
+                 "Signal grid LO:HI:N in watts of mean source power (log-spaced), at the scene's distance, turned\n"
+                 "into the sensor's unit by its radiometry under --scene; instead of --signal")
+      ->type_name("LO:HI:N");
+  ev->add_option("--scene", ev_opt.scene,
+                 "Physical scene of --background-lux / --signal-power: reflectance, spectrum, filter, beam,\n"
+                 "distance (default: the built-in sunlit-wall, scenes/sunlit-wall.toml)")
+      ->check(kPath);
   ev->add_option("--samplings", ev_opt.samplings, "Samplings per integration (default: preset)")
       ->transform(schema_integer("multisampling.samplings"));
   ev->add_option("--adc-bits", ev_opt.adc_bits,
@@ -218,8 +230,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "false_valid_fraction) into --out.");
   sim->add_option("sensor", sim_opt.sensor, "Preset id or path to a .toml file")->required();
   sim->add_option("--scene", sim_opt.scene,
-                  "Scene file (TOML) for the sensor (examples in scenes/, docs/simulate.md); target.shape = "
-                  "\"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
+                  "Scene file (TOML; examples in scenes/, docs/simulate.md): every sensor takes every scene, the\n"
+                  "light in lux and watts through its radiometry (docs/radiometry.md); keys it cannot use are notes;\n"
+                  "target.shape = \"depth_map\" reads a PGM/PFM depth image (scenes/*depth-map.toml)")
       ->required();
   sim->add_option("--frames", sim_opt.frames,
                   "Frame accesses to simulate (default: one range map = timing.beam_positions)")
@@ -276,6 +289,33 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                                                     "from source.pulse_width_s / 1e5 to source.pulse_width_s";
           },
           ""));
+
+  CompareOptions& cmp_opt = c.compare;
+  auto* cmp = app.add_subcommand(
+      "compare",
+      "The sensors side by side on one physical scene and one light axis (thesis Fig. 1.4 and Table 5.1):\n"
+      "each sensor's radiometry turns lux of ambient light and watts of source power into its own unit and its\n"
+      "golden model evaluates the grid. Writes report.html (self-contained), compare.json, compare.csv (Table\n"
+      "5.1 in physical units), sbr_vs_background.csv, accuracy_vs_background.csv and the plots\n"
+      "fig1_4_sbr_vs_background.{png,svg} and accuracy_vs_background.{png,svg} into --out.");
+  cmp->add_option("sensors", cmp_opt.sensors,
+                  "Sensors to compare: preset ids or paths to .toml files (default: every registered sensor)");
+  cmp->add_option("--scene", cmp_opt.scene,
+                  "Physical scene (TOML with [ambient] and [source], docs/radiometry.md); default: the built-in\n"
+                  "sunlit-wall (scenes/sunlit-wall.toml: 50% wall at 1 m, 10 klux sunlight, 1 W at 850 nm, 10 nm filter)")
+      ->check(kPath);
+  cmp->add_option("--background-lux", cmp_opt.background_lux,
+                  "Background axis LO:HI:N, lux of ambient light at the target, log-spaced (default 0.1:1e7:41)")
+      ->type_name("LO:HI:N");
+  cmp->add_option("--signal-power", cmp_opt.signal_power,
+                  "Signal axis LO:HI:N, watts of mean source power, log-spaced (default 1e-4:10:26)")
+      ->type_name("LO:HI:N");
+  cmp->add_option("--out", cmp_opt.out, "Output directory (default: rangesim-out/compare)")->check(kPath);
+  cmp->add_flag("--force", cmp_opt.force,
+                "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
+  cmp->add_flag("--json", cmp_opt.json, "Print compare.json to stdout instead of the table");
+  cmp->add_flag("--no-plots", cmp_opt.no_plots, "Skip the plots (report.html then has the tables only)");
+  add_budgets(cmp, c);
 
   TableOptions& tb_opt = c.table;
   auto* tb = app.add_subcommand(
@@ -471,6 +511,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
     c.kind = CommandKind::Sweep;
   else if (*mg)
     c.kind = CommandKind::Merge;
+  else if (*cmp)
+    c.kind = CommandKind::Compare;
   return result;
 }
 

@@ -8,10 +8,11 @@
 
 #include "app/cmd_simulate.h"
 #include "app/commands.h"
+#include "app/compare/compare.h"
 
 namespace rangesim::app {
 
-enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Bench, Cosim, Sweep, Merge };
+enum class CommandKind { None, List, Show, Evaluate, FrameRate, Table, Simulate, Bench, Cosim, Sweep, Merge, Compare };
 
 // One parsed command line: which subcommand, and its options.
 struct ParsedCommand {
@@ -26,6 +27,7 @@ struct ParsedCommand {
   CosimCommandOptions cosim;
   SweepOptions sweep;
   MergeOptions merge;
+  CompareOptions compare;
   // Budgets of the long commands (app/run_control.h); evaluate's --max-seconds is its own option.
   std::optional<double> max_seconds;
   std::string max_memory;  // "" = none; checked text (app/cli_checks.h)

@@ -9,6 +9,7 @@
 #include "app/evaluation_output.h"
 #include "app/grid_writer.h"
 #include "app/output_dir.h"
+#include "app/physical_axes.h"
 #include "app/plot.h"
 #include "app/progress_line.h"
 #include "app/run_control.h"
@@ -101,6 +102,51 @@ void apply_evaluate_flags(ParamSet& params, const EvaluateOptions& opt) {
   }
   if (opt.signal) apply_grid(params, schema, "signal", *opt.signal);
   if (opt.background) apply_grid(params, schema, "background", *opt.background);
+  if (opt.signal && opt.signal_power)
+    throw UserError("--signal and --signal-power both set the signal axis; give one", "signal-power");
+  if (opt.background && opt.background_lux)
+    throw UserError("--background and --background-lux both set the background axis; give one", "background-lux");
+  if (!opt.scene.empty() && !opt.signal_power && !opt.background_lux)
+    throw UserError("--scene sets the conditions of --background-lux / --signal-power; give one of them", "scene");
+  if (opt.signal_power || opt.background_lux) {
+    const PhysicalAxes a = physical_axes(params, physical_scene(opt.scene, params.sensor_id()), true);
+    if (opt.signal_power) apply_physical_axis(params, "signal", *opt.signal_power, a.native_per_W, "--signal-power");
+    if (opt.background_lux)
+      apply_physical_axis(params, "background", *opt.background_lux, a.native_per_lux, "--background-lux");
+  }
+}
+
+// summary.json's physical_axes: the scene, the conversion and the detectable ranges in lux and W
+// (null when the axes are the sensor's own).
+static nlohmann::json physical_axes_json(const EvaluateOptions& opt, const ParamSet& params, const golden::EvalResult& ev) {
+  if (!opt.signal_power && !opt.background_lux) return nullptr;
+  ParamSet p = params;
+  const scene::Scene sc = physical_scene(opt.scene, params.sensor_id());
+  const PhysicalAxes a = physical_axes(p, sc, false);
+  nlohmann::json j = {{"scene", sc.file},
+                      {"distance_m", a.distance_m},
+                      {"radiometry", a.radiometry.conversion},
+                      {"notes", a.notes}};
+  const auto range = [](const golden::EvalRange& r, double per) {
+    return nlohmann::json{{"lo", r.lo / per}, {"hi", r.hi / per}, {"at", r.at}};
+  };
+  if (opt.background_lux) {
+    j["background"] = {{"unit", "lx"},
+                       {"native_per_lux", a.native_per_lux},
+                       {"native_unit", a.radiometry.unit},
+                       {"lo", ev.background.values.front() / a.native_per_lux},
+                       {"hi", ev.background.values.back() / a.native_per_lux}};
+    j["background_range_lux"] = range(ev.background_range, a.native_per_lux);
+  }
+  if (opt.signal_power) {
+    j["signal"] = {{"unit", "W"},
+                   {"native_per_W", a.native_per_W},
+                   {"native_unit", a.radiometry.unit},
+                   {"lo", ev.signal.values.front() / a.native_per_W},
+                   {"hi", ev.signal.values.back() / a.native_per_W}};
+    j["signal_range_W"] = range(ev.signal_range, a.native_per_W);
+  }
+  return j;
 }
 
 ResourceEstimate evaluate_estimate(const ParamSet& params, bool monte_carlo) {
@@ -137,6 +183,8 @@ int run_evaluate(const EvaluateOptions& opt) {
   const golden::EvalResult plotted = grid.finish(ev);
   const std::string plot_warning = opt.no_plots ? "" : render_plots(out, plotted);
   nlohmann::json summary = summary_json(ev, params);
+  const nlohmann::json physical = physical_axes_json(opt, params, ev);
+  if (!physical.is_null()) summary["physical_axes"] = physical;
   out.write("summary.json", summary.dump(2) + "\n");
   const std::vector<std::string> written = out.commit();
   summary["files"] = written;
@@ -146,7 +194,24 @@ int run_evaluate(const EvaluateOptions& opt) {
     fmt::print("{}\n", summary.dump(2));
     return 0;
   }
-  fmt::print("{}\noutputs in {}/: ", summary_text(ev), dir);
+  fmt::print("{}\n", summary_text(ev));
+  if (!physical.is_null()) {
+    for (const auto& n : physical["notes"]) fmt::print(stderr, "rangesim evaluate: note: {}\n", n.get<std::string>());
+    if (physical.contains("background_range_lux") && !(physical["background_range_lux"]["hi"].get<double>() > 0))
+      fmt::print("detectable background: none at the grid's highest signal (detectable_area.csv has the map)\n");
+    else if (physical.contains("background_range_lux"))
+      fmt::print("detectable background: {:.4g} .. {:.4g} lx (at the grid's highest signal; {:.4g} {} per lx)\n",
+                 physical["background_range_lux"]["lo"].get<double>(), physical["background_range_lux"]["hi"].get<double>(),
+                 physical["background"]["native_per_lux"].get<double>(),
+                 physical["background"]["native_unit"].get<std::string>());
+    if (physical.contains("signal_range_W") && !(physical["signal_range_W"]["hi"].get<double>() > 0))
+      fmt::print("detectable signal: none at the grid's lowest background (detectable_area.csv has the map)\n");
+    else if (physical.contains("signal_range_W"))
+      fmt::print("detectable signal: {:.4g} .. {:.4g} W of source power (at the grid's lowest background; {:.4g} {} per W)\n",
+                 physical["signal_range_W"]["lo"].get<double>(), physical["signal_range_W"]["hi"].get<double>(),
+                 physical["signal"]["native_per_W"].get<double>(), physical["signal"]["native_unit"].get<std::string>());
+  }
+  fmt::print("outputs in {}/: ", dir);
   for (size_t i = 0; i < written.size(); ++i)
     fmt::print("{}{}", i ? ", " : "", written[i].substr(written[i].find_last_of('/') + 1));
   fmt::print("\n");

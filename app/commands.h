@@ -24,6 +24,11 @@ struct EvaluateOptions {
   std::vector<std::string> settings;  // --set KEY=VALUE, in order, after the preset
   std::optional<std::string> signal;  // "LO:HI:N" volts
   std::optional<std::string> background;
+  // Physical axes (app/physical_axes.h): lux of ambient light at the target and watts of source
+  // power, converted by the sensor's radiometry under `scene` ("" = the default scene).
+  std::optional<std::string> background_lux;
+  std::optional<std::string> signal_power;
+  std::string scene;
   // Integer flags are held wide: the sensor's own range is checked when they are applied, so
   // --frames 1e12 is refused naming that range instead of failing to convert.
   std::optional<long long> samplings;
@@ -46,6 +51,8 @@ struct EvaluateOptions {
 int run_evaluate(const EvaluateOptions& opt);
 // `evaluate` with --trials / --target-error (app/montecarlo/cmd_evaluate_mc.cpp).
 int run_evaluate_mc(const EvaluateOptions& opt);
+
+// rangesim compare (app/compare/compare.h): CompareOptions and run_compare live there.
 
 struct FrameRateOptions {
   std::string sensor;

@@ -41,6 +41,7 @@ int run(const ParsedCommand& c) {
     case CommandKind::Cosim: return run_cosim(c.cosim);
     case CommandKind::Sweep: return run_sweep(c.sweep);
     case CommandKind::Merge: return run_merge(c.merge);
+    case CommandKind::Compare: return run_compare(c.compare);
     case CommandKind::None: break;
   }
   return kExitInternal;

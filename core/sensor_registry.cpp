@@ -53,4 +53,12 @@ const ParamSchema& schema_for(const std::string& sensor_id, const std::string& w
       fmt::format("{}: sensor.id = \"{}\" is not a known sensor; allowed: {}", where, sensor_id, sensor_ids()));
 }
 
+SensorRadiometry radiometry_for(const ParamSet& p, const std::string& where) {
+  const SensorInfo* s = find_sensor(p.sensor_id());
+  if (!s || !s->radiometry)
+    throw UserError(fmt::format("{}: sensor {} has no radiometry (it takes no physical scene or axis)", where,
+                                p.sensor_id()));
+  return s->radiometry(p);
+}
+
 }  // namespace rangesim

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/params.h"
+#include "core/radiometry.h"
 #include "core/scene_rules.h"
 
 namespace rangesim {
@@ -24,7 +25,13 @@ struct SensorInfo {
   void (*validate)(const ParamSet& p);  // builds the configuration: throws UserError on cross-key
                                         // inconsistencies, naming the file and both keys
   SceneRules scene = {};                // what its scenes for `rangesim simulate` may hold
+  // Its radiometry from a validated preset (core/radiometry.h): how lux and watts of a physical
+  // scene become its signal unit. nullptr: the sensor takes no physical scene or axis.
+  SensorRadiometry (*radiometry)(const ParamSet& p) = nullptr;
 };
+
+// The radiometry of the preset's sensor; throws UserError naming `where` for a sensor without one.
+SensorRadiometry radiometry_for(const ParamSet& p, const std::string& where);
 
 // Every registered sensor: the shipped ones in thesis order, then those added at run time.
 const std::vector<SensorInfo>& sensors();

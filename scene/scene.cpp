@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
 #include <set>
 #include <toml++/toml.h>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "core/sensor_registry.h"
 #include "core/input_file.h"
 #include "core/user_error.h"
+#include "scene/light.h"
 
 namespace rangesim::scene {
 
@@ -21,6 +23,7 @@ const char* shape_name(TargetShape s) {
     case TargetShape::Tilted: return "tilted";
     case TargetShape::Step: return "step";
     case TargetShape::DepthMap: return "depth_map";
+    case TargetShape::Objects: return "objects";
   }
   return "?";
 }
@@ -60,7 +63,7 @@ const std::map<std::string, KeySpec>& key_specs() {
       {"target.depth_map_file", {Kind::Text, {}, true}},
       {"target.depth_near_m", {Kind::Number, {0.01, 1e4, false, false}, true}},
       {"target.depth_far_m", {Kind::Number, {0.01, 1e4, false, false}, true}},
-      {"target.reflectance", {Kind::Number, {0, 1, true, false}, false}},
+      {"target.reflectance", {Kind::Number, {0, 1, true, false}, true}},
       {"target.tilt_x_rad", {Kind::Number, {-1.5, 1.5, false, false}, false}},
       {"target.tilt_y_rad", {Kind::Number, {-1.5, 1.5, false, false}, false}},
       {"target.near_distance_m", {Kind::Number, {0.01, 1e4, false, false}, false}},
@@ -75,10 +78,10 @@ const std::map<std::string, KeySpec>& key_specs() {
       {"beam.signal_A", {Kind::Number, {0, 1e-6, false, false}, false}},
       {"beam.first_column_px", {Kind::Number, {-1000, 4096, false, false}, false}},
       {"beam.columns_per_frame", {Kind::Number, {-10, 10, false, false}, false}},
-      {"beam.first_row", {Kind::Integer, {0, 4096, false, false}, false}},
-      {"beam.rows", {Kind::Integer, {0, 4096, false, false}, false}},
-      {"beam.first_column", {Kind::Integer, {0, 4096, false, false}, false}},
-      {"beam.columns", {Kind::Integer, {0, 4096, false, false}, false}},
+      {"beam.first_row", {Kind::Integer, {0, 4096, false, false}, true}},
+      {"beam.rows", {Kind::Integer, {0, 4096, false, false}, true}},
+      {"beam.first_column", {Kind::Integer, {0, 4096, false, false}, true}},
+      {"beam.columns", {Kind::Integer, {0, 4096, false, false}, true}},
       {"light.signal_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, false}},
       {"light.reference_distance_m", {Kind::Number, {0, 1000, true, false}, false}},
       {"light.background_photocurrent_A", {Kind::Number, {0, 1e-6, false, false}, false}},
@@ -87,7 +90,16 @@ const std::map<std::string, KeySpec>& key_specs() {
       {"rates.background_Hz", {Kind::Number, {0, 1e9, false, false}, false}},
       {"background.irradiance_W_per_m2", {Kind::Number, {0, 1e4, false, false}, false}},
       {"background.photocurrent_A", {Kind::Number, {0, 1e-5, false, false}, false}},
-      {"camera.f_number", {Kind::Number, {0.5, 64, false, false}, false}},
+      {"camera.f_number", {Kind::Number, {0.5, 64, false, false}, true}},
+      {"camera.filter_bandwidth_m", {Kind::Number, {0, 1e-6, true, false}, true}},
+      {"ambient.illuminance_lux", {Kind::Number, {0, 1e6, false, false}, true}},
+      {"ambient.spectrum", {Kind::Text, {}, true}},
+      {"ambient.spectral_irradiance_W_per_m2_nm", {Kind::Number, {0, 100, false, false}, true}},
+      {"source.power_W", {Kind::Number, {0, 100, true, false}, true}},
+      {"source.wavelength_m", {Kind::Number, {300e-9, 2e-6, false, false}, true}},
+      {"source.beam", {Kind::Text, {}, true}},
+      {"source.pulse_width_s", {Kind::Number, {0, 1e-3, true, false}, true}},
+      {"source.modulation_Hz", {Kind::Number, {0, 1e9, true, false}, true}},
       {"camera.fill_factor", {Kind::Number, {0, 1, true, false}, false}},
       {"camera.responsivity_A_per_W", {Kind::Number, {0, 2, true, false}, false}},
       {"window.first_row", {Kind::Integer, {0, 4096, false, false}, false}},
@@ -102,6 +114,7 @@ const std::map<std::string, KeySpec>& key_specs() {
 struct SensorScene {
   const std::string& id;
   const SceneRules& rules;
+  bool rasterises;  // the sensor has a radiometry (core/radiometry.h): it takes every shape
   bool allows(const std::string& key, const KeySpec& spec) const {
     return spec.common || std::find(rules.keys.begin(), rules.keys.end(), key) != rules.keys.end();
   }
@@ -138,6 +151,41 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   std::map<std::string, int> line_of;
   for (const auto& [section_key, section_node] : root) {
     const std::string section(section_key.str());
+    if (section == "object") {  // [[object]]: the objects of target.shape = "objects"
+      const toml::array* a = section_node.as_array();
+      if (!a || !a->is_array_of_tables())
+        throw UserError(fmt::format("{}: 'object' must be an array of tables, [[object]]", where(path, section_node)));
+      for (const auto& item : *a) {
+        SceneObject o;
+        std::map<std::string, double> v;
+        for (const auto& [k, node] : *item.as_table()) {
+          const std::string key(k.str());
+          const bool distance = key == "distance_m";
+          if (!distance && key != "left" && key != "right" && key != "top" && key != "bottom")
+            throw UserError(fmt::format("{}: unknown key 'object.{}'; allowed in [[object]]: distance_m, left, right, "
+                                        "top, bottom",
+                                        where(path, node), key));
+          std::optional<double> d = node.value<double>();
+          const double lo = distance ? 0.01 : 0.0, hi = distance ? 1e4 : 1.0;
+          if (!d || !std::isfinite(*d) || *d < lo || *d > hi)
+            throw UserError(fmt::format("{}: object.{} must be a number in [{:g}, {:g}]{}", where(path, node), key, lo,
+                                        hi, distance ? " m" : " (a fraction of the field of view)"));
+          v[key] = *d;
+        }
+        if (!v.count("distance_m"))
+          throw UserError(fmt::format("{}: missing key 'object.distance_m' in an [[object]]; allowed: [0.01, 10000]",
+                                      where(path, item)));
+        o.distance_m = v["distance_m"];
+        o.left = v.count("left") ? v["left"] : 0.0, o.right = v.count("right") ? v["right"] : 1.0;
+        o.top = v.count("top") ? v["top"] : 0.0, o.bottom = v.count("bottom") ? v["bottom"] : 1.0;
+        if (!(o.left < o.right) || !(o.top < o.bottom))
+          throw UserError(fmt::format("{}: an [[object]] needs left < right and top < bottom (fractions of the field "
+                                      "of view); got left {:g}, right {:g}, top {:g}, bottom {:g}",
+                                      where(path, item), o.left, o.right, o.top, o.bottom));
+        s.objects.push_back(o);
+      }
+      continue;
+    }
     const toml::table* t = section_node.as_table();
     if (!t)
       throw UserError(fmt::format("{}: top-level key '{}' must be a [section]; sections of a {} scene: {}",
@@ -148,16 +196,16 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
       if (it == key_specs().end())
         throw UserError(fmt::format("{}: unknown key '{}'; allowed in [{}] of a {} scene: {}", where(path, node), key,
                                     section, sensor.id, allowed_in(section, sensor)));
-      if (!sensor.allows(key, it->second))
-        throw UserError(fmt::format(
-            "{}: key '{}' is not a {} scene key (it belongs to another sensor's scenes); allowed in [{}]: {}",
-            where(path, node), key, sensor.id, section, allowed_in(section, sensor)));
       const KeySpec& spec = it->second;
+      if (!sensor.allows(key, spec))
+        s.notes.push_back(fmt::format("{}: {} is not used by {} (a key of other sensors' scenes)", where(path, node),
+                                      key, sensor.id));
       line_of[key] = static_cast<int>(node.source().begin.line);
       if (spec.kind == Kind::Text) {
         auto v = node.value_exact<std::string>();
         if (!v) throw UserError(fmt::format("{}: {} must be a string", where(path, node), key));
         text[key] = *v;
+        s.texts[key] = *v;
         continue;
       }
       double v;
@@ -181,7 +229,50 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
                                   spec.kind == Kind::Text ? "" : "; allowed: " + spec.range.text()));
     }
   };
-  for (const auto& k : rules.required) need(k, "required in a " + sensor.id + " scene");
+  // The physical light ([ambient] / [source]) stands for the sensor's own light keys.
+  s.light.present = text.count("source.beam") || text.count("ambient.spectrum") ||
+                    std::any_of(s.values.begin(), s.values.end(), [](const auto& kv) {
+                      return kv.first.rfind("ambient.", 0) == 0 || kv.first.rfind("source.", 0) == 0;
+                    });
+  if (!s.light.present)
+    for (const auto& k : rules.required)
+      need(k, "required in a " + sensor.id + " scene (or give the light physically: [ambient], [source])");
+  if (s.light.present) {
+    need("source.power_W", "the active source's mean optical power");
+    PhysicalLight& l = s.light;
+    l.illuminance_lux = s.get("ambient.illuminance_lux", 0);
+    l.spectrum = text.count("ambient.spectrum") ? text["ambient.spectrum"] : "sunlight";
+    if (!known_spectrum(l.spectrum)) {
+      std::string names;
+      for (const auto& n : spectrum_names()) names += (names.empty() ? "\"" : ", \"") + n + "\"";
+      throw UserError(fmt::format("{}:{}: ambient.spectrum = \"{}\" is not a known spectrum; allowed: {}", path,
+                                  line_of["ambient.spectrum"], l.spectrum, names));
+    }
+    if (s.has("ambient.spectral_irradiance_W_per_m2_nm")) {
+      if (s.has("ambient.illuminance_lux") || text.count("ambient.spectrum"))
+        throw UserError(fmt::format(
+            "{}: ambient.spectral_irradiance_W_per_m2_nm and ambient.illuminance_lux / ambient.spectrum exclude "
+            "each other; give the ambient light one way",
+            path));
+      l.spectral_irradiance_W_per_m2_nm = s.values["ambient.spectral_irradiance_W_per_m2_nm"];
+    }
+    l.source_power_W = s.values["source.power_W"];
+    l.wavelength_m = s.get("source.wavelength_m", 0);
+    const std::string beam = text.count("source.beam") ? text["source.beam"] : "sheet";
+    if (beam != "sheet" && beam != "flood" && beam != "spot")
+      throw UserError(fmt::format("{}:{}: source.beam = \"{}\"; allowed: \"sheet\", \"flood\", \"spot\"", path,
+                                  line_of["source.beam"], beam));
+    l.beam = beam == "flood" ? BeamShape::Flood : beam == "spot" ? BeamShape::Spot : BeamShape::Sheet;
+    l.filter_bandwidth_m = s.get("camera.filter_bandwidth_m", l.filter_bandwidth_m);
+    for (const char* k : {"source.pulse_width_s", "source.modulation_Hz"})
+      if (s.has(k))
+        s.notes.push_back(fmt::format("{}:{}: {} is not used by {}: its timing is the preset's", path, line_of[k], k,
+                                      sensor.id));
+  } else {
+    for (const char* k : {"camera.filter_bandwidth_m"})
+      if (s.has(k))
+        s.notes.push_back(fmt::format("{}:{}: {} is not used: the scene gives no [ambient] light", path, line_of[k], k));
+  }
   s.name = text.count("scene.name") ? text["scene.name"] : fs::path(path).stem().string();
   if (s.name.empty()) throw UserError(fmt::format("{}: scene.name must not be empty", path));
   if (s.name.find_first_of("/\\") != std::string::npos || s.name == "." || s.name == "..")
@@ -191,13 +282,26 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
   const std::string shape = text.count("target.shape") ? text["target.shape"] : "plane";
   bool known_shape = false;
   for (const auto& sh : rules.shapes) known_shape = known_shape || sh == shape;
-  if (!known_shape)
+  const bool any_shape =
+      shape == "plane" || shape == "tilted" || shape == "step" || shape == "depth_map" || shape == "objects";
+  if (!known_shape && any_shape && sensor.rasterises)
+    s.notes.push_back(fmt::format("{}: target.shape = \"{}\" is not modelled natively by {}: rasterised into a depth "
+                                  "map at its pixel grid",
+                                  path, shape, sensor.id));
+  else if (!known_shape)
     throw UserError(fmt::format("{}: target.shape = \"{}\" is not allowed for {}; allowed: {}", path, shape, sensor.id,
                                 join(rules.shapes)));
   s.shape = shape == "tilted"      ? TargetShape::Tilted
             : shape == "step"      ? TargetShape::Step
             : shape == "depth_map" ? TargetShape::DepthMap
+            : shape == "objects"   ? TargetShape::Objects
                                    : TargetShape::Plane;
+  if (s.shape == TargetShape::Objects && s.objects.empty())
+    throw UserError(fmt::format("{}: target.shape = \"objects\" needs at least one [[object]] (distance_m, left, "
+                                "right, top, bottom)",
+                                path));
+  if (s.shape != TargetShape::Objects && !s.objects.empty())
+    throw UserError(fmt::format("{}: [[object]] tables apply to target.shape = \"objects\" only", path));
   auto forbid = [&](const std::string& key) {
     if (s.values.count(key) || text.count(key))
       throw UserError(fmt::format("{}: key '{}' does not apply to target.shape = \"{}\"", path, key, shape));
@@ -245,10 +349,23 @@ Scene parse(const toml::table& root, const std::string& path, const SensorScene&
     s.tilt_x_rad = s.values["target.tilt_x_rad"];
     s.tilt_y_rad = s.values["target.tilt_y_rad"];
   }
-  if (s.shape == TargetShape::Step && rules.step_near_face) {
-    need("target.near_distance_m", "step: depth of the near face");
-    s.near_distance_m = s.values["target.near_distance_m"];
-    if (rules.step_y) {
+  if (s.shape == TargetShape::Step) {
+    // The step's edge: a row edge (step_y_m), a column fraction (step_column_fraction) or a column
+    // (step_column, with step_distance_m on its right); a sensor rasterises the ones it lacks.
+    if (rules.step_y && !s.has("target.step_y_m") && !s.has("target.step_column_fraction") &&
+        !s.has("target.step_column") && !s.has("target.step_distance_m"))
+      throw UserError(fmt::format(
+          "{}: missing key 'target.step_y_m' (step: the near face covers y > step_y_m; or "
+          "target.step_column_fraction, or target.step_column with target.step_distance_m)",
+          path));
+    if (s.has("target.step_distance_m") || s.has("target.step_column")) {
+      if (!s.has("target.step_distance_m"))
+        throw UserError(fmt::format("{}: missing key 'target.step_distance_m' (step: depth right of step_column)", path));
+    } else if (rules.step_near_face || sensor.rasterises) {
+      need("target.near_distance_m", "step: depth of the near face");
+    }
+    s.near_distance_m = s.get("target.near_distance_m", s.distance_m);
+    if (s.has("target.step_y_m")) {
       need("target.step_y_m", "step: the near face covers y > step_y_m");
       s.step_y_m = s.values["target.step_y_m"];
       if (!(s.near_distance_m < s.distance_m))
@@ -277,7 +394,7 @@ Scene load_scene_text(std::string_view text, const std::string& origin, const st
                                 e.source().begin.column, e.description()));
   }
   try {
-    return parse(root, origin, SensorScene{info.id, info.scene});
+    return parse(root, origin, SensorScene{info.id, info.scene, info.radiometry != nullptr});
   } catch (const UserError&) {
     throw;
   } catch (const std::exception& e) {  // e.g. a file-system error while resolving the image path

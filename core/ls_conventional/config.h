@@ -111,4 +111,8 @@ long long frame_cycles(const FrameTimingConfig& timing, int samplings);
 // (e.g. address_bits too narrow for columns), naming the file and keys.
 LsConventionalConfig ls_conventional_from_params(const ParamSet& params);
 
+// The sensor's radiometry from a validated preset (core/radiometry.h, core/ls_conventional/radiometry.cpp).
+struct SensorRadiometry;
+SensorRadiometry ls_conventional_radiometry(const ParamSet& params);
+
 }  // namespace rangesim

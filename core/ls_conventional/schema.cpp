@@ -93,7 +93,8 @@ const SensorInfo& ls_conventional_sensor_info() {
           {"scene.name", "target.shape", "target.reflectance", "beam.power_W", "beam.reference_distance_m",
            "background.irradiance_W_per_m2"},
           true,
-          true}};
+          true},
+      &ls_conventional_radiometry};
   return info;
 }
 

@@ -112,4 +112,8 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& params);
 // and the RTL's SEARCH_CYCLES). Below 1 the row cannot be read in row_cycles.
 int readout_search_cycles(const DemodReadoutConfig& readout);
 
+// The sensor's radiometry from a validated preset (core/radiometry.h, core/ls_demodulation/radiometry.cpp).
+struct SensorRadiometry;
+SensorRadiometry ls_demodulation_radiometry(const ParamSet& params);
+
 }  // namespace rangesim

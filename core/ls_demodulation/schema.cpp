@@ -18,6 +18,10 @@ const ParamSchema& ls_demodulation_schema() {
           {"pixel.columns", K::Integer, "", 1, 4096, false, "pixels per row (position-detection direction)"},
           {"pixel.rows", K::Integer, "", 1, 4096, false, "rows"},
           {"pixel.pitch_m", K::Real, "m", 0, 1e-3, true, "pixel pitch"},
+          {"pixel.fill_factor", K::Real, "", 0, 1, true,
+           "photodiode share of the pixel area (radiometry of physical scenes and axes)"},
+          {"pixel.responsivity_A_per_W", K::Real, "A_per_W", 0, 2, true,
+           "photodiode responsivity in the beam's band (radiometry of physical scenes and axes)"},
           {"pixel.integration_time_s", K::Real, "s", 0, 1, true,
            "correlation (integration) time T per output, eq. 2.13"},
           // Light source modulation and correlation reference.
@@ -76,6 +80,7 @@ const ParamSchema& ls_demodulation_schema() {
           {"readout.address_bits", K::Integer, "", 1, 32, false, "bits of a column address"},
           // Triangulation geometry (eq. 1.1-1.8).
           {"optics.focal_length_m", K::Real, "m", 0, 10, true, "lens focal length f"},
+          {"optics.f_number", K::Real, "", 0.5, 64, false, "lens F# (radiometry of physical scenes and axes)"},
           {"optics.baseline_m", K::Real, "m", 0, 100, true, "baseline d between beam projector and lens"},
           {"optics.distance_m", K::Real, "m", 0, 1e4, true, "target distance for single-point range-accuracy figures"},
           {"optics.distance_min_m", K::Real, "m", 0, 1e4, true, "nearest target distance of the evaluation"},
@@ -119,7 +124,8 @@ const SensorInfo& ls_demodulation_sensor_info() {
                                            "beam.columns_per_frame", "background.photocurrent_A"},
                                           {"scene.name", "beam.signal_A", "background.photocurrent_A"},
                                           false,
-                                          false}};
+                                          false},
+      &ls_demodulation_radiometry};
   return info;
 }
 

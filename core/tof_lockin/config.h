@@ -99,4 +99,8 @@ inline long long gate_period_cycles(const TofLockinConfig& c) {
   return std::llround(c.source.pulse_width_s / c.source.duty_cycle * c.gates.clock_Hz);
 }
 
+// The sensor's radiometry from a validated preset (core/radiometry.h, core/tof_lockin/radiometry.cpp).
+struct SensorRadiometry;
+SensorRadiometry tof_lockin_radiometry(const ParamSet& params);
+
 }  // namespace rangesim

@@ -18,6 +18,12 @@ const ParamSchema& tof_lockin_schema() {
           {"pixel.columns", K::Integer, "", 1, 4096, false, "pixels per row"},
           {"pixel.rows", K::Integer, "", 1, 4096, false, "rows"},
           {"pixel.pitch_m", K::Real, "m", 0, 1e-3, true, "pixel pitch"},
+          {"pixel.fill_factor", K::Real, "", 0, 1, true,
+           "photogate share of the pixel area (radiometry of physical scenes and axes)"},
+          {"pixel.responsivity_A_per_W", K::Real, "A_per_W", 0, 2, true,
+           "photogate responsivity at the source wavelength (radiometry of physical scenes and axes)"},
+          {"optics.focal_length_m", K::Real, "m", 0, 10, true, "lens focal length (radiometry: field of view)"},
+          {"optics.f_number", K::Real, "", 0.5, 64, false, "lens F# (radiometry of physical scenes and axes)"},
           {"pixel.fd1_capacitance_F", K::Real, "F", 0, 1e-9, true,
            "capacitance of floating diffusion FD1 (collects N1 through TX1)"},
           {"pixel.fd2_capacitance_F", K::Real, "F", 0, 1e-9, true,
@@ -101,7 +107,8 @@ const SensorInfo& tof_lockin_sensor_info() {
                   "light.reference_distance_m", "light.background_photocurrent_A", "window.rows", "window.columns"},
                  {"scene.name", "light.signal_photocurrent_A"},
                  true,
-                 false}};
+                 false},
+      &tof_lockin_radiometry};
   return info;
 }
 

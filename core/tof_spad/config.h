@@ -85,4 +85,8 @@ long long laser_cycles_per_row(const TofSpadConfig& cfg);
 double tdc_clock_Hz(const TofSpadConfig& cfg);
 long long cycles_per_histogram_word(const TofSpadConfig& cfg);
 
+// The sensor's radiometry from a validated preset (core/radiometry.h, core/tof_spad/radiometry.cpp).
+struct SensorRadiometry;
+SensorRadiometry tof_spad_radiometry(const ParamSet& params);
+
 }  // namespace rangesim

@@ -18,6 +18,8 @@ const ParamSchema& tof_spad_schema() {
           {"array.columns", K::Integer, "", 1, 4096, false, "pixels per row"},
           {"array.rows", K::Integer, "", 1, 4096, false, "rows (one row is connected to the column TDCs at a time)"},
           {"array.pitch_m", K::Real, "m", 0, 1e-3, true, "pixel pitch"},
+          {"optics.focal_length_m", K::Real, "m", 0, 10, true, "lens focal length (radiometry: field of view)"},
+          {"optics.f_number", K::Real, "", 0.5, 64, false, "lens F# (radiometry of physical scenes and axes)"},
           // Single-photon avalanche diode.
           {"spad.pde", K::Real, "", 0, 1, true,
            "photon detection efficiency at the laser wavelength (per photon on the active area)"},
@@ -106,7 +108,8 @@ const SensorInfo& tof_spad_sensor_info() {
                   "window.first_row", "window.rows", "window.first_column", "window.columns"},
                  {},
                  false,
-                 false}};
+                 false},
+      &tof_spad_radiometry};
   return info;
 }
 

@@ -7,11 +7,33 @@
 #include "core/user_error.h"
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
+#include "scene/physical.h"
 
 namespace rangesim::scene {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+}
+
+Scene ls_conventional_scene(Scene s, const ParamSet& params) {
+  const SensorRadiometry rad = ls_conventional_radiometry(params);
+  if (s.shape == TargetShape::Step && !s.has("target.step_y_m")) {
+    s.notes.push_back(fmt::format("{}: a step with a column edge is rasterised into a depth map for ls-conventional",
+                                  s.file));
+    s = rasterised(s, rad);
+  }
+  if (s.shape == TargetShape::Objects) s = rasterised(s, rad);
+  if (s.light.present) {
+    const NativeLight n = native_light(s, rad, &s.notes);
+    if (s.has("beam.power_W") || s.has("background.irradiance_W_per_m2"))
+      s.notes.push_back(fmt::format("{}: beam.power_W / background.irradiance_W_per_m2 override [source] / [ambient] "
+                                    "for ls-conventional",
+                                    s.file));
+    if (!s.has("beam.power_W")) s.beam_power_W = s.light.source_power_W;
+    if (!s.has("background.irradiance_W_per_m2")) s.background_irradiance_W_per_m2 = n.ambient_in_band_W_per_m2;
+    if (!s.has("beam.reference_distance_m")) s.reference_distance_m = s.distance_m;
+  }
+  return s;
 }
 
 SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene) : config_(config), scene_(scene) {
@@ -69,6 +91,7 @@ RowTruth SceneOptics::truth(int b, int row) const {
       z = scene_.near_distance_m * y_e / f > scene_.step_y_m ? scene_.near_distance_m : scene_.distance_m;
       break;
     case TargetShape::DepthMap: z = depth_map_z(b, row); break;
+    case TargetShape::Objects: z = -1; break;  // rasterised into a depth map by ls_conventional_scene
   }
   RowTruth t;
   t.background_V = background_V_;

@@ -44,6 +44,13 @@ struct RowTruth {
   double background_V = 0;  // background swing at the end of integration
 };
 
+// The scene as ls-conventional takes it: a physical scene's light ([ambient], [source]) as the
+// beam power and in-band background irradiance SceneOptics reads (unless the file sets the
+// sensor's own beam.power_W / background.irradiance_W_per_m2), the beam aimed at the target's
+// distance unless beam.reference_distance_m says otherwise, and a step given by a column edge
+// (the time-of-flight scenes' form) rasterised into a depth map. Notes go to Scene::notes.
+Scene ls_conventional_scene(Scene s, const ParamSet& params);
+
 class SceneOptics {
  public:
   // Throws UserError (naming the scene file and keys) when the geometry cannot work, e.g. a beam

@@ -8,6 +8,7 @@
 #include "core/ls_conventional/config.h"
 #include "core/params.h"
 #include "core/user_error.h"
+#include "scene/physical.h"
 #include "golden/ls_conventional/frame_timing.h"
 #include "scene/scene.h"
 #include "systemc/ls_conventional/scene_optics.h"
@@ -235,7 +236,8 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   if (req.tick && !req.kernel_only)
     throw UserError(
         "--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
-  const scene::Scene sc = scene::load_scene(req.scene, "ls-conventional");
+  const scene::Scene sc = scene::ls_conventional_scene(scene::load_scene(req.scene, "ls-conventional"), params);
+  fmt::print(stderr, "{}", scene::notes_text(sc.notes, "simulate"));
   const scene::SceneOptics optics(c.cfg, sc);
   // Per frame access and row: the centre, its points.csv line and the map's cells.
   host.check_memory(static_cast<double>(c.frames) * c.cfg.pixel.rows * 256.0,
@@ -249,6 +251,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
+  if (!sc.notes.empty()) out.summary["scene_notes"] = sc.notes;
   out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);

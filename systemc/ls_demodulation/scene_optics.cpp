@@ -6,13 +6,18 @@
 
 #include "core/user_error.h"
 #include "scene/depth_map.h"
+#include "scene/physical.h"
 #include "scene/scene.h"
 
 namespace rangesim::scene {
 
-DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg) {
-  const Scene in = load_scene(path, "ls-demodulation");
+DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg, const ParamSet& params) {
+  Scene in = load_scene(path, "ls-demodulation");
+  const SensorRadiometry rad = ls_demodulation_radiometry(params);
+  if (in.shape == TargetShape::Tilted || in.shape == TargetShape::Step || in.shape == TargetShape::Objects)
+    in = rasterised(in, rad);
   DemodScene s;
+  s.notes = in.notes;
   s.file = path;
   s.name = in.name;
   s.description = in.description;
@@ -29,6 +34,20 @@ DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig&
                                 path, s.first_column_px, cfg.pixel.columns - 1));
   s.columns_per_frame = in.get("beam.columns_per_frame", 1.0);
   s.background_A = in.get("background.photocurrent_A", 0.0);
+  if (in.light.present) {
+    const NativeLight n = native_light(in, rad, &s.notes);
+    if (in.has("beam.signal_A") || in.has("background.photocurrent_A"))
+      s.notes.push_back(fmt::format("{}: beam.signal_A / background.photocurrent_A override [ambient] / [source] for "
+                                    "ls-demodulation",
+                                    path));
+    if (!in.has("beam.signal_A")) s.signal_A = n.signal_at(s.distance_m);
+    if (!in.has("background.photocurrent_A")) s.background_A = n.background;
+    // The first stripe near column 3 at the scene's distance, unless the file aims the beam.
+    const DemodScene probe = s;
+    const DemodOptics o{cfg, probe};
+    if (!in.has("beam.first_column_px"))
+      s.first_column_px = 3.0 - (o.disparity_px(s.distance_m) - o.disparity_px(cfg.optics.distance_m));
+  }
   const double z_last = s.distance_m + s.tilt_m_per_row * (cfg.pixel.rows - 1);
   if (z_last < 0.05)
     throw UserError(

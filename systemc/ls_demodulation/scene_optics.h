@@ -26,11 +26,15 @@ struct DemodScene {
   std::string shape = "plane";      // "plane" (tilted row by row) or "depth_map"
   std::vector<double> depth_map_m;  // depth_map: depth of every pixel, row-major
   int map_columns = 0;              // depth_map: array columns
+  std::vector<std::string> notes;   // scene keys this sensor does not use (scene/physical.h)
 };
 
 // Reads `path` with the scene reader (sensor "ls-demodulation") and checks it against the preset;
 // throws UserError naming the file and key.
-DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg);
+// A physical scene ([ambient], [source]) is turned into photocurrents by the sensor's radiometry
+// (`params`, core/ls_demodulation/radiometry.cpp); a shape other than a plane or a depth map is
+// rasterised into a depth map.
+DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig& cfg, const ParamSet& params);
 
 // Triangulation of the light-section geometry (thesis eq. 1.1): a target at range z images the
 // sheet beam at disparity d(z) = f B / (p z) pixels; beam position b is aimed so that a target at

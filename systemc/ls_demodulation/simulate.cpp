@@ -8,6 +8,7 @@
 #include "core/ls_demodulation/config.h"
 #include "core/params.h"
 #include "core/user_error.h"
+#include "scene/physical.h"
 #include "golden/common/frame_timing.h"
 #include "golden/ls_demodulation/model.h"
 #include "systemc/ls_demodulation/scene_optics.h"
@@ -237,7 +238,8 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
   const std::string vcd_base = host.open_trace();
   const golden::FrameTiming gt = golden::frame_timing_ls_demodulation(params);
   const long long frames = checked_frames(req, gt);
-  const scene::DemodScene sc = scene::load_demod_scene(req.scene, cfg);
+  const scene::DemodScene sc = scene::load_demod_scene(req.scene, cfg, params);
+  fmt::print(stderr, "{}", scene::notes_text(sc.notes, "simulate"));
   const scene::DemodOptics optics{cfg, sc};
   // Per frame and row: the result, the activation bits, its points.csv line and the map's cells.
   host.check_memory(static_cast<double>(frames) * cfg.pixel.rows * (256.0 + cfg.pixel.columns / 8.0),
@@ -252,6 +254,7 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
       req, params, cfg, kopt, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
+  if (!sc.notes.empty()) out.summary["scene_notes"] = sc.notes;
   out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);

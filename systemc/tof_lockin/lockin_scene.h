@@ -25,6 +25,7 @@ struct LockinScene {
   int rows = 0, columns = 0;             // simulated window (0 = whole array)
   std::vector<double> depth_map_m;       // depth map: depth of every pixel of the whole array, row-major
   int map_columns = 0;                   // depth map: columns of the array it was resampled to
+  std::vector<std::string> notes;        // scene keys this sensor does not use (scene/physical.h)
 
   // Window actually simulated for an array of cfg's size.
   int window_rows(const TofLockinConfig& cfg) const {

@@ -1,14 +1,26 @@
 #include "systemc/tof_lockin/scene_adapter.h"
 
 #include <fmt/format.h>
+#include <stdexcept>
 
 #include "core/user_error.h"
+#include "scene/physical.h"
 
 namespace rangesim::scene {
 
-systemc::lockin::LockinScene to_lockin_scene(const Scene& s, const TofLockinConfig& cfg) {
+systemc::lockin::LockinScene to_lockin_scene(const Scene& scene_in, const TofLockinConfig& cfg,
+                                             const SensorRadiometry* radiometry) {
   using systemc::lockin::LockinScene;
+  const auto need_radiometry = [&]() -> const SensorRadiometry& {
+    if (!radiometry) throw std::logic_error("to_lockin_scene: a physical scene needs the sensor's radiometry");
+    return *radiometry;
+  };
+  const bool native_step = scene_in.shape != TargetShape::Step ||
+                           (!scene_in.has("target.step_y_m") && !scene_in.has("target.step_distance_m"));
+  const bool rasterise = scene_in.shape == TargetShape::Tilted || scene_in.shape == TargetShape::Objects || !native_step;
+  const Scene s = rasterise ? rasterised(scene_in, need_radiometry()) : scene_in;
   LockinScene l;
+  l.notes = s.notes;
   l.file = s.file;
   l.name = s.name;
   l.description = s.description;
@@ -21,6 +33,21 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& s, const TofLockinConf
   l.signal_photocurrent_A = s.get("light.signal_photocurrent_A", 0);
   l.reference_distance_m = s.get("light.reference_distance_m", 1.0);
   l.background_photocurrent_A = s.get("light.background_photocurrent_A", 0);
+  const bool own_light = s.has("light.signal_photocurrent_A") && s.has("light.background_photocurrent_A");
+  if (s.light.present && own_light) {
+    l.notes.push_back(fmt::format("{}: [light] overrides [ambient] / [source] for tof-lockin", s.file));
+  } else if (s.light.present) {
+    const NativeLight n = native_light(s, need_radiometry(), &l.notes);
+    if (!s.has("light.signal_photocurrent_A")) {
+      l.reference_distance_m = s.distance_m;
+      l.signal_photocurrent_A = n.signal_at(s.distance_m);
+    }
+    if (!s.has("light.background_photocurrent_A")) l.background_photocurrent_A = n.background;
+    if (s.light.beam == BeamShape::Spot)
+      l.notes.push_back(fmt::format("{}: source.beam = \"spot\": tof-lockin's scene lights every pixel; each gets the "
+                                    "spot's irradiance",
+                                    s.file));
+  }
   // The window is never clamped to the array: a scene asking for more than the preset's pixels is
   // refused, as tof-spad's is.
   const auto window = [&](const char* key, int array) {

@@ -10,6 +10,7 @@
 #include "core/params.h"
 #include "core/tof_lockin/config.h"
 #include "core/user_error.h"
+#include "scene/physical.h"
 #include "golden/common/frame_timing.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_lockin/model.h"
@@ -301,7 +302,9 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
   if (req.tick && !req.kernel_only)
     throw UserError("--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only");
   check_time_step(req, cfg);
-  const lk::LockinScene sc = scene::to_lockin_scene(scene::load_scene(req.scene, "tof-lockin"), cfg);
+  const SensorRadiometry radiometry = tof_lockin_radiometry(params);
+  const lk::LockinScene sc = scene::to_lockin_scene(scene::load_scene(req.scene, "tof-lockin"), cfg, &radiometry);
+  fmt::print(stderr, "{}", scene::notes_text(sc.notes, "simulate"));
   {
     lk::LockinGateGeneratorKernel check(cfg);
   }  // T_rep on the gate-clock grid, or UserError before anything is written
@@ -323,6 +326,7 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
                 R,   C};
   out.report = report(run);
   out.summary = summary(run, out.report);
+  if (!sc.notes.empty()) out.summary["scene_notes"] = sc.notes;
   out.frames_csv = std::move(timing.csv);
   out.range_map = std::move(rec.map);
   const long long maps = model.k->range_maps();

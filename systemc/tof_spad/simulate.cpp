@@ -8,6 +8,7 @@
 #include "core/params.h"
 #include "core/tof_spad/config.h"
 #include "core/user_error.h"
+#include "scene/physical.h"
 #include "golden/common/frame_timing.h"
 #include "golden/tof_spad/model.h"
 #include "systemc/tof_spad/scene_adapter.h"
@@ -281,7 +282,9 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
   const auto t_start = Clock::now();
   const Checked c = check(req, params);
   const std::string vcd_base = host.open_trace();
-  scene::SpadScene sc = scene::load_spad_scene(req.scene, c.cfg, c.array_rows, c.array_columns);
+  const SensorRadiometry radiometry = tof_spad_radiometry(params);
+  scene::SpadScene sc = scene::load_spad_scene(req.scene, c.cfg, c.array_rows, c.array_columns, &radiometry);
+  fmt::print(stderr, "{}", scene::notes_text(sc.notes, "simulate"));
   if (req.dense) sc.first_row = 0, sc.rows = c.array_rows, sc.first_column = 0, sc.columns = c.array_columns;
   const sp::TofSpadKernelOptions kopt = kernel_options(req);
   const sp::TofSpadKernel kernel(c.cfg, c.array_rows, c.array_columns, kopt);
@@ -305,6 +308,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
                 res, gt,     rec,  sim_wall_s, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
+  if (!sc.notes.empty()) out.summary["scene_notes"] = sc.notes;
   out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
