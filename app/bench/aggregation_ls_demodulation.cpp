@@ -58,6 +58,12 @@ std::vector<double> demod_diffs(const dm::DemodRunResult& r) {
 
 }  // namespace
 
+FigureSpec aggregation_figure_demod() {
+  return {"aggregated_vs_per_clock_demod", ">= 1000",
+          "ls-demodulation per-period frame time / aggregated frame time (N = 10,000 periods), statistically "
+          "identical"};
+}
+
 json bench_aggregation_demod(bool quick) {
   // Timed: one frame of N = 10,000 correlation periods (0.1 s integration at f0 = 100 kHz) on
   // 1 x 32 pixels (--quick) or 2 x 64, stepped period by period (event skipping: one exact step per

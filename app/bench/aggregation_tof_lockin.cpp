@@ -41,6 +41,11 @@ LockinRun run_lockin(const TofLockinConfig& cfg, bool aggregated, int columns, l
 
 }  // namespace
 
+FigureSpec aggregation_figure_lockin() {
+  return {"aggregated_vs_per_clock_lockin", ">= 1000",
+          "tof-lockin per-clock frame time / aggregated frame time, statistically identical"};
+}
+
 json bench_aggregation_lockin(bool quick) {
   const TofLockinConfig cfg = tof_lockin_from_params(load_preset_file(resolve_preset("tof-lockin")));
   const int columns = 256;

@@ -46,6 +46,11 @@ sp::FrameResult spad_frame(const sp::TofSpadKernel& k, int groups, std::uint64_t
 }
 }  // namespace
 
+FigureSpec aggregation_figure_spad() {
+  return {"aggregated_vs_per_clock_spad", ">= 1000",
+          "tof-spad per-clock frame time / aggregated frame time, statistically identical"};
+}
+
 json bench_aggregation_spad(bool quick) {
   const TofSpadConfig cfg = spad_exact_config();
   // Timed frames: 1 ms integration (--quick) or 10 ms; the per-clock time grows with the laser

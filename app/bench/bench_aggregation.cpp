@@ -9,15 +9,8 @@ namespace rangesim::app::bench {
 using nlohmann::json;
 
 const std::vector<FigureSpec>& aggregation_figures() {
-  static const std::vector<FigureSpec> f = {
-      {"aggregated_vs_per_clock_lockin", ">= 1000",
-       "tof-lockin per-clock frame time / aggregated frame time, statistically identical"},
-      {"aggregated_vs_per_clock_spad", ">= 1000",
-       "tof-spad per-clock frame time / aggregated frame time, statistically identical"},
-      {"aggregated_vs_per_clock_demod", ">= 1000",
-       "ls-demodulation per-period frame time / aggregated frame time (N = 10,000 periods), statistically "
-       "identical"},
-  };
+  static const std::vector<FigureSpec> f = {aggregation_figure_lockin(), aggregation_figure_spad(),
+                                            aggregation_figure_demod()};
   return f;
 }
 

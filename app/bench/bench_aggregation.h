@@ -4,6 +4,7 @@
 // clock by clock, timed in one run and compared by a stated two-sample test (bench_stats.h).
 #include <nlohmann/json.hpp>
 
+#include "app/bench/bench_figures.h"
 #include "app/bench/bench_stats.h"
 #include "core/tof_spad/config.h"
 
@@ -17,6 +18,7 @@ nlohmann::json comparison_json(const TwoSampleComparison& c);
 // Keys: value (per-clock time / aggregated time per frame), target, identical (test passed),
 // tap statistics.
 nlohmann::json bench_aggregation_lockin(bool quick);
+FigureSpec aggregation_figure_lockin();
 
 // The tof-spad preset edited to where laser cycles are independent (no afterpulse, dead time 0,
 // no jitter, 20 ns TDC range, 4 ns busy, 1 ms = 40,000 laser cycles per row): tof-spad aggregation
@@ -30,11 +32,13 @@ TofSpadConfig spad_exact_config();
 // stated test against the per-cycle path on many groups, per_clock_equals_per_cycle from the
 // timed frames.
 nlohmann::json bench_aggregation_spad(bool quick);
+FigureSpec aggregation_figure_spad();
 
 // ls-demodulation: the N correlation periods of each window in one jump (DemodKernelOptions::
 // aggregate) vs the same frame stepped period by period (event skipping, one exact step per
 // segment), N = 10,000 periods. Keys as for lock-in; statistically_identical from the stated test
 // on D (N = 20, many pixels), the noise-free identity and equal cycles.
 nlohmann::json bench_aggregation_demod(bool quick);
+FigureSpec aggregation_figure_demod();
 
 }  // namespace rangesim::app::bench

@@ -24,10 +24,10 @@ std::optional<bool> target_met(const std::string& target, const nlohmann::json& 
 const std::vector<FigureSpec>& all_figures();
 
 // The groups' own lists (defined beside each group).
-const std::vector<FigureSpec>& ls_conventional_figures();   // bench_ls_conventional.cpp
-const std::vector<FigureSpec>& aggregation_figures();       // bench_aggregation.cpp
-const std::vector<FigureSpec>& sparse_spad_figures();       // bench_sparse_spad.cpp
-const std::vector<FigureSpec>& monte_carlo_figures();       // mc_bench_hook.cpp
-const std::vector<FigureSpec>& numpy_peer_figures();        // bench_numpy_peers.cpp
+const std::vector<FigureSpec>& ls_conventional_figures();  // bench_ls_conventional.cpp
+const std::vector<FigureSpec>& aggregation_figures();      // bench_aggregation.cpp
+const std::vector<FigureSpec>& sparse_spad_figures();      // bench_sparse_spad.cpp
+const std::vector<FigureSpec>& monte_carlo_figures();      // mc_bench_hook.cpp
+const std::vector<FigureSpec>& numpy_peer_figures();       // bench_numpy_peers.cpp
 
 }  // namespace rangesim::app::bench

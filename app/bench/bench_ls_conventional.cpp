@@ -208,8 +208,14 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
     progress("ls-conventional: output share of `simulate --kernel-only` (full map, as a child process)");
     json os;
     for (const bool plots : {true, false}) {
-      std::vector<std::string> args = {"simulate", "ls-conventional", "--scene", scene_path("plane.toml"),
-                                       "--kernel-only", "--json", "--force", "--out",
+      std::vector<std::string> args = {"simulate",
+                                       "ls-conventional",
+                                       "--scene",
+                                       scene_path("plane.toml"),
+                                       "--kernel-only",
+                                       "--json",
+                                       "--force",
+                                       "--out",
                                        opt.scratch_dir + (plots ? "/output-share" : "/output-share-no-plots")};
       if (!plots) args.push_back("--no-plots");
       std::string text;
@@ -356,7 +362,8 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
     mj["mismatches"] = rj["mismatches"];
     if (!rj["first_mismatch"].get<std::string>().empty()) mj["first_mismatch"] = rj["first_mismatch"];
     mj["rtl"] =
-        "rtl/ls_conventional/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, searches, centres";
+        "rtl/ls_conventional/ls_conventional_readout.sv (Vls_conventional_readout, 365 x 375): sequencer, latches, "
+        "searches, centres";
     out["model_vs_rtl"] = mj;
   }
 #endif

@@ -14,8 +14,8 @@
 namespace rangesim::app::bench {
 
 struct LsConventionalBenchOptions {
-  bool quick = false;    // fewer frame accesses for the slow references (dense, SystemC, RTL)
-  bool with_rtl = true;  // the verilated readout is built (RANGESIM_WITH_RTL)
+  bool quick = false;       // fewer frame accesses for the slow references (dense, SystemC, RTL)
+  bool with_rtl = true;     // the verilated readout is built (RANGESIM_WITH_RTL)
   std::string scratch_dir;  // output folders of the child `simulate` runs (output_share); "" = skip
 };
 
