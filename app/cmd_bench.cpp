@@ -19,6 +19,7 @@
 #include "app/bench/bench_util.h"
 #include "app/cli_common.h"
 #include "app/output_dir.h"
+#include "app/plot_style.h"
 #include "app/sweep_journal.h"
 
 namespace rangesim::app {
@@ -33,16 +34,16 @@ std::string value_text(const json& v) { return v.is_number() ? fmt::format("{:.4
 std::string pareto_script(const std::string& data, const std::string& ext, const std::string& path,
                           const std::vector<std::string>& sensors) {
   std::string s = fmt::format(
-      "reset\nset terminal {} size 900,650 font 'Sans,11'\nset output '{}'\n"
-      "set logscale xy\nset xlabel 'CPU time [s]'\nset ylabel 'rms range error [m]'\n"
-      "set title 'rangesim bench — run time against error (each point one fidelity setting)'\n"
-      "set key outside right top\nset grid\nplot ",
-      ext == "png" ? "pngcairo" : "svg", path);
+      "reset\nset terminal {} size 900,650 font 'Sans,11'\nset output '{}'\n{}"
+      "set logscale xy\n{}{}set xlabel 'CPU time [s]'\nset ylabel 'rms range error [m]'\n"
+      "set title 'rangesim bench — run time against error (a point per fidelity setting, numbered as in "
+      "pareto.md)'\nset key outside right top\nset grid\nplot ",
+      ext == "png" ? "pngcairo" : "svg", path, plot_preamble(), log_format("x", "s"), log_format("y", "m"));
   for (std::size_t i = 0; i < sensors.size(); ++i)
     s += fmt::format(
-        "{}'{}' index {} using 1:2 with points pt {} ps 1.5 title '{}', '' index {} using 1:2:3 with labels "
-        "font ',7' offset 0,0.8 notitle",
-        i ? ", " : "", data, i, 5 + 2 * i, sensors[i], i);
+        "{}'{}' index {} using 1:2 with points pt 7 ps 1.3 lc rgb '{}' title '{}', '' index {} using 1:2:3 with "
+        "labels font ',8' offset char 0.9,0.5 left tc rgb '{}' notitle",
+        i ? ", " : "", data, i, series_colour(i), sensors[i], i, series_colour(i));
   return s + "\n";
 }
 
@@ -131,8 +132,8 @@ int run_bench(const BenchOptions& opt) {
     const std::optional<bool> m = target_met(f.target, j[f.key]);
     met[f.key] = m ? json(*m) : json(nullptr);
     if (!m || !*m)
-      missed.push_back(fmt::format("{} = {} (target {}{})", f.key, value_text(j[f.key]), f.target,
-                                   m ? "" : ", no value"));
+      missed.push_back(
+          fmt::format("{} = {} (target {}{})", f.key, value_text(j[f.key]), f.target, m ? "" : ", no value"));
   }
   bool all_ok = true;
   for (const auto& [k, v] : checks.items()) all_ok = all_ok && v.get<bool>();
@@ -148,7 +149,10 @@ int run_bench(const BenchOptions& opt) {
   std::string figures_md = "| figure | value | target | met | meaning |\n|---|---:|---|---|---|\n";
   for (const auto& f : all_figures())
     figures_md += fmt::format("| `{}` | {} | {} | {} | {} |\n", f.key, value_text(j[f.key]), f.target,
-                              met[f.key].is_null() ? "—" : met[f.key].get<bool>() ? "yes" : "NO", f.meaning);
+                              met[f.key].is_null()     ? "—"
+                              : met[f.key].get<bool>() ? "yes"
+                                                       : "NO",
+                              f.meaning);
   std::string checks_md;
   for (const auto& [k, v] : checks.items())
     checks_md += fmt::format("- {}: {}\n", k, v.get<bool>() ? "passed" : "FAILED");

@@ -100,13 +100,16 @@ void mark_pareto(std::vector<ParetoRow>& rows) {
 }
 
 std::string pareto_markdown(const std::vector<ParetoRow>& rows) {
+  // `#` is the number pareto.png labels the row's point with.
   std::string s =
-      "| sensor | setting | harness | frames | CPU time (s) | wall time (s) | rms range error (m) | Pareto |\n"
-      "|---|---|---|---:|---:|---:|---:|:-:|\n";
-  for (const auto& r : rows)
-    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.sensor, r.setting, r.harness, r.frames,
-                     num(r.cpu_s), num(r.wall_s), std::isfinite(r.error_m) ? num(r.error_m) : "none detected",
+      "| # | sensor | setting | harness | frames | CPU time (s) | wall time (s) | rms range error (m) | Pareto |\n"
+      "|---:|---|---|---|---:|---:|---:|---:|:-:|\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const ParetoRow& r = rows[i];
+    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", i + 1, r.sensor, r.setting, r.harness,
+                     r.frames, num(r.cpu_s), num(r.wall_s), std::isfinite(r.error_m) ? num(r.error_m) : "none detected",
                      r.pareto ? "yes" : "");
+  }
   return s;
 }
 
@@ -138,14 +141,16 @@ std::vector<std::string> pareto_sensors(const std::vector<ParetoRow>& rows) {
 }
 
 std::string pareto_gnuplot_data(const std::vector<ParetoRow>& rows) {
-  // One gnuplot data block per sensor (index i), columns: wall_s error_m "label".
-  std::map<std::string, std::vector<const ParetoRow*>> by;
-  for (const auto& r : rows) by[r.sensor].push_back(&r);
+  // One gnuplot data block per sensor (index i), columns: cpu_s error_m "row number in pareto.md"
+  // (setting names as labels overlap where points crowd; a number stays readable).
+  std::map<std::string, std::vector<std::size_t>> by;
+  for (std::size_t i = 0; i < rows.size(); ++i) by[rows[i].sensor].push_back(i);
   std::string s;
   for (const auto& name : pareto_sensors(rows)) {
     s += fmt::format("# {}\n", name);
-    for (const ParetoRow* r : by[name])
-      if (std::isfinite(r->error_m)) s += fmt::format("{:.6g} {:.6g} \"{}\"\n", r->cpu_s, r->error_m, r->setting);
+    for (std::size_t i : by[name])
+      if (std::isfinite(rows[i].error_m))
+        s += fmt::format("{:.6g} {:.6g} \"{}\"\n", rows[i].cpu_s, rows[i].error_m, i + 1);
     s += "\n\n";
   }
   return s;
