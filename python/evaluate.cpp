@@ -13,6 +13,7 @@
 #include "app/evaluation_output.h"
 #include "app/montecarlo/mc_evaluate.h"
 #include "golden/common/evaluate_sensor.h"
+#include "golden/common/grid_axes.h"
 #include "python/bindings.h"
 #include "systemc/common/montecarlo.h"
 
@@ -20,32 +21,36 @@ namespace rangesim::python {
 
 namespace {
 
-// A grid axis as the command line's "LO:HI:N": the values must be the log-spaced grid the
-// command would make of their ends (numpy.geomspace(lo, hi, n) is), so that the result is the
-// command's for the same grid. A "LO:HI:N" string is taken as it is.
-std::optional<std::string> grid_text(const py::object& values, const std::string& axis) {
-  if (values.is_none()) return std::nullopt;
-  if (py::isinstance<py::str>(values)) return values.cast<std::string>();
+// A grid axis: a "LO:HI:N" string as on the command line, or any ascending values. The values go
+// to the models through golden::GridAxesScope; their ends and count become the preset's
+// `evaluation.*` keys, so the command's checks of the range apply to them unchanged.
+struct AxisArg {
+  std::optional<std::string> text;  // "LO:HI:N" for the preset (nullopt: the preset's own grid)
+  std::vector<double> values;       // the explicit values (empty: log-spaced from `text`)
+};
+
+AxisArg grid_arg(const py::object& values, const std::string& axis) {
+  if (values.is_none()) return {};
+  if (py::isinstance<py::str>(values)) return {values.cast<std::string>(), {}};
   const std::string allowed =
-      "allowed: a 1-D array of ascending values > 0, log-spaced as on the command line "
-      "(numpy.geomspace(lo, hi, n), 1 <= n <= 10000), or \"LO:HI:N\"";
+      "allowed: a 1-D array of ascending values > 0 (any spacing, 1 <= n <= 10000), or \"LO:HI:N\" (log-spaced)";
   // Null (the Python error cleared) when `values` is not convertible to numbers.
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-  if (!a || a.ndim() != 1 || a.size() == 0) bad_argument(axis, fmt::format("{}: {}", axis, allowed));
+  if (!a || a.ndim() != 1 || a.size() == 0 || a.size() > 10000)
+    bad_argument(axis, fmt::format("{}: {}", axis, allowed));
   const auto v = a.unchecked<1>();
-  const py::ssize_t n = a.size();
-  const double lo = v(0), hi = v(n - 1);
-  // Ends the command would refuse are left to its own check (the same message); a grid between
-  // acceptable ends must be the command's grid point for point.
-  if (std::isfinite(lo) && std::isfinite(hi) && lo > 0 && lo <= hi && n <= 10000) {
-    const std::vector<double> grid = golden::log_spaced(lo, hi, static_cast<int>(n));
-    for (py::ssize_t k = 0; k < n; ++k)
-      if (!(std::fabs(v(k) - grid[static_cast<std::size_t>(k)]) <= 1e-9 * grid[static_cast<std::size_t>(k)]))
-        bad_argument(axis, fmt::format("{}: value [{}] = {:g} is not on the log-spaced grid from {:g} to {:g} with {} "
-                                       "points (expected {:g}); {}",
-                                       axis, k, v(k), lo, hi, n, grid[static_cast<std::size_t>(k)], allowed));
-  }
-  return fmt::format("{}:{}:{}", lo, hi, n);  // the shortest text that reads back exactly
+  AxisArg r;
+  for (py::ssize_t k = 0; k < a.size(); ++k) r.values.push_back(v(k));
+  const double lo = r.values.front(), hi = r.values.back();
+  r.text = fmt::format("{}:{}:{}", lo, hi, r.values.size());  // reads back exactly
+  // Ends the command would refuse are left to its own check (the same message); between
+  // acceptable ends every value must be finite and above the one before it.
+  if (std::isfinite(lo) && std::isfinite(hi) && lo > 0 && lo <= hi)
+    for (std::size_t k = 1; k < r.values.size(); ++k)
+      if (!(r.values[k] > r.values[k - 1]) || !std::isfinite(r.values[k]))
+        bad_argument(axis, fmt::format("{}: value [{}] = {:g} is not above the one before it ({:g}); {}", axis, k,
+                                       r.values[k], r.values[k - 1], allowed));
+  return r;
 }
 
 py::dict axis_fields(const golden::EvalResult& ev) {
@@ -168,8 +173,9 @@ py::object evaluate(const Sensor& sensor, const py::object& signal, const py::ob
   ParamSet params = sensor.params;
   app::require_modelled(params, "evaluate");
   app::EvaluateOptions opt;
-  opt.signal = grid_text(signal, "signal");
-  opt.background = grid_text(background, "background");
+  const AxisArg signal_axis = grid_arg(signal, "signal"), background_axis = grid_arg(background, "background");
+  opt.signal = signal_axis.text;
+  opt.background = background_axis.text;
   opt.samplings = samplings;
   opt.adc_bits = adc_bits;
   opt.frames = frames;
@@ -187,8 +193,10 @@ py::object evaluate(const Sensor& sensor, const py::object& signal, const py::ob
     model = mc::make_mc_model(params);
   }
 
-  const golden::EvalResult ev =
-      without_gil([&](Interruption&) { return golden::evaluate_sensor(params, &check_interrupt_progress); });
+  const golden::EvalResult ev = without_gil([&](Interruption&) {
+    const golden::GridAxesScope axes(signal_axis.values, background_axis.values);
+    return golden::evaluate_sensor(params, &check_interrupt_progress);
+  });
   py::dict fields = golden_fields(ev);
   nlohmann::json summary = app::summary_json(ev, params);
   fields["monte_carlo"] = py::none();
@@ -224,7 +232,8 @@ void bind_evaluate(SensorClass& sensor) {
              py::arg("adc_bits") = py::none(), py::arg("frames") = py::none(), py::arg("target_error") = py::none(),
              py::arg("max_trials") = py::none(), py::arg("threads") = py::none(),
              R"(`rangesim evaluate` as data. signal, background: the grid axes in the sensor's unit (V, A or Hz),
-log-spaced as on the command line (numpy.geomspace(lo, hi, n)) or "LO:HI:N"; default the preset's.
+any ascending values > 0 (e.g. numpy.linspace or numpy.geomspace; up to 10000) or "LO:HI:N" (log-spaced
+as on the command line); default the preset's.
 trials (or target_error): also the Monte Carlo sweep of the clock-level kernels at every detectable point
 (seed, max_trials, threads as --seed, --max-trials, --threads). samplings, adc_bits, frames: as the flags.
 

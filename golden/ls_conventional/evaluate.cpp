@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/ls_conventional/config.h"
+#include "golden/common/grid_axes.h"
 #include "golden/common/evaluate_sensor.h"
 #include "golden/common/grid_scan.h"
 #include "golden/ls_conventional/frame_timing.h"
@@ -49,8 +50,11 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
 
   EvalResult r;
   r.sensor = params.sensor_id();
-  r.signal = {"signal", "V", log_axis(grid.signal_min_V, grid.signal_max_V, grid.signal_points)};
-  r.background = {"background", "V", log_axis(grid.background_min_V, grid.background_max_V, grid.background_points)};
+  r.signal = {"signal", "V",
+              grid_axis(GridAxis::Signal, log_axis(grid.signal_min_V, grid.signal_max_V, grid.signal_points))};
+  r.background = {
+      "background", "V",
+      grid_axis(GridAxis::Background, log_axis(grid.background_min_V, grid.background_max_V, grid.background_points))};
   r.reasons = {{"detectable", "range can be derived"},
                {"below_threshold", "signal + background at the spot peak stays below V_cmp"},
                {"saturated", "V_sig + V_bg > V_sat: activated, accuracy not controlled"},

@@ -1,3 +1,4 @@
+#include "golden/common/grid_axes.h"
 #include "golden/ls_conventional/evaluation.h"
 
 #include <algorithm>
@@ -163,8 +164,9 @@ DynamicRange background_dynamic_range(const LsConventionalConfig& cfg, double si
 Evaluation evaluate(const LsConventionalConfig& cfg, void (*progress)(int done, int total)) {
   Evaluation ev;
   const auto& g = cfg.grid;
-  ev.signal_V = log_axis(g.signal_min_V, g.signal_max_V, g.signal_points);
-  ev.background_V = log_axis(g.background_min_V, g.background_max_V, g.background_points);
+  ev.signal_V = grid_axis(GridAxis::Signal, log_axis(g.signal_min_V, g.signal_max_V, g.signal_points));
+  ev.background_V =
+      grid_axis(GridAxis::Background, log_axis(g.background_min_V, g.background_max_V, g.background_points));
   const int ns = static_cast<int>(ev.signal_V.size()), nb = static_cast<int>(ev.background_V.size());
   // Points are independent: background rows are shared out over the cores. Each point's result
   // depends only on its own inputs, so the grid is identical whatever the thread count.

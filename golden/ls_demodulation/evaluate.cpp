@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/ls_demodulation/config.h"
+#include "golden/common/grid_axes.h"
 #include "golden/common/evaluate_sensor.h"
 #include "golden/common/grid_scan.h"
 #include "golden/ls_demodulation/evaluation.h"
@@ -44,8 +45,10 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
   const auto& g = cfg.grid;
   EvalResult r;
   r.sensor = params.sensor_id();
-  r.signal = {"signal", "A", log_spaced(g.signal_min_A, g.signal_max_A, g.signal_points)};
-  r.background = {"background", "A", log_spaced(g.background_min_A, g.background_max_A, g.background_points)};
+  r.signal = {"signal", "A", grid_axis(GridAxis::Signal, log_spaced(g.signal_min_A, g.signal_max_A, g.signal_points))};
+  r.background = {
+      "background", "A",
+      grid_axis(GridAxis::Background, log_spaced(g.background_min_A, g.background_max_A, g.background_points))};
   r.reasons = {{"detectable", "range can be derived"},
                {"below_threshold", "noise-free V_out+ - V_out- at the spot peak stays below V_cmp"},
                {"saturated", "an integrator swing exceeds V_sat (background alone or with the spot)"},

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/tof_lockin/config.h"
+#include "golden/common/grid_axes.h"
 #include "golden/common/evaluate_sensor.h"
 #include "golden/common/grid_scan.h"
 #include "golden/tof_lockin/lockin_point.h"
@@ -61,8 +62,10 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
   const auto& e = cfg.eval;
   EvalResult r;
   r.sensor = params.sensor_id();
-  r.signal = {"signal", "A", log_spaced(e.signal_min_A, e.signal_max_A, e.signal_points)};
-  r.background = {"background", "A", log_spaced(e.background_min_A, e.background_max_A, e.background_points)};
+  r.signal = {"signal", "A", grid_axis(GridAxis::Signal, log_spaced(e.signal_min_A, e.signal_max_A, e.signal_points))};
+  r.background = {
+      "background", "A",
+      grid_axis(GridAxis::Background, log_spaced(e.background_min_A, e.background_max_A, e.background_points))};
   r.reasons = {{"detectable", "range can be derived"},
                {"below_threshold", "light-induced V1 + V2 below readout.detection_threshold_V (V_sig_min of eq. 4.11)"},
                {"noise_limited", "SNR of V1 + V2 below readout.min_snr: the ratio of eq. 2.25 has no usable moments"},

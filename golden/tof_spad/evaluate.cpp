@@ -1,5 +1,6 @@
 // The grid evaluation of tof-spad as a sensor-independent EvalResult: detectable area, SBR' both
 // ways, accuracy at evaluation.distance_m, exact range edges, and the sweeps the issue asks for.
+#include "golden/common/grid_axes.h"
 #include "golden/tof_spad/evaluate.h"
 
 #include <atomic>
@@ -92,8 +93,11 @@ EvalResult evaluate_grid(const TofSpadConfig& cfg, ProgressFn progress, EvalSink
   const auto& e = cfg.evaluation;
   EvalResult r;
   r.sensor = "tof-spad";
-  r.signal = {"signal", "Hz", log_spaced(e.signal_min_Hz, e.signal_max_Hz, e.signal_points)};
-  r.background = {"background", "Hz", log_spaced(e.background_min_Hz, e.background_max_Hz, e.background_points)};
+  r.signal = {"signal", "Hz",
+              grid_axis(GridAxis::Signal, log_spaced(e.signal_min_Hz, e.signal_max_Hz, e.signal_points))};
+  r.background = {
+      "background", "Hz",
+      grid_axis(GridAxis::Background, log_spaced(e.background_min_Hz, e.background_max_Hz, e.background_points))};
   r.reasons = SpadModel::reasons();
   r.metric_names = metric_names();
   const auto& sig = r.signal.values;

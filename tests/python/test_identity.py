@@ -100,6 +100,22 @@ class Identity(CommandCase):
                 # The same grid given as the command's text, and through `set`, gives the same result.
                 self.assertEqual(s.evaluate(signal=sig_text, background=bg_text).summary, summary)
 
+    def test_evaluate_takes_any_ascending_axes(self):
+        # Linear (or any) spacing: every point is evaluated where it was asked for, and equals the
+        # command's one-point evaluation there.
+        for s in sensors():
+            sig, bg, _, _ = grid(s, 6, 5)
+            lin = np.linspace(sig[0], sig[-1], 5)
+            with self.subTest(sensor=s.id):
+                r = s.evaluate(signal=lin, background=bg[[0, 2]])
+                np.testing.assert_array_equal(r.signal, lin)
+                np.testing.assert_array_equal(r.background, bg[[0, 2]])
+                for ib, js in ((0, 1), (1, 3)):
+                    v, b = repr(float(lin[js])), repr(float(bg[[0, 2]][ib]))
+                    one = s.evaluate(signal=f"{v}:{v}:1", background=f"{b}:{b}:1")
+                    self.assertEqual(r.detect[ib, js], one.detect[0, 0])
+                    np.testing.assert_array_equal(r.accuracy_m[ib, js], one.accuracy_m[0, 0])
+
 
 
 class IdentityTable(CommandCase):
