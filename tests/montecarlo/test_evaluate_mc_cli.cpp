@@ -172,9 +172,11 @@ TEST(EvaluateMcCli, SigintStopsCleanlyAndPrintsTheResumeCommand) {
 TEST(EvaluateMcCli, TimeBudgetEndsWithExit4AndKeepsTheJournal) {
   const std::string dir = make_temp_dir() + "/t";
   // kSweep takes about 0.2 s on one thread of a fast machine: 20 times its trials take seconds, far
-  // beyond the budget on any machine.
+  // beyond the budget on any machine. The golden grid runs first: its fixed 16-position rule
+  // (subpixel_tolerance 0) keeps it well inside the budget, so the budget ends the Monte Carlo.
   const std::string sweep =
-      "evaluate ls-conventional --signal 0.03:0.6:7 --background 0.002:0.02:4 --trials 120000 --no-plots";
+      "evaluate ls-conventional --signal 0.03:0.6:7 --background 0.002:0.02:4 --trials 120000 --no-plots "
+      "--set evaluation.subpixel_tolerance=0";
   const CommandResult r = run_command(kBin + " " + sweep + " --threads 1 --max-seconds 0.3 --out " + dir);
   EXPECT_EQ(r.exit_code, 4) << r.err;
   EXPECT_NE(r.err.find("--max-seconds 0.3 exceeded"), std::string::npos) << r.err;
