@@ -128,6 +128,34 @@ Column build_column(const golden::ThesisColumn& tc, golden::ProgressFn progress)
   return c;
 }
 
+std::string tolerance_text(double rel) { return fmt::format("±{:g}%", rel * 100); }
+
+// Per basis: figures and how many are reproduced.
+struct BasisCount {
+  int total = 0, reproduced = 0;
+};
+std::vector<std::pair<golden::FigureBasis, BasisCount>> basis_counts(const std::vector<Column>& cols) {
+  std::vector<std::pair<golden::FigureBasis, BasisCount>> out;
+  for (golden::FigureBasis b : golden::kFigureBases) out.push_back({b, {}});
+  for (const auto& c : cols)
+    for (const auto& f : c.published)
+      for (auto& [b, n] : out)
+        if (b == f.basis) ++n.total, n.reproduced += f.reproduced();
+  return out;
+}
+
+// "by basis: calibrated 10 (10 reproduced), ...; predicted figures reproduced: 4 of 27"
+std::string basis_summary_text(const std::vector<Column>& cols) {
+  std::string t = "by basis:";
+  BasisCount predicted;
+  for (const auto& [b, n] : basis_counts(cols)) {
+    t += fmt::format(" {} {} ({} reproduced){}", golden::to_string(b), n.total, n.reproduced,
+                     b == golden::FigureBasis::Predicted ? ";" : ",");
+    if (b == golden::FigureBasis::Predicted) predicted = n;
+  }
+  return t + fmt::format(" predicted figures reproduced: {} of {}", predicted.reproduced, predicted.total);
+}
+
 std::string markdown(const std::vector<Column>& cols, bool published) {
   std::ostringstream o;
   o << "# Thesis Table 5.1 beside rangesim\n";
@@ -141,12 +169,19 @@ std::string markdown(const std::vector<Column>& cols, bool published) {
     }
   }
   if (published) {
-    o << "\n# Published figures\n\n| sensor | figure | published | rangesim | status | note "
-         "|\n|---|---|---|---|---|---|\n";
+    o << "\n# Published figures\n\n"
+         "basis: `calibrated` a preset value was tuned to this figure (named); `fitted` follows from a preset value "
+         "fitted to several figures at once; `arithmetic` follows from published numbers or structure alone; "
+         "`predicted` the model's output from values not tuned to it. Only a reproduced `predicted` figure is "
+         "evidence of fidelity.\n\n"
+         "| sensor | figure | published | rangesim | tolerance | status | basis | note |\n"
+         "|---|---|---|---|---|---|---|---|\n";
     for (const auto& c : cols)
       for (const auto& f : c.published)
-        o << fmt::format("| {} | {} | {:.4g} {} | {:.4g} {} | {} | {} |\n", f.sensor, f.description, f.published,
-                         f.unit, f.ours, f.unit, f.reproduced() ? "reproduced" : "differs", f.note);
+        o << fmt::format("| {} | {} | {:.4g} {} | {:.4g} {} | {} | {} | {} | {} |\n", f.sensor, f.description,
+                         f.published, f.unit, f.ours, f.unit, tolerance_text(f.tolerance),
+                         f.reproduced() ? "reproduced" : "differs", f.basis_text(), f.note);
+    o << "\n" << basis_summary_text(cols) << "\n";
   }
   return o.str();
 }
@@ -175,13 +210,15 @@ std::string html(const std::vector<Column>& cols) {
     }
     o << "</table>";
   }
-  o << "<h1>Published figures</h1><table><tr><th>sensor<th>figure<th>published<th>rangesim<th>status<th>note";
+  o << "<h1>Published figures</h1><table><tr><th>sensor<th>figure<th>published<th>rangesim<th>tolerance<th>status"
+       "<th>basis<th>note";
   for (const auto& c : cols)
     for (const auto& f : c.published)
-      o << fmt::format("<tr><td>{}<td>{}<td class=n>{:.4g} {}<td class=n>{:.4g} {}<td>{}<td class=note>{}", f.sensor,
-                       html_escape(f.description), f.published, f.unit, f.ours, f.unit,
-                       f.reproduced() ? "reproduced" : "differs", html_escape(f.note));
-  o << "</table>\n";
+      o << fmt::format(
+          "<tr><td>{}<td>{}<td class=n>{:.4g} {}<td class=n>{:.4g} {}<td class=n>{}<td>{}<td>{}<td class=note>{}",
+          f.sensor, html_escape(f.description), f.published, f.unit, f.ours, f.unit, tolerance_text(f.tolerance),
+          f.reproduced() ? "reproduced" : "differs", html_escape(f.basis_text()), html_escape(f.note));
+  o << "</table><p>" << html_escape(basis_summary_text(cols)) << "</p>\n";
   return o.str();
 }
 
@@ -250,10 +287,17 @@ nlohmann::json columns_json(const std::vector<Column>& cols) {
                                 {"rangesim", json_num(f.ours)},
                                 {"tolerance", f.tolerance},
                                 {"reproduced", f.reproduced()},
+                                {"basis", golden::to_string(f.basis)},
+                                {"basis_key", f.basis_key},
+                                {"fitted_to", f.fitted_to},
+                                {"basis_note", f.basis_note},
                                 {"note", f.note}});
     }
   j["published_reproduced"] = reproduced;
   j["published_total"] = total;
+  j["published_by_basis"] = nlohmann::json::object();
+  for (const auto& [b, n] : basis_counts(cols))
+    j["published_by_basis"][golden::to_string(b)] = {{"total", n.total}, {"reproduced", n.reproduced}};
   return j;
 }
 
@@ -280,12 +324,16 @@ int run_table(const TableOptions& opt) {
                            num_or_empty(cell.ours_value), csv_field(cell.difference), csv_field(cell.note));
       }
     std::ostringstream pcsv;
-    pcsv << "sensor,id,description,published,unit,rangesim,tolerance,status,note\n";
+    pcsv << "sensor,id,description,published,unit,rangesim,tolerance,status,basis,basis_key,fitted_to,basis_note,note\n";
     for (const auto& c : cols)
-      for (const auto& f : c.published)
-        pcsv << fmt::format("{},{},{},{:.6g},{},{},{:g},{},{}\n", f.sensor, f.id, csv_field(f.description), f.published,
-                            f.unit, num_or_empty(f.ours), f.tolerance, f.reproduced() ? "reproduced" : "differs",
-                            csv_field(f.note));
+      for (const auto& f : c.published) {
+        std::string fitted;
+        for (const auto& id : f.fitted_to) fitted += (fitted.empty() ? "" : ";") + id;
+        pcsv << fmt::format("{},{},{},{:.6g},{},{},{:g},{},{},{},{},{},{}\n", f.sensor, f.id, csv_field(f.description),
+                            f.published, f.unit, num_or_empty(f.ours), f.tolerance,
+                            f.reproduced() ? "reproduced" : "differs", golden::to_string(f.basis), f.basis_key,
+                            csv_field(fitted), csv_field(f.basis_note), csv_field(f.note));
+      }
     out->write("table5_1.csv", csv.str());
     out->write("published_figures.csv", pcsv.str());
     out->write("table5_1.md", markdown(cols, true));
@@ -298,8 +346,8 @@ int run_table(const TableOptions& opt) {
     fmt::print("{}\n", j.dump(2));
   } else {
     fmt::print("{}", markdown(cols, opt.published));
-    fmt::print("\npublished figures: {} of {} reproduced{}\n", reproduced, total,
-               opt.published ? "" : " (--published lists them)");
+    fmt::print("\npublished figures: {} of {} reproduced{}\n{}\n", reproduced, total,
+               opt.published ? "" : " (--published lists them)", basis_summary_text(cols));
     if (out)
       fmt::print("written to {}/: table5_1.md, table5_1.html, table5_1.csv, table5_1.json, published_figures.csv\n",
                  opt.out);

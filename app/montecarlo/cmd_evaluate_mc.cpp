@@ -192,6 +192,7 @@ int run_evaluate_mc(const EvaluateOptions& opt) {
   for (const auto& m : ev.metric_names)
     if (m == "accuracy_px") out.write("accuracy_px.csv", metric_matrix_csv(ev, m));
   out.write("mc_points.csv", mc::mc_points_csv(grid));
+  out.write("mc_golden_outside_ci.csv", mc::mc_outside_csv(grid));
   out.write("mc_accuracy_mm.csv", mc::mc_matrix_csv(grid, false));
   out.write("mc_accuracy_ci_mm.csv", mc::mc_matrix_csv(grid, true));
   std::string plot_warning;

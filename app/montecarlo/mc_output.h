@@ -23,6 +23,22 @@ struct McGrid {
   unsigned long long seed = 1;
 };
 
+// A point where the golden accuracy falls outside the MC accuracy's 95% CI.
+struct McOutsidePoint {
+  std::size_t index = 0;              // grid index (row-major)
+  double signal = 0, background = 0;  // sensor units
+  double golden_m = 0;                // golden accuracy (m)
+  McInterval mc;                      // MC accuracy and its 95% CI (m)
+  double p_detect = 0;                // MC detection probability
+  double gap_rel = 0;                 // (golden - MC) / MC
+  double gap_half_widths = 0;         // |golden - MC| / CI half-width
+  bool within_2_half_widths = false;  // passes the stated test (tests/montecarlo/test_mc_golden.cpp) all the same
+};
+// Every point run where golden falls outside the CI, in grid order.
+std::vector<McOutsidePoint> mc_golden_outside_ci(const McGrid& g);
+// mc_golden_outside_ci.csv: those points, one a line (a header only when there are none).
+std::string mc_outside_csv(const McGrid& g);
+
 // One line per point run: golden accuracy, trials, p_detect, bias, std and accuracy (m) with CIs.
 std::string mc_points_csv(const McGrid& g);
 // Matrix (rows background, columns signal) of the MC accuracy in mm, or of its CI half-width.

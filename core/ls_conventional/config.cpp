@@ -69,6 +69,7 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.grid.background_max_V = p.real("evaluation.background_max_V");
   c.grid.background_points = static_cast<int>(p.integer("evaluation.background_points"));
   c.grid.subpixel_points = static_cast<int>(p.integer("evaluation.subpixel_points"));
+  c.grid.subpixel_tolerance = p.real("evaluation.subpixel_tolerance");
 
   // Cross-key checks: the column address must fit the row.
   if ((1LL << c.timing.address_bits) < c.pixel.columns)

@@ -31,22 +31,24 @@ GridScan scan_grid(EvalResult& r, const std::function<EvalPoint(std::size_t ib, 
   const unsigned cores = parallel ? std::max(1u, std::thread::hardware_concurrency()) : 1u;
   std::vector<std::vector<EvalPoint>> block(std::min(block_rows, nb));
   for (std::size_t b0 = 0; b0 < nb; b0 += block_rows) {
-    const std::size_t rows = std::min(block_rows, nb - b0);
+    const std::size_t rows = std::min(block_rows, nb - b0), points = rows * ns;
+    for (std::size_t k = 0; k < rows; ++k) block[k].resize(ns);
+    // Points, not rows, are handed out and reported: one point can cost up to a second (an adaptive
+    // average over spot positions), so a cancel is seen, and the workers stop, within a point.
     std::atomic<std::size_t> next{0}, done{0};
     auto work = [&](bool report) {
-      for (std::size_t k; (k = next.fetch_add(1)) < rows;) {
-        block[k].resize(ns);
-        for (std::size_t is = 0; is < ns; ++is) block[k][is] = point(b0 + k, is);
+      for (std::size_t k; (k = next.fetch_add(1)) < points;) {
+        block[k / ns][k % ns] = point(b0 + k / ns, k % ns);
         const std::size_t d = done.fetch_add(1) + 1;
-        if (report && progress) progress(static_cast<int>((b0 + d) * ns), static_cast<int>(nb * ns));
+        if (report && progress) progress(static_cast<int>(b0 * ns + d), static_cast<int>(nb * ns));
       }
     };
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<std::size_t>(cores, rows); ++t) pool.emplace_back(work, false);
+    for (unsigned t = 1; t < std::min<std::size_t>(cores, points); ++t) pool.emplace_back(work, false);
     try {
       work(true);  // only the calling thread reports
     } catch (...) {  // the progress callback cancelled the run: hand out nothing more, join, pass it on
-      next.store(rows);
+      next.store(points);
       for (auto& t : pool) t.join();
       throw;
     }

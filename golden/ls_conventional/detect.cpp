@@ -5,6 +5,7 @@
 #include "golden/common/activation_cdf.h"
 #include "golden/common/pixel.h"
 #include "golden/common/quantiser.h"
+#include "golden/common/threshold.h"
 
 namespace rangesim::golden {
 
@@ -26,8 +27,9 @@ Detect classify(const LsConventionalConfig& cfg, double signal_V, double backgro
   const double A = cfg.pixel.source_follower_gain;
   const double theta = comparator_threshold_V(cfg, background_V);
   if (saturates(cfg.pixel, signal_V + background_V + dark)) return Detect::Saturated;
-  if (A * (signal_V + background_V + dark) < theta) return Detect::BelowThreshold;
-  if (A * (background_V + dark) >= theta) return Detect::BackgroundActivation;
+  // Up to rounding (golden/common/threshold.h): the thesis point 0.01 V / 0.001 V sits exactly on theta.
+  if (below_threshold(A * (signal_V + background_V + dark), theta)) return Detect::BelowThreshold;
+  if (reaches_threshold(A * (background_V + dark), theta)) return Detect::BackgroundActivation;
   if (row_false_activation_probability(cfg, background_V) > cfg.comparator.false_activation_max)
     return Detect::BackgroundActivation;
   return Detect::Detectable;

@@ -40,6 +40,7 @@ struct OperatingPoint {
   // The accuracy comes from noise-only detections: the noise-free readout detects at none of the
   // spot positions averaged (the detection edge), so it is the P(detect)-weighted rms error.
   bool noise_only_detections = false;
+  int subpixel_positions = 0;  // spot positions the adaptive average used (evaluation.subpixel_tolerance)
 };
 
 struct DynamicRange {

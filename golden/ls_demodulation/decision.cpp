@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "golden/common/threshold.h"
+
 namespace rangesim::golden {
 
 const char* to_string(DemodDetect d) {
@@ -68,11 +70,11 @@ Classification classify(const LsDemodulationConfig& cfg, double signal_A, double
   c.row_false_activation = std::clamp(c.row_false_activation, 0.0, 1.0);
   if (c.background.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;
-  else if (c.background.out.diff_V >= vcmp || c.row_false_activation > cfg.comparator.false_activation_max)
+  else if (reaches_threshold(c.background.out.diff_V, vcmp) || c.row_false_activation > cfg.comparator.false_activation_max)
     c.detect = DemodDetect::BackgroundActivation;
   else if (c.peak.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;
-  else if (c.peak.out.diff_V < vcmp)
+  else if (below_threshold(c.peak.out.diff_V, vcmp))
     c.detect = DemodDetect::BelowThreshold;
   else
     c.detect = DemodDetect::Detectable;

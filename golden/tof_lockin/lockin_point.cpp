@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "golden/common/threshold.h"
 #include "golden/tof_lockin/adc_moments.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/range_estimate.h"
@@ -59,9 +60,8 @@ LockinPoint evaluate_point(const TofLockinConfig& cfg, double signal_A, double b
     pt.detect = LockinDetect::Saturated;
     return pt;
   }
-  // 1 ppb slack: a grid point defined exactly at the threshold (the preset's lowest signal)
-  // must not flip on the last bit of the arithmetic.
-  if (pt.signal_V < cfg.readout.detection_threshold_V * (1.0 - 1e-9)) {
+  // Up to rounding: the preset's lowest signal is defined exactly at the threshold.
+  if (below_threshold(pt.signal_V, cfg.readout.detection_threshold_V)) {
     pt.detect = LockinDetect::BelowThreshold;
     return pt;
   }

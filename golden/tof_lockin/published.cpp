@@ -150,6 +150,25 @@ std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet& params
                    (cfg.readout.ambient_subtraction
                         ? "; with the ambient frame a range image takes two of these frames (15 per s)"
                         : "")});
+  // What each agreement is worth (table --published). The read noise is one value fitted to the
+  // eleven resolution figures at once, so none of them (nor the derived 10-frame one) is a prediction.
+  using B = FigureBasis;
+  const std::vector<std::string> fit = {"resolution_t0_100ns_1p4V",  "resolution_delay_1ns_0p7V",
+                                        "resolution_delay_50ns_0p7V", "resolution_delay_100ns_0p7V",
+                                        "averaging_0p25V_1frame",     "averaging_0p25V_25frames",
+                                        "averaging_1p3V_1frame",      "averaging_1p3V_25frames",
+                                        "pulse_width_10ns",           "pulse_width_40ns",
+                                        "pulse_width_100ns"};
+  for (const auto& fid : fit) set_basis(f, fid, B::Fitted, "noise.read_noise_V", fit);
+  set_basis(f, "resolution_1p4V_10frames", B::Fitted, "noise.read_noise_V", fit, "and 1/sqrt(10) of the first");
+  set_basis(f, "averaging_gain_25frames", B::Arithmetic, "", {}, "independent frames: sqrt(25) = 5");
+  set_basis(f, "max_range_t0_100ns", B::Arithmetic, "", {}, "c T0 / 2");
+  set_basis(f, "accuracy_best_as_shot_noise", B::Arithmetic, "", {},
+            "pure signal shot noise sqrt(x (1 - x) / N_s) c T0 / 2 with every other noise off");
+  for (const char* fid : {"table51_signal_dB", "table51_background_dB", "table51_sbr_max_dB", "table51_sbr_min_dB",
+                          "table51_accuracy_best", "table51_accuracy_worst"})
+    set_basis(f, fid, B::Predicted);
+  set_basis(f, "frame_rate_30fps", B::Calibrated, "readout.clock_Hz");
   return f;
 }
 

@@ -104,6 +104,15 @@ std::vector<PublishedFigure> published_figures(const TofSpadConfig& cfg) {
                "not reproduced: we use the chip's ~97.7 ps (100 ns / 1024, recalled). 90 ns would make one LSB 13.5 m "
                "and cannot give mm-scale figures; 200 ps is the thesis's own unfinished assumption (set tdc.lsb_s to "
                "use it)"});
+  // What each agreement is worth (table --published): tuned, arithmetic or predicted.
+  using B = FigureBasis;
+  set_basis(f, "max_nonlinearity", B::Calibrated, "tdc.inl_rms_lsb");
+  set_basis(f, "uncertainty_far", B::Calibrated, "evaluation.reference_background_Hz");
+  set_basis(f, "min_signal_rate", B::Predicted);
+  for (const char* fid : {"table_5_1_signal_light", "table_5_1_background_light", "table_5_1_sbr_max",
+                          "table_5_1_sbr_min", "table_5_1_accuracy_best", "table_5_1_accuracy_worst"})
+    set_basis(f, fid, B::Predicted);
+  set_basis(f, "tdc_lsb_thesis_text", B::Arithmetic, "", {}, "an input read back: the preset's tdc.lsb_s");
   return f;
 }
 

@@ -30,10 +30,12 @@ const ThesisColumn& tof_spad_table_column() {
         "first-photon histogram keep the peak found)"},
        {"sbr_max", "eq. 4.11 style over our grid; no model behind the thesis's 65 dB"},
        {"sbr_min", "eq. 4.11 style over our grid; 20 + 12 dB of spans cannot give the thesis's 25 dB SBR' span"},
-       {"accuracy_max", "the thesis gives no unit for 5.8 and 37 (read as mm); ours: best over the detectable area"},
+       {"accuracy_max",
+        "ours: worst (largest rms error) over the detectable area, as in every column. The thesis gives no unit "
+        "for 5.8 and 37 (read as mm) and puts the smaller number in this row, like column [12]"},
        {"accuracy_min",
-        "ours: worst over the detectable area; the published chip figures (9 mm nonlinearity, 5.2 mm "
-        "uncertainty at the far end) are reproduced, see --published"}}};
+        "ours: best (smallest rms error) over the detectable area; the published chip figures (9 mm "
+        "nonlinearity, 5.2 mm uncertainty at the far end) are reproduced, see --published"}}};
   return column;
 }
 

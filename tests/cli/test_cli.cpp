@@ -149,6 +149,28 @@ TEST_F(Cli, TableHasFourSensorsAndTheThesisValues) {
   EXPECT_NEAR(ls["rows"][4]["rangesim_value"].get<double>(), 43.52, 0.01);
   EXPECT_FALSE(ls["rows"][5]["note"].get<std::string>().empty());  // background: why 47.6 vs 63.5 dB
   EXPECT_GE(j["published_total"].get<int>(), 8);
+  // Row "Range Accuracy Max" is rangesim's worst (largest rms error) in every column and its note
+  // says so; the tof-spad notes once labelled 6.82 mm "best" and 1.45 mm "worst".
+  for (const auto& col : j["table_5_1"]) {
+    SCOPED_TRACE(col["sensor"].get<std::string>());
+    const auto& worst = col["rows"][8];
+    const auto& best = col["rows"][9];
+    ASSERT_EQ(worst["row"], "accuracy_max");
+    ASSERT_EQ(best["row"], "accuracy_min");
+    EXPECT_GE(worst["rangesim_value"].get<double>(), best["rangesim_value"].get<double>());
+    if (col["sensor"] == "tof-spad") {
+      EXPECT_NE(worst["note"].get<std::string>().find("ours: worst"), std::string::npos);
+      EXPECT_NE(best["note"].get<std::string>().find("ours: best"), std::string::npos);
+    }
+  }
+  // Every published figure carries its basis; the summary counts them per basis.
+  int by_basis = 0;
+  for (const char* b : {"calibrated", "fitted", "arithmetic", "predicted"}) {
+    ASSERT_TRUE(j["published_by_basis"].contains(b)) << b;
+    by_basis += j["published_by_basis"][b]["total"].get<int>();
+  }
+  EXPECT_EQ(by_basis, j["published_total"].get<int>());
+  for (const auto& f : j["published"]) EXPECT_TRUE(f.contains("basis") && f.contains("tolerance")) << f["id"];
   for (const char* f : {"table5_1.md", "table5_1.html", "table5_1.csv", "table5_1.json", "published_figures.csv"})
     EXPECT_TRUE(fs::is_regular_file(out + "/" + f)) << f;
 }

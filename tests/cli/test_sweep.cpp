@@ -117,11 +117,14 @@ int journal_records(const std::string& dir) {
 
 TEST(Sweep, KilledSweepResumesByteIdentical) {
   const std::string tmp = make_temp_dir();
-  // The preset's full 61 x 61 grid: each variant takes long enough to be killed between them.
-  const std::string sweep = "sweep ls-conventional --vary multisampling.samplings=1:6:6 --no-plots";
+  // The preset's full 61 x 61 grid: each variant takes long enough to be killed between them. The
+  // fixed 16-position sub-pixel rule keeps each variant a few seconds (the adaptive one, a minute).
+  const std::string sweep =
+      "sweep ls-conventional --vary multisampling.samplings=1:6:6 --set evaluation.subpixel_tolerance=0 --no-plots";
   ASSERT_EQ(rangesim(sweep + " --out " + tmp + "/ref").exit_code, 0);
   std::vector<std::string> parts = {kBin};
-  for (const char* a : {"sweep", "ls-conventional", "--vary", "multisampling.samplings=1:6:6", "--no-plots", "--out"})
+  for (const char* a : {"sweep", "ls-conventional", "--vary", "multisampling.samplings=1:6:6", "--set",
+                        "evaluation.subpixel_tolerance=0", "--no-plots", "--out"})
     parts.push_back(a);
   parts.push_back(tmp + "/k");
   std::vector<char*> argv;

@@ -190,7 +190,9 @@ TEST(Reliability, ProgressCountsRealPointsOnce) {
   const ChildResult r = w.run("evaluate tof-spad --signal 1e3:1e7:45 --background 1e3:1e7:121 --no-plots --out d");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("evaluate: 5445/5445 operating points"), std::string::npos) << r.err;
-  const ChildResult t = w.run("table");
+  // table evaluates every preset's grid; ls-conventional's adaptive sub-pixel average costs about
+  // a minute of CPU (evaluation.subpixel_tolerance), more than the default 60 s on a loaded machine.
+  const ChildResult t = w.run("table", 600);
   ASSERT_EQ(t.exit_code, 0) << t.err;
   std::istringstream lines(t.err);
   std::set<std::string> seen;

@@ -9,6 +9,7 @@
 #include "golden/ls_conventional/detect.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "golden/common/pixel.h"
+#include "golden/common/threshold.h"
 #include "test_helpers.h"
 
 namespace rangesim::golden {
@@ -39,6 +40,54 @@ TEST(GoldenEvaluation, ClassifyOperatingPoints) {
   EXPECT_EQ(classify(cfg, 0.5, 0.008), Detect::Detectable);
   EXPECT_EQ(classify(cfg, 0.5, 0.0095), Detect::BackgroundActivation);
   EXPECT_STREQ(to_string(Detect::BackgroundActivation), "background_activation");
+}
+
+// The thesis's own point (3.1.3): 0.01 V signal over 0.001 V background, SBR' 20.83 dB. The spot
+// peak A (V_sig + V_bg + V_dark) and the tracking threshold A (V_bg + V_dark) + Delta V_ADC are the
+// same number computed two ways; before the rounding-tolerant comparison it was classed
+// below_threshold by the last bit.
+TEST(GoldenEvaluation, ThesisPointAtThresholdIsDetectable) {
+  const LsConventionalConfig cfg = test::preset_config();
+  EXPECT_EQ(classify(cfg, 0.01, 0.001), Detect::Detectable);
+  const OperatingPoint p = evaluate_point(cfg, 0.01, 0.001);
+  EXPECT_EQ(p.detect, Detect::Detectable);
+  EXPECT_NEAR(p.sbr_total_dB, 20.83, 0.005);
+  EXPECT_GT(p.accuracy_px, 0.0);  // a real accuracy, not the "not detectable" zero
+  // Every background of the grid: the weakest detectable signal is Delta V_ADC / A_sf exactly.
+  for (double bg : {0.001, 0.0037, 0.02, 0.1, 0.24})
+    EXPECT_NE(classify(cfg, cfg.comparator.threshold_above_background_V / cfg.pixel.source_follower_gain, bg),
+              Detect::BelowThreshold)
+        << bg;
+  // A real shortfall (1 ppm below) is still below the threshold.
+  EXPECT_EQ(classify(cfg, 0.01 * (1 - 1e-6), 0.001), Detect::BelowThreshold);
+}
+
+// The accuracy's average over spot positions is adaptive (evaluation.subpixel_tolerance): at
+// (0.12 V, 0.002 V) a fixed 16-position rule was 15 % low against the Monte Carlo; the adaptive
+// rule lands within its tolerance of a 3888-position reference.
+TEST(GoldenEvaluation, AdaptiveSubpixelAverageConverges) {
+  LsConventionalConfig cfg = test::preset_config();
+  ASSERT_GT(cfg.grid.subpixel_tolerance, 0.0);
+  const OperatingPoint adaptive = evaluate_point(cfg, 0.12, 0.002);
+  cfg.grid.subpixel_tolerance = 0;  // fixed rules
+  cfg.grid.subpixel_points = 3888;
+  const OperatingPoint ref = evaluate_point(cfg, 0.12, 0.002);
+  cfg.grid.subpixel_points = 16;
+  const OperatingPoint fixed16 = evaluate_point(cfg, 0.12, 0.002);
+  EXPECT_EQ(ref.subpixel_positions, 3888);
+  EXPECT_EQ(fixed16.subpixel_positions, 16);
+  EXPECT_GT(adaptive.subpixel_positions, 16);
+  EXPECT_NEAR(adaptive.accuracy_px, ref.accuracy_px, 0.02 * ref.accuracy_px);
+  EXPECT_GT(std::fabs(fixed16.accuracy_px - ref.accuracy_px), 0.10 * ref.accuracy_px);
+}
+
+TEST(ThresholdCompare, ToleratesRoundingOnly) {
+  EXPECT_TRUE(reaches_threshold(0.1 + 0.2, 0.3));          // 0.30000000000000004
+  EXPECT_TRUE(reaches_threshold(0.3, 0.1 + 0.2));          // 0.3 < 0.30000000000000004 by 1 ulp
+  EXPECT_FALSE(below_threshold(0.3, 0.1 + 0.2));
+  EXPECT_TRUE(below_threshold(0.3 * (1 - 1e-7), 0.3));     // 100x the tolerance
+  EXPECT_FALSE(reaches_threshold(-1e-3, 0.0));
+  EXPECT_TRUE(reaches_threshold(0.0, 0.0));
 }
 
 TEST(GoldenEvaluation, SignalRangeThesis435dB) {
