@@ -22,9 +22,9 @@ SensorRadiometry ls_conventional_radiometry(const ParamSet& p) {
   r.stripe_sigma_px = c.spot.fwhm_px * c.spot.sigma_per_fwhm;
   r.signal_duty = 1;  // the sheet beam is on through the integration
   r.native_per_W = c.pixel.responsivity_A_per_W * c.pixel.integration_time_s / c.pixel.pd_capacitance_F;
-  r.conversion = fmt::format("V = R P t_int / C_pd = {:g} A/W x P x {:g} s / {:g} F = {:.4g} V/W x P",
-                             c.pixel.responsivity_A_per_W, c.pixel.integration_time_s, c.pixel.pd_capacitance_F,
-                             r.native_per_W);
+  r.conversion =
+      fmt::format("V = R P t_int / C_pd = {:g} A/W x P x {:g} s / {:g} F = {:.4g} V/W x P",
+                  c.pixel.responsivity_A_per_W, c.pixel.integration_time_s, c.pixel.pd_capacitance_F, r.native_per_W);
   r.distance_key = "optics.distance_m";
   return r;
 }

@@ -14,6 +14,8 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
   c.pixel.columns = integer("pixel.columns");
   c.pixel.rows = integer("pixel.rows");
   c.pixel.pitch_m = p.real("pixel.pitch_m");
+  c.pixel.fill_factor = p.real("pixel.fill_factor");
+  c.pixel.responsivity_A_per_W = p.real("pixel.responsivity_A_per_W");
   c.pixel.integration_time_s = p.real("pixel.integration_time_s");
 
   c.modulation.frequency_Hz = p.real("modulation.frequency_Hz");
@@ -53,6 +55,7 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
   c.readout.address_bits = integer("readout.address_bits");
 
   c.optics.focal_length_m = p.real("optics.focal_length_m");
+  c.optics.f_number = p.real("optics.f_number");
   c.optics.baseline_m = p.real("optics.baseline_m");
   c.optics.distance_m = p.real("optics.distance_m");
   c.distance_min_m = p.real("optics.distance_min_m");

@@ -15,6 +15,8 @@ struct DemodPixelConfig {
   int rows = 110;                     // rows read out per frame
   double pitch_m = 45e-6;             // pixel pitch
   double integration_time_s = 50e-6;  // correlation window T of one decision (= cycles / f0)
+  double fill_factor = 0.3;           // photosensitive area / pixel area (scene radiometry)
+  double responsivity_A_per_W = 0.4;  // photocurrent per optical watt at the source wavelength (scene radiometry)
 };
 
 // Beam modulation and MPY+/MPY- reference (thesis Fig. 2.7).

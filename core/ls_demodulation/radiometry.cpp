@@ -16,11 +16,11 @@ SensorRadiometry ls_demodulation_radiometry(const ParamSet& p) {
   r.columns = c.pixel.columns;
   r.pitch_m = c.pixel.pitch_m;
   r.focal_length_m = c.optics.focal_length_m;
-  r.f_number = p.real("optics.f_number");
-  r.fill_factor = p.real("pixel.fill_factor");
+  r.f_number = c.optics.f_number;
+  r.fill_factor = c.pixel.fill_factor;
   r.stripe_sigma_px = c.spot.fwhm_px * c.spot.sigma_per_fwhm;
   r.signal_duty = c.modulation.source_duty_cycle;
-  r.native_per_W = p.real("pixel.responsivity_A_per_W");
+  r.native_per_W = c.pixel.responsivity_A_per_W;
   r.conversion = fmt::format("I = R P = {:g} A/W x P; signal: beam-on current = mean / {:g} (modulation duty)",
                              r.native_per_W, r.signal_duty);
   r.distance_key = "optics.distance_m";

@@ -24,6 +24,10 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
   c.pixel.columns = static_cast<int>(p.integer("pixel.columns"));
   c.pixel.rows = static_cast<int>(p.integer("pixel.rows"));
   c.pixel.pitch_m = p.real("pixel.pitch_m");
+  c.pixel.fill_factor = p.real("pixel.fill_factor");
+  c.pixel.responsivity_A_per_W = p.real("pixel.responsivity_A_per_W");
+  c.optics.focal_length_m = p.real("optics.focal_length_m");
+  c.optics.f_number = p.real("optics.f_number");
   c.pixel.fd1_capacitance_F = p.real("pixel.fd1_capacitance_F");
   c.pixel.fd2_capacitance_F = p.real("pixel.fd2_capacitance_F");
   c.pixel.source_follower_gain = p.real("pixel.source_follower_gain");

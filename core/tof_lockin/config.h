@@ -23,6 +23,14 @@ struct LockinPixelConfig {
   double charge_separation = 1.0;     // fraction of signal electrons reaching the tap open at generation;
                                       // the rest (deep electrons) arrive uniformly over the period
   double drain_efficiency = 1.0;      // fraction of PHASE3 electrons drained; the rest splits over FD1/FD2
+  double fill_factor = 0.3;           // photosensitive area / pixel area (scene radiometry)
+  double responsivity_A_per_W = 0.4;  // photocurrent per optical watt at the source wavelength (scene radiometry)
+};
+
+// The camera lens (scene radiometry: optical power on a pixel).
+struct LockinOpticsConfig {
+  double focal_length_m = 8e-3;
+  double f_number = 1.4;
 };
 
 // Pulsed LED source (trapezoid of FWHM T0 and linear 0-100% ramps of rise_time / 0.8).
@@ -79,6 +87,7 @@ struct LockinEvaluationConfig {
 
 struct TofLockinConfig {
   LockinPixelConfig pixel;
+  LockinOpticsConfig optics;
   LightPulseConfig source;
   LockinGateConfig gates;
   LockinReadoutConfig readout;

@@ -15,12 +15,12 @@ SensorRadiometry tof_lockin_radiometry(const ParamSet& p) {
   r.rows = c.pixel.rows;
   r.columns = c.pixel.columns;
   r.pitch_m = c.pixel.pitch_m;
-  r.focal_length_m = p.real("optics.focal_length_m");
-  r.f_number = p.real("optics.f_number");
-  r.fill_factor = p.real("pixel.fill_factor");
+  r.focal_length_m = c.optics.focal_length_m;
+  r.f_number = c.optics.f_number;
+  r.fill_factor = c.pixel.fill_factor;
   r.wavelength_m = c.source.wavelength_m;
   r.signal_duty = c.source.duty_cycle;
-  r.native_per_W = p.real("pixel.responsivity_A_per_W");
+  r.native_per_W = c.pixel.responsivity_A_per_W;
   r.conversion = fmt::format("I = R P = {:g} A/W x P; signal: current during the pulse = mean / {:g} (duty cycle)",
                              r.native_per_W, r.signal_duty);
   r.distance_key = "evaluation.distance_m";

@@ -22,6 +22,11 @@ void check_order(const ParamSet& p, const char* lo_key, double lo, const char* h
 TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   TofSpadConfig c;
   c.spad.pde = p.real("spad.pde");
+  c.array.rows = static_cast<int>(p.integer("array.rows"));
+  c.array.columns = static_cast<int>(p.integer("array.columns"));
+  c.array.pitch_m = p.real("array.pitch_m");
+  c.array.focal_length_m = p.real("optics.focal_length_m");
+  c.array.f_number = p.real("optics.f_number");
   c.spad.fill_factor = p.real("spad.fill_factor");
   c.spad.dark_count_rate_Hz = p.real("spad.dark_count_rate_Hz");
   c.spad.dead_time_s = p.real("spad.dead_time_s");

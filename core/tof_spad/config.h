@@ -65,7 +65,16 @@ struct SpadEvaluationConfig {
   double sweep_signal_Hz = 1e5;  // fixed signal of the accuracy-vs-background sweep
 };
 
+// The array and the camera lens (scene radiometry and scene sizes).
+struct SpadArrayConfig {
+  int rows = 128, columns = 128;
+  double pitch_m = 25e-6;
+  double focal_length_m = 8e-3;
+  double f_number = 1.4;
+};
+
 struct TofSpadConfig {
+  SpadArrayConfig array;
   SpadConfig spad;
   SpadLaserConfig laser;
   TdcConfig tdc;
