@@ -64,6 +64,14 @@ OutputDir::OutputDir(const std::string& dir, const std::string& flag, const Outp
           fmt::format("{} {}: holds the results of another command ({} files of `rangesim {}`); add --force to "
                       "replace them (files that are not rangesim's stay), or choose another {}",
                       flag, dir_, previous_->files.size(), previous_->kind, flag));
+    // A folder written before manifests existed: its files cannot be told from the user's, so a
+    // run would leave the old ones it does not write again beside its own.
+    if (!folder_.kind.empty() && folder_.lock && !previous_ && !folder_.force &&
+        fs::exists(fs::path(dir_) / "summary.json"))
+      throw UserError(fmt::format(
+          "{} {}: holds an earlier rangesim run without a record of its files (summary.json, no {}); add --force "
+          "to write into it anyway (files of the same names are replaced, the others stay), or choose another {}",
+          flag, dir_, kManifestName, flag));
     staging_ = (fs::path(dir_) / fmt::format(".staging-{}", ::getpid())).string();
     fs::create_directory(staging_, ec);
     if (ec) throw UserError(fmt::format("{} {}: output directory is not writable ({})", flag, dir_, ec.message()));

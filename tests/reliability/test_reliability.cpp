@@ -237,3 +237,21 @@ TEST(Reliability, CosimOfOneTargetHonoursItsTimeBudget) {
   EXPECT_NE(r.err.find("--max-seconds"), std::string::npos) << r.err;
   EXPECT_LT(r.wall_s, 20);
 }
+
+// A folder written before output manifests existed: refused without --force (its files cannot be
+// told from the user's), written into with it.
+TEST(Reliability, AFolderOfAnEarlierRunWithoutManifestNeedsForce) {
+  Workspace w;
+  fs::create_directory(w.work / "old");
+  std::ofstream(w.work / "old" / "summary.json") << "{}\n";
+  std::ofstream(w.work / "old" / "mc_points.csv") << "old\n";
+  const ChildResult r = w.run("evaluate tof-spad --signal 1e3:1e5:3 --background 1e3:1e5:3 --no-plots --out old");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--out old: holds an earlier rangesim run without a record of its files"), std::string::npos)
+      << r.err;
+  const ChildResult forced =
+      w.run("evaluate tof-spad --signal 1e3:1e5:3 --background 1e3:1e5:3 --no-plots --out old --force");
+  EXPECT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_TRUE(fs::exists(w.work / "old" / ".rangesim-manifest"));
+  EXPECT_TRUE(fs::exists(w.work / "old" / "mc_points.csv"));  // not known to be rangesim's: it stays
+}
