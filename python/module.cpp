@@ -3,6 +3,8 @@
 // registries, as on the command line.
 #include "python/bindings.h"
 
+#include <regex>
+
 #include "app/cli_common.h"
 #include "app/cmd_simulate.h"
 #include "app/command_data.h"
@@ -10,6 +12,28 @@
 #include "systemc/common/montecarlo.h"
 
 namespace rangesim::python {
+
+namespace {
+
+// The key of an error raised without one, read from the message's own form: "--frames 0: ..." is
+// the argument `frames`, "FILE:12: target.distance_m = ..." the file's key, "'x' is neither a
+// preset nor a file" the preset. "" when the message names no one key.
+std::string key_from_message(const std::string& m) {
+  static const std::regex flag(R"(^--([a-z][a-z-]*)[ :=])");
+  static const std::regex file_key(R"(^\S+:\d+: ([A-Za-z_][A-Za-z0-9_]*(\.[A-Za-z0-9_]+)+)\b)");
+  std::smatch s;
+  if (std::regex_search(m, s, flag)) {
+    std::string k = s[1];
+    for (char& c : k)
+      if (c == '-') c = '_';
+    return k;
+  }
+  if (std::regex_search(m, s, file_key)) return s[1];
+  if (m.find("is neither a preset nor a file") != std::string::npos) return "preset";
+  return "";
+}
+
+}  // namespace
 
 void register_errors(py::module_& m) {
   // Kept for the life of the process: the translator below may run until the interpreter exits.
@@ -25,7 +49,8 @@ void register_errors(py::module_& m) {
       std::rethrow_exception(p);
     } catch (const UserError& e) {
       py::object err = (*error)(py::str(e.what()));
-      err.attr("key") = e.key().empty() ? py::object(py::none()) : py::object(py::str(e.key()));
+      const std::string key = e.key().empty() ? key_from_message(e.what()) : e.key();
+      err.attr("key") = key.empty() ? py::object(py::none()) : py::object(py::str(key));
       PyErr_SetObject(error->ptr(), err.ptr());
     } catch (const app::NotModelled& e) {  // the command's exit code 3: a sensor without the model
       PyErr_SetString(PyExc_NotImplementedError, e.message.c_str());

@@ -38,7 +38,7 @@ class Errors(unittest.TestCase):
         return e
 
     def test_preset_and_set(self):
-        e = self.same_as_cli(lambda: rangesim.load("no-such-preset"), None, "show", "no-such-preset")
+        e = self.same_as_cli(lambda: rangesim.load("no-such-preset"), "preset", "show", "no-such-preset")
         self.assertIn("no-such-preset", str(e))
         self.same_as_cli(lambda: rangesim.load("ls-conventional", set={"multisampling.samplings": 65}),
                          "multisampling.samplings", "show", "ls-conventional", "--set", "multisampling.samplings=65")
@@ -98,9 +98,19 @@ class Errors(unittest.TestCase):
         e = self.error(lambda: s.simulate(os.path.join(SCENES, "no-such-scene.toml")))
         self.assertEqual(str(e), cli_error("simulate", "tof-spad", "--scene",
                                            os.path.join(SCENES, "no-such-scene.toml"), "--kernel-only"))
+        self.assertEqual(e.key, "scene")
         e = self.error(lambda: s.simulate(scene, frames=0))
         self.assertEqual(str(e), cli_error("simulate", "tof-spad", "--scene", scene, "--frames", "0", "--kernel-only"))
         self.assertIn("--frames", str(e))
+        self.assertEqual(e.key, "frames")
+        # A scene value out of its range: the key is the scene file's.
+        with tempfile.TemporaryDirectory() as tmp:
+            bad = os.path.join(tmp, "bad.toml")
+            with open(bad, "w") as f:
+                f.write('[target]\nshape = "plane"\ndistance_m = -1\n')
+            e = self.error(lambda: s.simulate(bad))
+            self.assertEqual(e.key, "target.distance_m")
+
         self.same_as_cli(lambda: s.simulate(scene, time_step=1e-9), "time_step", "simulate", "tof-spad", "--scene",
                          scene, "--time-step", "1e-9", "--kernel-only")
         lc = rangesim.load("ls-conventional")
