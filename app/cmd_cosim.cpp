@@ -8,14 +8,12 @@
 // and cached by tb/common/rtl_build.h; its report comes back as JSON and renders the same way.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -37,6 +35,7 @@
 #include "tb/common/cosim_coverage.h"
 #include "tb/common/cosim_target.h"
 #include "tb/common/rtl_build.h"
+#include "tb/common/rtl_process.h"
 
 namespace rangesim::app {
 namespace {
@@ -392,9 +391,7 @@ json run_child(const std::string& target, const CosimCommandOptions& opt, unsign
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("cosim all: fork failed");
   if (pid == 0) {
-    // A parent ended at once (a budget, a second signal) takes its target with it.
-    prctl(PR_SET_PDEATHSIG, SIGTERM);
-    if (getppid() != parent) _exit(143);
+    tb::die_with_parent(parent);
     dup2(fds[1], STDOUT_FILENO);
     close(fds[0]);
     close(fds[1]);

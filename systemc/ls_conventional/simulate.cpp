@@ -1,3 +1,4 @@
+#include "systemc/common/centre_validity.h"
 #include "systemc/ls_conventional/simulate.h"
 
 #include <chrono>
@@ -86,9 +87,8 @@ void add_point(Reconstruction& out, const scene::SceneOptics& optics, const Fram
   const scene::RowTruth t = optics.truth(b, r);
   const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
   const double fraction = static_cast<double>(p.count) / cfg.multisampling.samplings;
-  const double margin = cfg.validity.edge_margin_px;
-  const bool valid = p.valid && fraction >= cfg.validity.min_detecting_fraction * (1 - 1e-12) &&
-                     p.centre_px() >= margin && p.centre_px() <= cfg.pixel.columns - 1 - margin;
+  const bool valid = centre_valid(p.count, cfg.multisampling.samplings, p.centre_px(), cfg.pixel.columns,
+                                  cfg.validity.min_detecting_fraction, cfg.validity.edge_margin_px);
   out.map.confidence[static_cast<std::size_t>(r)][f] = fraction;
   double range = NAN, err_px = NAN, err_m = NAN;
   if (valid) {

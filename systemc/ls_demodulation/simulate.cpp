@@ -1,3 +1,4 @@
+#include "systemc/common/centre_validity.h"
 #include "systemc/ls_demodulation/simulate.h"
 
 #include <chrono>
@@ -84,9 +85,8 @@ void add_point(Reconstruction& out, const scene::DemodOptics& optics, const Demo
   const auto& rr = fr.rows[static_cast<std::size_t>(r)];
   const bool vis = optics.visible(b, r);
   const double fraction = static_cast<double>(rr.detections) / cfg.grid.detections;
-  const double margin = cfg.edge_margin_px;
-  const bool valid = rr.valid() && fraction >= cfg.min_detecting_fraction * (1 - 1e-12) && rr.centre_px() >= margin &&
-                     rr.centre_px() <= cfg.pixel.columns - 1 - margin;
+  const bool valid = centre_valid(rr.detections, cfg.grid.detections, rr.centre_px(), cfg.pixel.columns,
+                                  cfg.min_detecting_fraction, cfg.edge_margin_px);
   out.map.confidence[static_cast<std::size_t>(r)][f] = fraction;
   const double truth_x = optics.centre_px(b, r),
                truth_z = optics.visible(b, r) || optics.range_m(b, r) > 0 ? optics.range_m(b, r) : NAN;

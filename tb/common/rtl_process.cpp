@@ -26,15 +26,18 @@ std::string find_program(const std::string& name) {
   return "";
 }
 
+void die_with_parent(pid_t parent) {
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != parent) _exit(143);  // it is gone already
+}
+
 // Runs argv in `cwd` with stdout and stderr to `log` ("" = this process's stderr); exit status.
 int run_program(const std::vector<std::string>& args, const std::string& cwd, const std::string& log) {
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("cosim: fork failed");
   if (pid == 0) {
-    // A parent ended at once (a signal, a budget) takes the build or the model run with it.
-    prctl(PR_SET_PDEATHSIG, SIGTERM);
-    if (getppid() != parent) _exit(143);
+    die_with_parent(parent);
     if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(127);
     const int fd = log.empty() ? dup(STDERR_FILENO) : open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
     if (fd < 0) _exit(127);
