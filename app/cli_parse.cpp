@@ -64,6 +64,18 @@ std::string any_integer(std::string& s, long long lo, long long hi) {
   return "";
 }
 
+// One item of --trace-pixels, ROW:COLUMN with non-negative integers (the run checks its window).
+systemc::TracePixel trace_pixel(const std::string& item) {
+  const std::size_t colon = item.find(':');
+  std::string row = item.substr(0, colon), column = colon == std::string::npos ? "" : item.substr(colon + 1);
+  const std::string bad_row = check_integer_text(row, 0, 1000000000),
+                    bad_column = check_integer_text(column, 0, 1000000000);
+  if (colon == std::string::npos || !bad_row.empty() || !bad_column.empty())
+    throw CLI::ValidationError("--trace-pixels",
+                               "'" + item + "' is not ROW:COLUMN with integers 0..1000000000 (e.g. 3:17)");
+  return {std::stoi(row), std::stoi(column)};
+}
+
 // A flag that sets a preset key (--samplings, --adc-bits, --frames): any_integer, with the widest
 // range of the keys ending in `suffix` over the registered sensors.
 CLI::Validator schema_integer(const std::string& suffix) {
@@ -252,6 +264,15 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "0,5,9 (default: first, quarter, middle, last); sensors without per-row blocks refuse it")
       ->delimiter(',')
       ->type_name("LIST");
+  sim->add_option_function<std::vector<std::string>>(
+         "--trace-pixels",
+         [&sim_opt](const std::vector<std::string>& items) {
+           for (const std::string& item : items) sim_opt.trace_pixels.push_back(trace_pixel(item));
+         },
+         "With --trace: the pixels whose signals the waveform shows, ROW:COLUMN of the pixel array, e.g.\n"
+         "0:5,10:7 (default: the sensor's choice, see docs/simulate.md)")
+      ->delimiter(',')
+      ->type_name("LIST");
   sim->add_option("--out", sim_opt.out, "Output directory (default: rangesim-out/simulate/<scene name>)")->check(kPath);
   sim->add_flag("--force", sim_opt.force,
                 "Replace the results of another kind of run in --out (its rangesim files go; other files stay)");
@@ -301,9 +322,10 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "fig1_4_sbr_vs_background.{png,svg} and accuracy_vs_background.{png,svg} into --out.");
   cmp->add_option("sensors", cmp_opt.sensors,
                   "Sensors to compare: preset ids or paths to .toml files (default: every registered sensor)");
-  cmp->add_option("--scene", cmp_opt.scene,
-                  "Physical scene (TOML with [ambient] and [source], docs/radiometry.md); default: the built-in\n"
-                  "sunlit-wall (scenes/sunlit-wall.toml: 50% wall at 1 m, 10 klux sunlight, 1 W at 850 nm, 10 nm filter)")
+  cmp->add_option(
+         "--scene", cmp_opt.scene,
+         "Physical scene (TOML with [ambient] and [source], docs/radiometry.md); default: the built-in\n"
+         "sunlit-wall (scenes/sunlit-wall.toml: 50% wall at 1 m, 10 klux sunlight, 1 W at 850 nm, 10 nm filter)")
       ->check(kPath);
   cmp->add_option("--background-lux", cmp_opt.background_lux,
                   "Background axis LO:HI:N, lux of ambient light at the target, log-spaced (default 0.1:1e7:41)")

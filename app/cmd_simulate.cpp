@@ -96,6 +96,12 @@ const SimulateEntry& simulate_entry_for(const ParamSet& params, const SimulateOp
                     "trace_rows");
   if (!opt.trace_rows.empty() && opt.trace.empty())
     throw UserError("--trace-rows chooses what --trace writes; add --trace", "trace_rows");
+  if (!opt.trace_pixels.empty() && !entry->trace_pixels)
+    throw UserError(fmt::format("--trace-pixels: the {} waveform has no pixels to choose; allowed with {}",
+                                params.sensor_id(), allowed(&SimulateEntry::trace_pixels)),
+                    "trace_pixels");
+  if (!opt.trace_pixels.empty() && opt.trace.empty())
+    throw UserError("--trace-pixels chooses what --trace writes; add --trace", "trace_pixels");
   return *entry;
 }
 

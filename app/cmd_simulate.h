@@ -20,10 +20,12 @@ struct SimulateOptions {
   std::uint64_t seed = 1;             // --seed S: key of the noise streams
   std::string trace;                  // --trace FILE.vcd or FILE.fst ("" = no waveform); SystemC only
   std::vector<int> trace_rows;        // --trace-rows: rows the waveform shows (empty: the sensor's choice)
-  std::string out;                    // --out DIR ("" -> rangesim-out/simulate/<scene name>)
-  bool force = false;                 // --force: replace the results of another kind of run in --out
-  bool json = false;                  // --json: summary.json to stdout instead of the table
-  bool kernel_only = false;           // --kernel-only: bare C++ kernels, no SystemC elaboration
+  std::vector<systemc::TracePixel> trace_pixels;  // --trace-pixels R:C,...: pixels the waveform shows (empty: the
+                                                  // sensor's choice)
+  std::string out;                                // --out DIR ("" -> rangesim-out/simulate/<scene name>)
+  bool force = false;                             // --force: replace the results of another kind of run in --out
+  bool json = false;                              // --json: summary.json to stdout instead of the table
+  bool kernel_only = false;                       // --kernel-only: bare C++ kernels, no SystemC elaboration
   bool tick = false;          // --tick / --no-event-skip: evaluate every clock cycle (no event skipping; kernel only)
   bool noise_free = false;    // --noise-free: all noise sources off
   bool dense = false;         // --dense / --no-sparse: simulate every pixel (no sparse window)

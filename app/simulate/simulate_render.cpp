@@ -32,6 +32,7 @@ systemc::SimulationRequest simulation_request(const SimulateOptions& opt) {
   r.no_aggregate = opt.no_aggregate;
   r.time_step_s = opt.time_step_s;
   r.trace_rows = opt.trace_rows;
+  r.trace_pixels = opt.trace_pixels;
   return r;
 }
 

@@ -73,6 +73,8 @@ TraceOutput::TraceOutput(const std::string& path, bool kernel_only) : path_(path
   check_output_file(path_, "--trace");
   const fs::path parent = fs::absolute(path_).parent_path();
   std::error_code ec;
+  for (fs::path p = parent; !p.empty() && !fs::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    made_root_ = p.string();
   fs::create_directories(parent, ec);  // like --out: the trace's folder is made
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0)
     throw UserError(fmt::format("--trace {}: cannot create or write to the folder {}", path_, parent.string()));
@@ -96,6 +98,10 @@ TraceOutput::~TraceOutput() {
   if (path_.empty()) return;
   std::error_code ec;
   fs::remove_all(staging_, ec);
+  if (committed_ || made_root_.empty()) return;
+  // The folders made for the trace, innermost first; one that holds anything stays.
+  for (fs::path p = fs::absolute(path_).parent_path(); fs::remove(p, ec) && p.string() != made_root_;)
+    p = p.parent_path();
 }
 
 void TraceOutput::finish() {

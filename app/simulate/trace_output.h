@@ -4,7 +4,7 @@
 // converted with vcd2fst (Debian package gtkwave). With it come a GTKWave save file FILE.gtkw and
 // its translate filters (systemc/common/waveform.h). The folder of FILE is created. Nothing
 // appears beside FILE until commit(): a failed run, a failed conversion or an exception leaves
-// no trace file and no temporary.
+// no trace file, no temporary and no folder the run created.
 #include <string>
 
 namespace rangesim::app {
@@ -29,11 +29,12 @@ class TraceOutput {
   std::string commit();
 
  private:
-  std::string path_;      // --trace
-  std::string stem_;      // its file name without the extension
-  std::string staging_;   // folder beside it holding the trace, save file and filters until commit
-  std::string vcd_base_;  // <staging>/<stem>: the model writes <stem>.vcd there
-  std::string finished_;  // temporary in the final format, ready to rename
+  std::string path_;       // --trace
+  std::string stem_;       // its file name without the extension
+  std::string staging_;    // folder beside it holding the trace, save file and filters until commit
+  std::string vcd_base_;   // <staging>/<stem>: the model writes <stem>.vcd there
+  std::string finished_;   // temporary in the final format, ready to rename
+  std::string made_root_;  // the highest folder this run created for FILE ("" = none): removed if left empty
   bool committed_ = false;
   int staging_slot_ = -1;  // app/run_control.h: the staging folder is removed when a signal ends the run
 };

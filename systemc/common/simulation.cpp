@@ -3,6 +3,8 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "core/user_error.h"
+
 namespace rangesim::systemc {
 
 double RangeErrorStats::rms_m() const { return detected ? std::sqrt(sum_sq_m / detected) : NAN; }
@@ -14,6 +16,15 @@ void RangeErrorStats::to_json(nlohmann::json& j, bool with_px) const {
   if (with_px) j["range_error_rms_px"] = json_number(rms_px());
   j["range_error_mean_m"] = json_number(mean_m());
   j["range_error_max_abs_m"] = detected ? nlohmann::json(max_abs_m) : nlohmann::json(nullptr);
+}
+
+void check_trace_pixels(const std::vector<TracePixel>& pixels, int first_row, int rows, int first_column, int columns,
+                        const std::string& what) {
+  for (const TracePixel& p : pixels)
+    if (p.row < first_row || p.row >= first_row + rows || p.column < first_column || p.column >= first_column + columns)
+      throw UserError(fmt::format("--trace-pixels {}:{}: allowed rows {}..{}, columns {}..{} ({})", p.row, p.column,
+                                  first_row, first_row + rows - 1, first_column, first_column + columns - 1, what),
+                      "trace_pixels");
 }
 
 void set_timing(SimulationReport& r, const golden::FrameTiming& gt, nlohmann::json phases, long long first_frame_cycles,

@@ -31,7 +31,13 @@ struct SimulationRequest {
   bool no_aggregate = false;        // --no-aggregate: periods / laser cycles one by one
   double time_step_s = 0;           // --time-step S (0 = exact closed form)
   std::vector<int> trace_rows;      // --trace-rows: rows whose blocks the waveform shows (empty: the sensor's choice)
+  std::vector<TracePixel> trace_pixels;  // --trace-pixels: pixels the waveform shows (empty: the sensor's choice)
 };
+
+// A traced pixel's checks: inside the simulated window [first, first + count) in both axes, or a
+// UserError naming the flag, the pixel and the window ("what" describes the window).
+void check_trace_pixels(const std::vector<TracePixel>& pixels, int first_row, int rows, int first_column, int columns,
+                        const std::string& what);
 
 // What the run asks of the command around it, at the points where the sensor's checks allow:
 // the trace and the output folder are claimed before the model runs, so a bad --trace or --out

@@ -87,6 +87,10 @@ inline int Waveform::width_of<long long>(const long long&) {
   return 64;
 }
 template <>
+inline int Waveform::width_of<double>(const double&) {
+  return 0;
+}
+template <>
 inline int Waveform::width_of<std::uint32_t>(const std::uint32_t&) {
   return 32;
 }

@@ -50,6 +50,7 @@ void LsConventionalSensor::on_clock() {
     phase_cycles_ = {};
     return;
   }
+  for (PixelProbe& p : pixel_probes_) *p.active = act_[static_cast<std::size_t>(p.at.row)].read().test(p.at.column);
   // Signals hold their values of the ending cycle.
   const ReadoutPhase phase = static_cast<ReadoutPhase>(phase_.read());
   ++phase_cycles_[static_cast<std::size_t>(phase)];
@@ -86,7 +87,7 @@ void LsConventionalSensor::on_clock() {
   ++cycle_;
 }
 
-void LsConventionalSensor::trace(Waveform& w, const std::vector<int>& rows) const {
+void LsConventionalSensor::trace(Waveform& w, const std::vector<int>& rows, const std::vector<TracePixel>& pixels) {
   Waveform::ValueNames phases;
   for (int p = 0; p < kReadoutPhases; ++p) phases.push_back({p, readout_phase_name(static_cast<ReadoutPhase>(p))});
   const std::string top = "ls_conventional", seq = top + ".sequencer";
@@ -114,6 +115,12 @@ void LsConventionalSensor::trace(Waveform& w, const std::vector<int>& rows) cons
     w.add(c.centre_q, row + ".centre_processor", "centre_q");
     w.add(c.sum, row + ".centre_processor", "sum");
     w.add(c.count, row + ".centre_processor", "count");
+  }
+  if (!w.enabled()) return;
+  for (const TracePixel& p : pixels) {
+    pixel_probes_.push_back({p, std::make_unique<bool>(false)});
+    w.add(*pixel_probes_.back().active, top + ".pixel_" + std::to_string(p.row) + "_" + std::to_string(p.column),
+          "active");
   }
 }
 
@@ -189,7 +196,7 @@ SensorRunResult run_sensor_systemc(const LsConventionalConfig& config, const Sen
   bench.dut.stop_after(run.frames);
   if (run.progress) bench.dut.on_frame(run.progress);
   Waveform wave(run.vcd_base);
-  bench.dut.trace(wave, run.traced_rows);
+  bench.dut.trace(wave, run.traced_rows, run.traced_pixels);
   const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
   const sc_core::sc_time period = bench.clk.period();
   try {

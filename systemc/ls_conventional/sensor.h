@@ -16,8 +16,10 @@
 // can stop the simulation after a number of frame accesses.
 #include <functional>
 #include <string>
+#include <memory>
 #include <systemc>
 
+#include "systemc/common/simulate_entry.h"
 #include "systemc/common/waveform.h"
 #include <vector>
 
@@ -48,7 +50,9 @@ class LsConventionalSensor : public sc_core::sc_module {
   // Must be called before sc_start (plain SystemC signals, no Verilated model here).
   // The sequencer and, for each of `rows`, its address search and centre processor, in the
   // scopes ls_conventional.sequencer and ls_conventional.row<r>.<block>.
-  void trace(Waveform& w, const std::vector<int>& rows) const;
+  // `pixels`: the comparator output of each, as latched into its row's activation at every edge,
+  // in ls_conventional.pixel_<r>_<c>.active (kept only for these pixels).
+  void trace(Waveform& w, const std::vector<int>& rows, const std::vector<TracePixel>& pixels = {});
 
   const std::vector<FrameResult>& results() const { return results_; }
   long long cycles() const { return cycle_; }                            // since reset release
@@ -78,6 +82,11 @@ class LsConventionalSensor : public sc_core::sc_module {
   long long stop_after_ = 0;
   std::function<void(long long)> on_frame_;
   sc_core::sc_time release_time_;
+  struct PixelProbe {
+    TracePixel at;
+    std::unique_ptr<bool> active;  // traced by reference: fixed storage
+  };
+  std::vector<PixelProbe> pixel_probes_;  // traced pixels (updated at every edge)
 };
 
 // ---- Running the sensor: bare kernel or SystemC, same options, same results ----
@@ -87,6 +96,7 @@ struct SensorRunOptions {
   long long cycle_budget = 0;               // bound on simulated cycles (0: 2 frame accesses per frame + 16)
   std::string vcd_base;                     // SystemC only: "" = no trace, else writes <vcd_base>.vcd
   std::vector<int> traced_rows;             // rows whose search and centre pins are traced
+  std::vector<TracePixel> traced_pixels;    // pixels whose comparator output is traced
   std::function<void(long long)> progress;  // after each frame access (frames done so far)
 };
 

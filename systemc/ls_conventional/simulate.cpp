@@ -59,6 +59,10 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
     if (r < 0 || r >= cfg.pixel.rows)
       throw UserError(
           fmt::format("--trace-rows {}: allowed 0..{} (pixel.rows = {})", r, cfg.pixel.rows - 1, cfg.pixel.rows));
+  check_trace_pixels(req.trace_pixels, 0, cfg.pixel.rows, 0, cfg.pixel.columns,
+                     fmt::format("the pixel array of {} x {}", cfg.pixel.rows, cfg.pixel.columns));
+  run.traced_pixels = req.trace_pixels;
+  if (run.traced_pixels.empty()) run.traced_pixels.push_back({cfg.pixel.rows / 2, cfg.pixel.columns / 2});
   run.progress = host.progress("frame access", frames);
   const StimulusSource source = [&optics](std::uint64_t f, FrameStimulus& s) { optics.stimulus(f, s); };
   SensorRunResult res =
@@ -263,7 +267,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_conventional_simulate_entry() {
-  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false, true};
+  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false, true, true};
   return e;
 }
 

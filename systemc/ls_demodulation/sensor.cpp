@@ -45,6 +45,10 @@ void DemodSensor::on_clock() {
   search_start_o.write(kernel_.phase() == DemodPhase::RowReadout && kernel_.phase_cycle() == 1);
   addr_valid_o.write(pins.addr_valid);
   addr_bit_o.write(pins.addr_bit);
+  for (PixelProbe& p : pixel_probes_) {
+    const DemodPixelKernel& px = kernel_.pixel(p.at.row, p.at.column);
+    p.out_V[0] = px.plus_V(), p.out_V[1] = px.minus_V();
+  }
   if (!kernel_.frame_done()) return;
   const DemodFrameResult& r = kernel_.result();
   if (r.cycles != kernel_.frame_cycles())
@@ -62,7 +66,7 @@ void DemodSensor::on_clock() {
   kernel_.start_frame(next, stim_);
 }
 
-void DemodSensor::trace(Waveform& w) const {
+void DemodSensor::trace(Waveform& w, const std::vector<TracePixel>& pixels) {
   Waveform::ValueNames phases;
   for (int p = 0; p <= static_cast<int>(DemodPhase::Done); ++p)
     phases.push_back({p, to_string(static_cast<DemodPhase>(p))});
@@ -81,11 +85,18 @@ void DemodSensor::trace(Waveform& w) const {
   w.add(row_valid_o, ro, "row_valid");
   w.add(row_detections_o, ro, "row_detections");
   w.add(row_centre_px_o, ro, "row_centre_px");
+  if (!w.enabled()) return;
+  for (const TracePixel& p : pixels) {
+    pixel_probes_.push_back({p, std::make_unique<double[]>(2)});
+    const std::string scope = top + ".pixel_" + std::to_string(p.row) + "_" + std::to_string(p.column);
+    w.add(pixel_probes_.back().out_V[0], scope, "out_plus_V");
+    w.add(pixel_probes_.back().out_V[1], scope, "out_minus_V");
+  }
 }
 
 DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt,
                                  const DemodStimulusSource& source, long long frames, const std::string& vcd_base,
-                                 const DemodProgress& progress) {
+                                 const DemodProgress& progress, const std::vector<TracePixel>& traced) {
   const auto t0 = std::chrono::steady_clock::now();
   const double period_s = 1.0 / cfg.readout.clock_Hz;
   const long long err0 = static_cast<long long>(sc_core::sc_report_handler::get_count(sc_core::SC_ERROR));
@@ -117,7 +128,7 @@ DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKer
   const double budget_s = (static_cast<double>(frames) + 1) * static_cast<double>(dut.frame_cycles()) * period_s;
   if (!vcd_base.empty()) sc_core::sc_start(sc_core::SC_ZERO_TIME);  // tracing only after the zero-time start
   Waveform wave(vcd_base);
-  dut.trace(wave);
+  dut.trace(wave, traced);
   try {
     sc_core::sc_start(sc_core::sc_time(budget_s, sc_core::SC_SEC));
   } catch (...) {

@@ -6,8 +6,10 @@
 // It also checks each frame's length against the schedule (SC_REPORT_ERROR on a mismatch).
 #include <cstdint>
 #include <string>
+#include <memory>
 #include <systemc>
 
+#include "systemc/common/simulate_entry.h"
 #include "systemc/common/waveform.h"
 
 #include "systemc/ls_demodulation/sensor_kernel.h"
@@ -43,7 +45,8 @@ class DemodSensor : public sc_core::sc_module {
   sc_core::sc_time span_end() const { return span_end_; }  // end of the last clock cycle simulated
   // Adds the clock and every pin to a trace file (call before sc_start). With event skipping the
   // pins change only at the edges the kernel stops at; --tick shows every address bit.
-  void trace(Waveform& w) const;  // scopes ls_demodulation.{sequencer,readout}
+  // `pixels`: each one's correlator outputs V_out+ and V_out- (ls_demodulation.pixel_<r>_<c>).
+  void trace(Waveform& w, const std::vector<TracePixel>& pixels = {});  // scopes ls_demodulation.{sequencer,readout}
 
  private:
   void on_clock();
@@ -57,6 +60,11 @@ class DemodSensor : public sc_core::sc_module {
   bool event_skipping_;                    // jump edges (advance) or tick every edge
   sc_core::sc_time period_;                // clock period
   sc_core::sc_time span_end_;              // end of the last cycle the kernel has simulated
+  struct PixelProbe {
+    TracePixel at;
+    std::unique_ptr<double[]> out_V;  // V_out+, V_out- (traced by reference: fixed storage)
+  };
+  std::vector<PixelProbe> pixel_probes_;  // traced pixels (updated at every edge the kernel stops at)
 };
 
 // Elaborates a clock and DemodSensor, runs `frames` frames (bounded by a time budget of one frame
@@ -66,6 +74,6 @@ class DemodSensor : public sc_core::sc_module {
 // each finished frame.
 DemodRunResult run_demod_systemc(const LsDemodulationConfig& cfg, const DemodKernelOptions& opt,
                                  const DemodStimulusSource& source, long long frames, const std::string& vcd_base = "",
-                                 const DemodProgress& progress = {});
+                                 const DemodProgress& progress = {}, const std::vector<TracePixel>& traced = {});
 
 }  // namespace rangesim::systemc

@@ -113,6 +113,7 @@ class DemodSensorKernel {
   int decision() const { return decision_; }              // decision index within the frame
   long long phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
   bool mpy_plus() const;                                  // integration: MPY+ (C1) selected at this cycle
+  const DemodPixelKernel& pixel(int r, int c) const { return pixels_[static_cast<std::size_t>(r) * columns_ + c]; }
 
   const LsDemodulationConfig& config() const { return cfg_; }
   const DemodWindowSchedule& schedule() const { return sched_; }

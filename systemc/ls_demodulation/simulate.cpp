@@ -48,6 +48,14 @@ DemodKernelOptions kernel_options(const SimulationRequest& req) {
   return kopt;
 }
 
+// --trace-pixels inside the array (or a UserError), by default the centre pixel.
+std::vector<TracePixel> traced_pixels(const SimulationRequest& req, const LsDemodulationConfig& cfg) {
+  check_trace_pixels(req.trace_pixels, 0, cfg.pixel.rows, 0, cfg.pixel.columns,
+                     fmt::format("the pixel array of {} x {}", cfg.pixel.rows, cfg.pixel.columns));
+  if (!req.trace_pixels.empty()) return req.trace_pixels;
+  return {{cfg.pixel.rows / 2, cfg.pixel.columns / 2}};
+}
+
 DemodRunResult run_model(const SimulationRequest& req, const ParamSet& params, const LsDemodulationConfig& cfg,
                          const DemodKernelOptions& kopt, const scene::DemodOptics& optics, long long frames,
                          const std::string& vcd_base, SimulationHost& host) {
@@ -56,7 +64,7 @@ DemodRunResult run_model(const SimulationRequest& req, const ParamSet& params, c
   DemodRunResult res;
   try {
     res = req.kernel_only ? run_demod_kernel(cfg, kopt, source, frames, on_frame)
-                          : run_demod_systemc(cfg, kopt, source, frames, vcd_base, on_frame);
+                          : run_demod_systemc(cfg, kopt, source, frames, vcd_base, on_frame, traced_pixels(req, cfg));
   } catch (const std::invalid_argument& e) {
     throw UserError(fmt::format("{}: {}", params.origin(), e.what()));
   }
@@ -266,7 +274,7 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_demodulation_simulate_entry() {
-  static const SimulateEntry e{"ls-demodulation", &simulate_ls_demodulation, true, false, false};
+  static const SimulateEntry e{"ls-demodulation", &simulate_ls_demodulation, true, false, false, true};
   return e;
 }
 

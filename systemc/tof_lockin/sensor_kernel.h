@@ -66,6 +66,8 @@ class TofLockinSensorKernel {
   int rows() const { return rows_; }
   int columns() const { return cols_; }
   const TofLockinConfig& config() const { return cfg_; }
+  // Pixel (r, c) of the simulated window, for tracing its floating diffusions.
+  const LockinPixelKernel& pixel(int r, int c) const { return pixels_[static_cast<std::size_t>(r) * cols_ + c]; }
 
  private:
   void begin_frame();

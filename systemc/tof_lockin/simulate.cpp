@@ -65,6 +65,14 @@ struct ModelRun {
   double sim_wall_s = 0;
 };
 
+// --trace-pixels inside the simulated window, or by default its centre pixel and first pixel.
+std::vector<TracePixel> traced_pixels(const SimulationRequest& req, int R, int C) {
+  if (!req.trace_pixels.empty()) return req.trace_pixels;
+  std::vector<TracePixel> p{{R / 2, C / 2}};
+  if (R / 2 != 0 || C / 2 != 0) p.push_back({0, 0});
+  return p;
+}
+
 ModelRun run_model(const SimulationRequest& req, const TofLockinConfig& cfg, const lk::LockinSimOptions& kopt,
                    const lk::LockinScene& sc, long long frames, const golden::FrameTiming& gt,
                    const std::string& vcd_base, SimulationHost& host) {
@@ -81,9 +89,9 @@ ModelRun run_model(const SimulationRequest& req, const TofLockinConfig& cfg, con
     m.k = m.owned.get();
   } else {
     lk::TofLockinSensor* mod = nullptr;
-    const lk::LockinScRun r = lk::run_tof_lockin_systemc(mod, cfg, kopt, R, C, sc.stimulus(cfg), frames,
-                                                         1.01 * gt.frame_time_s * static_cast<double>(frames) + 1e-6,
-                                                         vcd_base.empty() ? "" : vcd_base + ".vcd");
+    const lk::LockinScRun r = lk::run_tof_lockin_systemc(
+        mod, cfg, kopt, R, C, sc.stimulus(cfg), frames, 1.01 * gt.frame_time_s * static_cast<double>(frames) + 1e-6,
+        vcd_base.empty() ? "" : vcd_base + ".vcd", traced_pixels(req, R, C));
     m.sc_errors = r.sc_errors;
     m.sim_time_s = r.end_time_s;
     m.k = &mod->kernel();
@@ -309,6 +317,7 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
     lk::LockinGateGeneratorKernel check(cfg);
   }  // T_rep on the gate-clock grid, or UserError before anything is written
   const int R = sc.window_rows(cfg), C = sc.window_columns(cfg);
+  check_trace_pixels(req.trace_pixels, 0, R, 0, C, fmt::format("the scene's window of {} x {} pixels", R, C));
   // Two ADC codes and two inputs per pixel and frame are kept, with each pixel's state.
   host.check_memory(static_cast<double>(R) * C * (32.0 * static_cast<double>(frames) + 512),
                     fmt::format("{} x {} pixels x {} frames, two taps each", R, C, frames),
@@ -339,7 +348,7 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
 }  // namespace
 
 const SimulateEntry& tof_lockin_simulate_entry() {
-  static const SimulateEntry e{"tof-lockin", &simulate_tof_lockin, true, true, false};
+  static const SimulateEntry e{"tof-lockin", &simulate_tof_lockin, true, true, false, true};
   return e;
 }
 

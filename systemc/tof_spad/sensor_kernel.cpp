@@ -67,7 +67,8 @@ int TofSpadKernel::phase_bin(double phase_s) const {
   return i;
 }
 
-GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const {
+GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates,
+                                             const HitObserver* observer) const {
   if (!opt_.event_skipping) return simulate_group_ticked(frame, row, group, rates);
   if (opt_.sparse)
     if (auto g = simulate_group_background(frame, row, group, rates)) return *g;
@@ -98,7 +99,8 @@ GroupHistogram TofSpadKernel::simulate_group(std::uint64_t frame, int row, int g
       continue;
     }  // jittered before the first START
     if (t.cycle >= laser_cycles_) break;
-    tdc.hit(who, t.cycle, phase_bin(t.offset_s));  // cycle and offset: exact at any integration time
+    const TdcHit hit = tdc.hit(who, t.cycle, phase_bin(t.offset_s));  // cycle and offset: exact at any integration time
+    if (observer) (*observer)(who, hit);
   }
   GroupHistogram g = tdc.finish();
   for (const auto& p : px) g.avalanches += p.avalanches(), g.photons += p.photons();

@@ -14,6 +14,7 @@
 #include "golden/tof_spad/estimator.h"
 #include "golden/tof_spad/tdc_bins.h"
 #include "systemc/tof_spad/pixel_kernel.h"
+#include "systemc/tof_spad/tdc_kernel.h"
 
 namespace rangesim::systemc::spad {
 
@@ -76,7 +77,12 @@ class TofSpadKernel {
 
   // One TDC group over one row integration: event driven (jumps from avalanche to avalanche), or
   // with event_skipping off simulate_group_ticked.
-  GroupHistogram simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates) const;
+  // `observer` (may be null) sees every timed avalanche the TDC arbitrates, in time order, with
+  // its column in the group; only the per-cycle path has them (the aggregated and sparse paths
+  // draw the histogram at once: GroupHistogram::aggregated / background_class).
+  using HitObserver = std::function<void(int who, const TdcHit& hit)>;
+  GroupHistogram simulate_group(std::uint64_t frame, int row, int group, const RateSource& rates,
+                                const HitObserver* observer = nullptr) const;
   // The same group clocked cycle by cycle (one TDC clock = one coarse phase bin): in every cycle
   // the TDC's arm state is sampled and counted into the armed histogram, and the avalanches whose
   // code falls in that cycle are arbitrated. Same streams, same draws: tests require a histogram

@@ -58,6 +58,12 @@ sp::TofSpadKernelOptions kernel_options(const SimulationRequest& req) {
   return kopt;
 }
 
+// --trace-pixels, or by default the centre pixel of the simulated window.
+std::vector<TracePixel> traced_pixels(const SimulationRequest& req, const scene::SpadScene& sc) {
+  if (!req.trace_pixels.empty()) return req.trace_pixels;
+  return {{sc.first_row + sc.rows / 2, sc.first_column + sc.columns / 2}};
+}
+
 sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& kernel, const scene::SpadScene& sc,
                          int columns_per_tdc, long long frames, const std::string& vcd_base, SimulationHost& host,
                          double& sim_wall_s) {
@@ -69,8 +75,13 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
   const auto t_sim = Clock::now();
   sp::SystemcRun res = req.kernel_only
                            ? sp::run_tof_spad_kernel(kernel, sel, rates, frames, host.progress("frame", frames))
-                           : sp::run_tof_spad_systemc(kernel, sel, rates, frames, vcd_base);
+                           : sp::run_tof_spad_systemc(kernel, sel, rates, frames, vcd_base, traced_pixels(req, sc));
   sim_wall_s = std::chrono::duration<double>(Clock::now() - t_sim).count();
+  if (res.traced_groups_drawn_at_once > 0)
+    fmt::print(stderr,
+               "rangesim simulate: note: --trace: {} traced TDC group row(s) were drawn at once (aggregated or "
+               "background class), so their avalanches are not in the waveform; --no-aggregate --dense shows each\n",
+               res.traced_groups_drawn_at_once);
   if (res.sc_errors > 0)
     throw std::runtime_error(
         fmt::format("the model reported {} SystemC error(s): see the messages above", res.sc_errors));
@@ -286,6 +297,10 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
   scene::SpadScene sc = scene::load_spad_scene(req.scene, c.cfg, c.array_rows, c.array_columns, &radiometry);
   fmt::print(stderr, "{}", scene::notes_text(sc.notes, "simulate"));
   if (req.dense) sc.first_row = 0, sc.rows = c.array_rows, sc.first_column = 0, sc.columns = c.array_columns;
+  check_trace_pixels(
+      req.trace_pixels, sc.first_row, sc.rows, sc.first_column, sc.columns,
+      fmt::format("the simulated pixels: rows {}..{}, columns {}..{}; --dense simulates all", sc.first_row,
+                  sc.first_row + sc.rows - 1, sc.first_column, sc.first_column + sc.columns - 1));
   const sp::TofSpadKernelOptions kopt = kernel_options(req);
   const sp::TofSpadKernel kernel(c.cfg, c.array_rows, c.array_columns, kopt);
   const int codes = kernel.codes();
@@ -322,7 +337,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
 }  // namespace
 
 const SimulateEntry& tof_spad_simulate_entry() {
-  static const SimulateEntry e{"tof-spad", &simulate_tof_spad, true, false, false};
+  static const SimulateEntry e{"tof-spad", &simulate_tof_spad, true, false, false, true};
   return e;
 }
 

@@ -313,3 +313,82 @@ TEST(SimulateTrace, TraceRowsChooseTheRowsShown) {
   EXPECT_NE(spad.err.find("allowed with ls-conventional"), std::string::npos) << spad.err;
   fs::remove_all(dir);
 }
+
+// --trace-pixels: each sensor shows the chosen pixels' own signals; the tof-spad trace shows every
+// timed avalanche of the pixel's TDC group with its code and the histogram write it caused; a
+// traced run gives the untraced run's range map; a pixel outside the window is refused naming it
+// and leaves nothing behind.
+TEST(SimulateTrace, TracePixelsShowEachSensorsPixelSignals) {
+  const std::string dir = make_temp_dir();
+  struct Case {
+    const char *sensor, *scene, *pixel;
+    std::vector<std::string> signals;
+  };
+  const std::vector<Case> cases = {
+      {"ls-conventional", "plane.toml", "182:187", {"ls_conventional.pixel_182_187.active"}},
+      {"ls-demodulation", "ls-demodulation-plane.toml", "55:60", {"ls_demodulation.pixel_55_60.out_plus_V"}},
+      {"tof-lockin",
+       "tof-lockin-step.toml",
+       "5:7",
+       {"tof_lockin.pixel_5_7.adc_code1", "tof_lockin.pixel_5_7.fd2_e", "tof_lockin.column_adc_7.code2",
+        "tof_lockin.sequencer.gate_cycles"}},
+      {"tof-spad",
+       "tof-spad-step.toml",
+       "64:65",
+       {"tof_spad.tdc_16.hit", "tof_spad.tdc_16.code", "tof_spad.tdc_16.result", "tof_spad.pixel_64_65.avalanche",
+        "tof_spad.histogram.write_count", "tof_spad.sequencer.laser_cycle"}},
+  };
+  for (const Case& c : cases) {
+    const std::string base = std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene +
+                             " --frames 2 --json --no-plots --out " + dir + "/" + c.sensor;
+    const CommandResult r = rangesim_cmd(base + " --trace " + dir + "/" + c.sensor + ".vcd --trace-pixels " + c.pixel);
+    ASSERT_EQ(r.exit_code, 0) << c.sensor << ": " << r.err;
+    const VcdFile v = read_vcd(dir + "/" + c.sensor + ".vcd");
+    ASSERT_TRUE(v.ok) << v.error;
+    for (const std::string& s : c.signals) EXPECT_TRUE(v.has(s)) << c.sensor << ": " << s;
+  }
+  // tof-lockin: the pixel's codes are its column ADC's codes of its row (written at its row).
+  const VcdFile lk = read_vcd(dir + "/tof-lockin.vcd");
+  ASSERT_TRUE(lk.ok) << lk.error;
+  const auto& code = lk.of("tof_lockin.pixel_5_7.adc_code1");
+  ASSERT_GE(code.size(), 2u);
+  for (std::size_t i = 1; i < code.size(); ++i)
+    EXPECT_EQ(code[i].second, lk.sample("tof_lockin.column_adc_7.code1", code[i].first));
+  EXPECT_GT(lk.of("tof_lockin.column_adc_7.code1").size(), 10u);  // one per converted row
+
+  // tof-spad: every write is an event of the hit at the same instant, with the hit's code, and the
+  // bin's counts rise by one per write.
+  const VcdFile sp = read_vcd(dir + "/tof-spad.vcd");
+  ASSERT_TRUE(sp.ok) << sp.error;
+  const std::vector<std::uint64_t> writes = sp.rising_edges("tof_spad.histogram.write");
+  ASSERT_GT(writes.size(), 10u);
+  for (std::uint64_t t : writes) {
+    EXPECT_EQ(sp.sample("tof_spad.tdc_16.result", t), 1u);
+    EXPECT_EQ(sp.sample("tof_spad.tdc_16.code", t), sp.sample("tof_spad.histogram.write_code", t));
+    EXPECT_EQ(sp.sample("tof_spad.tdc_16.hit_column", t), sp.sample("tof_spad.histogram.write_column", t));
+  }
+  EXPECT_FALSE(sp.rising_edges("tof_spad.pixel_64_65.avalanche").empty());
+  const CommandResult plain =
+      rangesim_cmd(std::string("simulate tof-spad --scene ") + kScenes +
+                   "/tof-spad-step.toml --frames 2 --json --no-plots --csv --out " + dir + "/plain");
+  const CommandResult traced = rangesim_cmd(std::string("simulate tof-spad --scene ") + kScenes +
+                                            "/tof-spad-step.toml --frames 2 --json --no-plots --csv --out " + dir +
+                                            "/traced --trace " + dir + "/t2.vcd --trace-pixels 64:65");
+  ASSERT_EQ(traced.exit_code, 0) << traced.err;
+  std::ifstream a(dir + "/plain/range_map.csv"), b(dir + "/traced/range_map.csv");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+
+  const std::string lockin = "simulate tof-lockin --scene " + kScenes + "/tof-lockin-step.toml --out " + dir + "/bad";
+  const CommandResult outside = rangesim_cmd(lockin + " --trace " + dir + "/new/b.vcd --trace-pixels 300:7");
+  EXPECT_EQ(outside.exit_code, 2);
+  EXPECT_NE(outside.err.find("--trace-pixels 300:7: allowed rows 0..251, columns 0..335"), std::string::npos)
+      << outside.err;
+  EXPECT_FALSE(fs::exists(dir + "/new") || fs::exists(dir + "/bad"));
+  const CommandResult malformed = rangesim_cmd(lockin + " --trace " + dir + "/b.vcd --trace-pixels 3-7");
+  EXPECT_EQ(malformed.exit_code, 2);
+  EXPECT_NE(malformed.err.find("is not ROW:COLUMN"), std::string::npos) << malformed.err;
+  const CommandResult untraced = rangesim_cmd(lockin + " --trace-pixels 3:7");
+  EXPECT_EQ(untraced.exit_code, 2);
+  EXPECT_NE(untraced.err.find("add --trace"), std::string::npos) << untraced.err;
+  fs::remove_all(dir);
+}
