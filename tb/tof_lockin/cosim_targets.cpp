@@ -2,17 +2,30 @@
 #include "tb/common/cosim_target.h"
 #include "tb/common/rtl_build.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
+#include "tb/common/rtl_tops.h"
 
 namespace rangesim::tb {
 namespace {
 CosimReport gate_generator(const CosimOptions& o) { return run_lockin_gate_generator_cosim(o); }
 CosimReport column_adc(const CosimOptions& o) { return run_column_adc_cosim(o); }
+
+// `rangesim cosim <tof-lockin preset>`: the readout (sequencer + column ADC bank) with the
+// preset's timing as run-time inputs; the Verilog parameters are the counter widths, checked
+// against the preset.
+RtlBuildSpec preset_readout(const ParamSet& preset) {
+  return {"tof_lockin",
+          "tof_lockin_readout",
+          rtl_top_parameters(preset, "tof_lockin_readout"),
+          "tb/tof_lockin/cosim_harness.h",
+          "rangesim::tb::run_tof_lockin_preset",
+          {}};
+}
 }  // namespace
 
 std::vector<CosimTarget> tof_lockin_cosim_targets() {
   return {
       {"tof-lockin",
-       "tof-lockin frame sequencer + gate generator + column ADCs vs the tick-mode sensor kernel; "
+       "tof-lockin readout (frame sequencer + gate generator + column ADCs) vs the tick-mode sensor kernel; "
        "ranges (eq. 2.25) from RTL codes vs the kernel's",
        {"gate_shift", "adc_code_off_by_one"},
        &run_tof_lockin_cosim},
@@ -27,7 +40,8 @@ std::vector<CosimTarget> tof_lockin_cosim_targets() {
   };
 }
 
-// No co-simulation at a preset's own parameters yet.
-std::vector<PresetCosim> tof_lockin_preset_cosims() { return {}; }
+std::vector<PresetCosim> tof_lockin_preset_cosims() {
+  return {{"tof-lockin", "tof-lockin", "rtl/tof_lockin/instances/readout.toml", &preset_readout}};
+}
 
 }  // namespace rangesim::tb
