@@ -7,7 +7,7 @@
 // verilated at run time for a preset or a user's RTL (tb/common/rtl_build.h).
 //
 // Per cycle: phase, gate pins, light, row, frame and busy of the sequencer against the kernel's
-// state before its step. Transactions: phase boundaries (phase, cycle), the ADC code of every
+// state before its step, and in conversion cycle c every ADC's ramp code min(c, 2^bits - 1). Transactions: phase boundaries (phase, cycle), the ADC code of every
 // (frame, row, column, tap) when the row's conversion ends, and the kernel's ADC inputs against
 // a look-ahead run. Golden checks: eq. 2.25 applied to the RTL codes (golden::max_range_m) gives
 // the kernel's range of every pixel and range map, NaN where the kernel rejects the pixel.
@@ -68,6 +68,7 @@ struct Expected {
   bool busy = false, tx1 = false, tx2 = false, txd = false, light = false;
   int row = 0;
   long long frame = 0;
+  long long ramp = 0;  // every ADC's ramp code (0 outside a conversion)
 };
 
 // VTop: rtl/tof_lockin/tof_lockin_readout.sv verilated with the parameters of
@@ -159,8 +160,10 @@ class LockinCosimTop : public sc_core::sc_module {
     w.add(e_.light, "sequencer", "light");
     w.add(e_.row, "sequencer", "row");
     w.add(e_.frame, "sequencer", "frame");
-    for (int i = 0; i < channels_; ++i)
+    for (int i = 0; i < channels_; ++i) {
+      w.add(e_.ramp, "adc" + std::to_string(i), "ramp");
       w.add(expected_code_[static_cast<std::size_t>(i)], "adc" + std::to_string(i), "code");
+    }
   }
 
   long long cycle_bound() const {
@@ -261,8 +264,17 @@ class LockinCosimTop : public sc_core::sc_module {
     const bool e_txd = !fresh && gating && kernel_.gates().txd();
     const long long f = run ? kernel_.frame() : -1;
     const long long rrow = gating || !run ? 0 : kernel_.readout_row();
-    e_ = {static_cast<int>(ph), run, e_tx1, e_tx2, e_txd, e_tx1 && run && kernel_.led_on(), static_cast<int>(rrow),
-          run ? f : 0};
+    const bool converting = run && ph == LockinPhase::AdcConversion;
+    conversion_cycle_ = !converting ? -1 : prev_phase_ == LockinPhase::AdcConversion ? conversion_cycle_ + 1 : 0;
+    e_ = {static_cast<int>(ph),
+          run,
+          e_tx1,
+          e_tx2,
+          e_txd,
+          e_tx1 && run && kernel_.led_on(),
+          static_cast<int>(rrow),
+          run ? f : 0,
+          converting ? std::min<long long>(conversion_cycle_, adc_.top_code()) : 0};
 
     bool a_tx2 = tx2.read();
     if (o_.inject_fault == "gate_shift" && run && gating && !fresh && f == 0 &&
@@ -309,7 +321,8 @@ class LockinCosimTop : public sc_core::sc_module {
     // ADC codes of the row whose conversion ended in the previous cycle.
     if (run && ph == LockinPhase::Output && prev_phase_ == LockinPhase::AdcConversion) check_codes(cycle);
     prev_phase_ = ph;
-    drive_comparators(run && ph == LockinPhase::AdcConversion, f, static_cast<int>(rrow));
+    if (converting) check_ramps(f, static_cast<int>(rrow), cycle);
+    drive_comparators(converting, f, static_cast<int>(rrow));
     // Advance the model as the RTL does at the coming edge.
     if (run) kernel_.step();
     if (!started_ && start.read() && !rst.read()) started_ = true;
@@ -330,6 +343,17 @@ class LockinCosimTop : public sc_core::sc_module {
     PortData<decltype(rtl.cmp_i)> c{};
     port_from_words(words, c);
     cmp.write(c);
+  }
+
+  // Every ADC's ramp code in cycle c of a conversion: min(c, 2^bits - 1) (docs/rtl-contract.md).
+  void check_ramps(long long f, int rrow, std::uint64_t cycle) {
+    const PortData<decltype(rtl.ramp_o)> ramps = ramp.read();
+    for (int i = 0; i < channels_; ++i) {
+      const long long got = channel_field(ramps, i);
+      if (got != e_.ramp)
+        sb_.mismatch(i % 2 == 0 ? "ramp_o tap1" : "ramp_o tap2", f, rrow, i / 2, cycle, std::to_string(e_.ramp),
+                     std::to_string(got));
+    }
   }
 
   void check_codes(std::uint64_t cycle) {
@@ -361,7 +385,8 @@ class LockinCosimTop : public sc_core::sc_module {
   TofLockinSensorKernel kernel_;  // reference, stepped once per cycle
   TofLockinSensorKernel ahead_;   // same run, finished up front (drives the comparators)
   ColumnAdcKernel adc_;
-  int channels_ = 0;  // ADC channels in use: 2 x columns
+  int channels_ = 0;                 // ADC channels in use: 2 x columns
+  long long conversion_cycle_ = -1;  // cycle of the current conversion (-1: none)
   bool started_ = false;  // start_i seen: the kernel steps from the next cycle
   std::uint64_t cycle_ = 0;
   bool prev_tx2_ = false;  // RTL tx2 of the previous cycle (fault injection)
@@ -401,8 +426,20 @@ CosimReport run_tof_lockin_preset(const ParamSet& preset, const CosimOptions& o)
                                       shape, preset_target_name(preset));
 }
 
+// `rangesim cosim tof-lockin --rtl FILE.sv` (the built-in target with a user's RTL, run on its
+// instance preset): timings drawn from their ranges as the built-in target draws them
+// (random_tof_lockin_setup without a preset), within the preset's counter widths.
+template <class VTop>
+CosimReport run_tof_lockin_builtin(const ParamSet& preset, const CosimOptions& o) {
+  const TofLockinRtlShape shape = tof_lockin_rtl_shape(tof_lockin_from_params(preset), preset.origin());
+  std::mt19937_64 rng(o.seed);
+  return run_tof_lockin_harness<VTop>(o, random_tof_lockin_setup(o.cycles, o.seed, rng), shape,
+                                      preset_target_name(preset));
+}
+
 }  // namespace tof_lockin_harness
 
+using tof_lockin_harness::run_tof_lockin_builtin;
 using tof_lockin_harness::run_tof_lockin_harness;
 using tof_lockin_harness::run_tof_lockin_preset;
 
