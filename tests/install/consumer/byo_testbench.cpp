@@ -15,6 +15,10 @@
 #include "tb/common/cosim_coverage.h"
 #include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
+#include "tb/ls_conventional/stimulus.h"
+#include "tb/ls_demodulation/stimulus.h"
+#include "tb/tof_lockin/stimulus.h"
+#include "tb/tof_spad/stimulus.h"
 
 namespace {
 
@@ -85,6 +89,12 @@ int sc_main(int, char*[]) {
   std::printf("byo testbench: %d operations, %llu transactions, %llu mismatches, line coverage %.1f %%\n", kOperations,
               static_cast<unsigned long long>(top.report.transactions),
               static_cast<unsigned long long>(top.report.mismatches), cov.line_percent());
+  // Every sensor's generator is installed with the kit: one tof-lockin readout setup, as the
+  // built-in target draws it at --seed 1.
+  std::mt19937_64 rng(1);
+  const rangesim::tb::TofLockinSetup lockin = rangesim::tb::random_tof_lockin_setup(20000, 1, rng);
+  std::printf("kit generator: tof-lockin setup %d x %d pixels, %d-bit ADC, %lld frames\n", lockin.cfg.pixel.rows,
+              lockin.cfg.pixel.columns, lockin.cfg.readout.adc_bits, lockin.frames);
   for (const auto& m : top.report.first_mismatches)
     std::printf("  %s\n", rangesim::tb::CosimScoreboard::format(m).c_str());
   return top.report.mismatches == 0 && top.report.transactions > kOperations ? 0 : 1;
