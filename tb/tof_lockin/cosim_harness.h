@@ -7,10 +7,11 @@
 // verilated at run time for a preset or a user's RTL (tb/common/rtl_build.h).
 //
 // Per cycle: phase, gate pins, light, row, frame and busy of the sequencer against the kernel's
-// state before its step, and in conversion cycle c every ADC's ramp code min(c, 2^bits - 1). Transactions: phase boundaries (phase, cycle), the ADC code of every
-// (frame, row, column, tap) when the row's conversion ends, and the kernel's ADC inputs against
-// a look-ahead run. Golden checks: eq. 2.25 applied to the RTL codes (golden::max_range_m) gives
-// the kernel's range of every pixel and range map, NaN where the kernel rejects the pixel.
+// state before its step, and in conversion cycle c every ADC's ramp code min(c, 2^bits - 1).
+// Transactions: phase boundaries (phase, cycle), the ADC code of every (frame, row, column, tap)
+// when the row's conversion ends, and the kernel's ADC inputs against a look-ahead run. Golden
+// checks: eq. 2.25 applied to the RTL codes (golden::max_range_m) gives the kernel's range of every
+// pixel and range map, NaN where the kernel rejects the pixel.
 //
 // The analog side: the ADC inputs of a row are known only at the end of the kernel's
 // conversion, so a look-ahead kernel with the same configuration and seed runs the whole
@@ -387,7 +388,7 @@ class LockinCosimTop : public sc_core::sc_module {
   ColumnAdcKernel adc_;
   int channels_ = 0;                 // ADC channels in use: 2 x columns
   long long conversion_cycle_ = -1;  // cycle of the current conversion (-1: none)
-  bool started_ = false;  // start_i seen: the kernel steps from the next cycle
+  bool started_ = false;             // start_i seen: the kernel steps from the next cycle
   std::uint64_t cycle_ = 0;
   bool prev_tx2_ = false;  // RTL tx2 of the previous cycle (fault injection)
   LockinPhase prev_phase_ = LockinPhase::Idle;

@@ -212,11 +212,11 @@ class GateCosimTop : public sc_core::sc_module {
   std::uint64_t cycle_ = 0;                          // cycles seen by the monitor
   long long op_ = 0;                                 // operations completed by the model
   long long ops_started_ = 0;
-  bool prev_tx2_ = false;       // RTL tx2 of the previous cycle (fault injection)
-  bool was_[2][4] = {};         // gate levels of the previous cycle, model / RTL
-  std::vector<Edge> edges_[2];  // gate edges, model / RTL
-  std::size_t matched_ = 0;     // edges compared so far
-  std::ofstream record_;        // Icarus replay file
+  bool prev_tx2_ = false;                             // RTL tx2 of the previous cycle (fault injection)
+  bool was_[2][4] = {};                               // gate levels of the previous cycle, model / RTL
+  std::vector<Edge> edges_[2];                        // gate edges, model / RTL
+  std::size_t matched_ = 0;                           // edges compared so far
+  std::ofstream record_;                              // Icarus replay file
   Pins e_{false, false, false, false, false, false};  // the kernel's pins of this cycle (trace)
 };
 

@@ -57,8 +57,8 @@ inline TofSpadSetup random_tof_spad_setup(const TofSpadConfig& base, std::mt1993
 // Rows of random setups (seeded with `seed`) until `cycles` are covered, the timing of the first;
 // past `max_rows` the integration gets longer instead (more laser cycles per row). `cpt`: the
 // group's columns (tdc.columns_per_tdc of base).
-inline TofSpadSetup random_tof_spad_rows(const TofSpadConfig& base, int cpt, long long max_rows,
-                                         std::uint64_t cycles, std::uint64_t seed, bool high_rates) {
+inline TofSpadSetup random_tof_spad_rows(const TofSpadConfig& base, int cpt, long long max_rows, std::uint64_t cycles,
+                                         std::uint64_t seed, bool high_rates) {
   std::mt19937_64 rng(seed);
   TofSpadSetup s = random_tof_spad_setup(base, rng, high_rates);
   const systemc::spad::TofSpadKernel k(s.cfg, 1, cpt, {});

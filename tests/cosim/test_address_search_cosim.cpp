@@ -129,6 +129,6 @@ TEST(AddressSearchCosim, WritesOneWaveformWithBothViews) {
   std::ifstream f(o.trace_path);
   std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("$scope module cosim.rtl $end"), std::string::npos);  // the RTL (Verilator)
-  EXPECT_NE(text.find("$scope module expected $end"), std::string::npos);  // the model beside it
+  EXPECT_NE(text.find("$scope module expected $end"), std::string::npos);   // the model beside it
   EXPECT_NE(text.find("addr_bit"), std::string::npos);
 }
