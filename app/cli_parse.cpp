@@ -438,8 +438,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       "Co-simulate RTL (verilated) against the clock-level model and, where exact, the golden model on\n"
       "random stimulus; report cycles, transactions, mismatches (frame, row, column, cycle, expected,\n"
       "actual) and RTL line/toggle coverage. Targets: a sensor, a block, or 'all' (see --list).\n"
-      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (sensors whose\n"
-      "readout RTL is sized by the preset): its Verilog parameters come from the preset, the RTL is verilated\n"
+      "A preset file (.toml) co-simulates the RTL of that preset's own architecture (every sensor;\n"
+      "tof-lockin takes the preset's timing as run-time inputs): its Verilog parameters come from the\n"
+      "preset, the RTL is verilated\n"
       "and compiled at run time (needs verilator) and cached in $RANGESIM_RTL_CACHE (default\n"
       "$XDG_CACHE_HOME/rangesim/rtl, else ~/.cache/rangesim/rtl).\n"
       "--rtl FILE.sv co-simulates your own Verilog instead: its modules replace the rangesim blocks of\n"
@@ -458,7 +459,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   co->add_option("--seed", co_opt.seed,
                  "Seed of the stimulus and of Verilator's random initial state, 0..2^64-1 (default: 1)")
       ->transform(unsigned_in(0, kMaxU64));
-  co->add_option("--trace", co_opt.trace, "Write a VCD of the RTL run to this file ('all': FILE_<target>.vcd)")
+  co->add_option("--trace", co_opt.trace,
+                 "Write a VCD of the RTL run, with the model's expected values beside it under the scope\n"
+                 "'expected', to this file ('all': FILE_<target>.vcd)")
       ->check(kPath);
   co->add_option("--junit", co_opt.junit,
                  "Write a JUnit XML report (one testcase per target and scoreboard check) to this file")

@@ -53,7 +53,8 @@ if(TARGET rangesim_rtl)
   endforeach()
 endif()
 
-# The verification kit (tb/CMakeLists.txt: rangesim_cosim_kit): its headers, and rangesim's
+# The verification kit (tb/CMakeLists.txt: rangesim_cosim_kit): its headers with the stimulus
+# generators, and rangesim's
 # Verilog with its Verilator flags and instance presets, for a user's testbench to verilate or
 # to compare their own RTL with (docs/rtl-contract.md).
 if(TARGET rangesim_cosim_kit)
@@ -61,7 +62,15 @@ if(TARGET rangesim_cosim_kit)
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_scoreboard.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_run.h"
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_ports.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_target.h"
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_coverage.h" "${PROJECT_SOURCE_DIR}/tb/common/vcd_merge.h"
+    "${PROJECT_SOURCE_DIR}/tb/common/address_search_stimulus.h"
     DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/tb/common")
+  # The stimulus generators (header-only, one per sensor: tb/<sensor>/stimulus.h), the random
+  # scenes, rows and setups rangesim's own co-simulation draws.
+  foreach(_sensor ${RANGESIM_SENSORS})
+    if(EXISTS "${PROJECT_SOURCE_DIR}/tb/${_sensor}/stimulus.h")
+      install(FILES "${PROJECT_SOURCE_DIR}/tb/${_sensor}/stimulus.h" DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/tb/${_sensor}")
+    endif()
+  endforeach()
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/rtl/"
     DESTINATION "${CMAKE_INSTALL_DATADIR}/rangesim/rtl"
     FILES_MATCHING PATTERN "*.sv" PATTERN "*.vlt" PATTERN "*.f" PATTERN "*.toml")

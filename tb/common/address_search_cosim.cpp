@@ -20,8 +20,10 @@
 #include "Vaddress_search.h"
 #include "Vaddress_search_small.h"
 #include "core/ls_conventional/config.h"
-#include "core/ls_conventional/config.h"
+#include "tb/common/address_search_stimulus.h"
 #include "tb/common/cosim_coverage.h"
+#include "tb/common/cosim_run.h"
+#include "tb/common/cosim_scoreboard.h"
 #include "tb/common/instance_preset.h"
 #include "systemc/common/address_search.h"
 #include "tb/common/cosim_target.h"  // kKeptMismatches
@@ -34,28 +36,6 @@ using rangesim::systemc::AddressSearchPins;
 
 constexpr const char* kMsgType = "rangesim/cosim/address_search";
 constexpr int kResetCycles = 3;  // rst high; before its first edge the RTL state is random
-
-// A laser sheet lights a narrow run of columns; add empties, false activations and dense rows
-// so the search sees every corner (empty, single, both ends, full).
-ActivationRow random_row(int columns, std::mt19937_64& rng) {
-  ActivationRow row(columns);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::uniform_int_distribution<int> col(0, columns - 1);
-  const double kind = u(rng);
-  if (kind < 0.15) return row;  // nothing detected
-  if (kind < 0.25) {            // dense noise
-    for (int c = 0; c < columns; ++c) row.set(c, u(rng) < 0.5);
-    return row;
-  }
-  const int centre = col(rng);
-  const int half = std::uniform_int_distribution<int>(0, 2)(rng);
-  for (int c = centre - half; c <= centre + half; ++c) {
-    if (c >= 0 && c < columns) row.set(c);
-  }
-  const int noise = std::uniform_int_distribution<int>(0, 2)(rng);
-  for (int i = 0; i < noise; ++i) row.set(col(rng));
-  return row;
-}
 
 // ActivationRow -> the verilated act_i port type (uint32_t up to 32 bits, sc_bv above 64).
 void to_port(const ActivationRow& row, std::uint32_t& v) {
@@ -164,6 +144,15 @@ class CosimTop : public sc_core::sc_module {
     dont_initialize();
   }
 
+  // The model's pins beside the RTL's in the trace (tb/common/cosim_run.h), as compared.
+  void trace_expected(systemc::Waveform& w) {
+    w.add(busy[0], "address_search", "busy");
+    w.add(found[0], "address_search", "found");
+    w.add(addr_valid[0], "address_search", "addr_valid");
+    w.add(addr_bit[0], "address_search", "addr_bit");
+    w.add(done[0], "address_search", "done");
+  }
+
   AddressSearchCosimReport& report() { return report_; }
   int operations() const { return operations_; }
 
@@ -200,12 +189,12 @@ class CosimTop : public sc_core::sc_module {
     const rangesim::systemc::AddressSearchKernel& k = model.kernel();
     for (int op = 0; op < operations_; ++op) {
       for (int g = gap(rng_); g > 0; --g) wait();
-      const ActivationRow row = random_row(params_.columns, rng_);
+      const ActivationRow row = random_address_search_row(params_.columns, rng_);
       start.write(true);
       drive(row);
       wait();  // end of the start cycle k = 0
       start.write(false);
-      drive(random_row(params_.columns, rng_));  // must be ignored
+      drive(random_address_search_row(params_.columns, rng_));  // must be ignored
       int cycles = k.operation_cycles(row.any());
       if (op == options_.restart_operation && options_.restart_cycle >= 1 && options_.restart_cycle <= cycles) {
         for (int i = 1; i < options_.restart_cycle; ++i, --cycles) wait();
@@ -300,40 +289,16 @@ class CosimTop : public sc_core::sc_module {
 
 template <class VTop>
 AddressSearchCosimReport run(const AddressSearchCosimOptions& options, const AddressSearchShape& params) {
-  VerilatedContext* ctx = Verilated::defaultContextp();
-  ctx->randReset(2);  // random initial state: the reset must clear everything that matters
-  ctx->randSeed(static_cast<int>(options.seed & 0x7fffffff));
-  ctx->fatalOnError(false);  // a failing Verilog assertion is reported, not an abort
-  if (!options.vcd_prefix.empty()) ctx->traceEverOn(true);
+  // Random initial state (the reset must clear everything that matters); a failing Verilog
+  // assertion is reported, not an abort.
+  VerilatedContext* ctx = cosim_verilator_context(options.seed, options.trace_path);
   sc_core::sc_report_handler::set_actions(kMsgType, sc_core::SC_ERROR, sc_core::SC_DISPLAY);
 
   const sc_core::sc_time period(1.0 / FrameTimingConfig{}.clock_Hz, sc_core::SC_SEC);
   CosimTop<VTop> top("cosim", options, params, period);
-
-  sc_core::sc_trace_file* sc_tf = nullptr;
-  if (!options.vcd_prefix.empty()) {
-    sc_tf = sc_core::sc_create_vcd_trace_file((options.vcd_prefix + "_sc").c_str());
-    sc_core::sc_trace(sc_tf, top.clk, "clk");
-    sc_core::sc_trace(sc_tf, top.start, "start");
-    const char* names[] = {"busy_o", "found_o", "addr_valid_o", "addr_bit_o", "done_o"};
-    sc_core::sc_signal<bool>* sigs[] = {top.busy, top.found, top.addr_valid, top.addr_bit, top.done};
-    for (int i = 0; i < 5; ++i) sc_core::sc_trace(sc_tf, sigs[i][0], names[i]);
-  }
   const long long per_op = 1 + params.search_cycles + 2 * params.address_bits + options.max_gap_cycles;
   const long long limit = options.cycle_limit > 0 ? options.cycle_limit : kResetCycles + 10 + per_op * top.operations();
-  // Verilator tracing must start after elaboration (Verilator's SystemC examples).
-  sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO, sc_core::SC_DO_NOTHING);  // sc_stop()
-  sc_core::sc_start(sc_core::SC_ZERO_TIME);
-  std::unique_ptr<VerilatedVcdSc> rtl_tf;
-  if (!options.vcd_prefix.empty()) {
-    rtl_tf = std::make_unique<VerilatedVcdSc>();
-    top.rtl.trace(rtl_tf.get(), 99);
-    rtl_tf->open((options.vcd_prefix + "_rtl.vcd").c_str());
-  }
-  sc_core::sc_start(period * static_cast<double>(limit));  // bounded by the cycle limit
-  if (rtl_tf) rtl_tf->close();
-  if (sc_tf) sc_core::sc_close_vcd_trace_file(sc_tf);
-  capture_rtl_coverage();  // while the model is alive (tb/common/cosim_coverage.h)
+  run_cosim_top(top, options.trace_path, period, limit);  // bounded by the cycle limit
 
   top.finish_report();
   AddressSearchCosimReport r = top.report();

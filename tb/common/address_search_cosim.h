@@ -39,7 +39,7 @@ struct AddressSearchCosimOptions {
   int restart_operation = -1;
   int restart_cycle = 1;
   long long cycle_limit = 0;  // 0: enough for all operations plus slack
-  std::string vcd_prefix;     // non-empty: <prefix>_rtl.vcd (Verilator) + <prefix>_sc.vcd
+  std::string trace_path;     // non-empty: the RTL's VCD with the model's pins under "expected"
 };
 
 struct AddressSearchCosimReport {

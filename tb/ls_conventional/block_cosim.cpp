@@ -71,6 +71,7 @@ class CentreTop : public sc_core::sc_module {
     rtl.sum_o(sum);
     rtl.count_o(count);
     report.target = "centre_processor";
+    e_ = kernel_.pins();
     SC_METHOD(on_posedge);
     sensitive << clk.posedge_event();
     dont_initialize();
@@ -79,6 +80,14 @@ class CentreTop : public sc_core::sc_module {
     dont_initialize();
   }
   CosimReport report;
+
+  // The kernel's pins of every cycle beside the RTL's (tb/common/cosim_run.h), as compared.
+  void trace_expected(systemc::Waveform& w) {
+    w.add(e_.valid, "centre_processor", "valid");
+    w.add(e_.centre_q, "centre_processor", "centre_q");
+    w.add(e_.sum, "centre_processor", "sum");
+    w.add(e_.count, "centre_processor", "count");
+  }
 
  private:
   // Stimulus of the next cycle: a clear every few streams (at most SAMPLINGS between clears,
@@ -137,6 +146,7 @@ class CentreTop : public sc_core::sc_module {
     const int B = small_config().search.address_bits, N = small_config().multisampling.samplings;
     const int cb = B + 8, sumb = B + 1 + clog2(N + 1), cntb = clog2(N + 1);
     const systemc::CentreProcessorPins m = kernel_.pins();
+    e_ = m;
     systemc::CentreProcessorPins g;
     g.valid = valid.read();
     g.centre_q = static_cast<std::uint32_t>(port_field(centre_q.read(), 0, cb));
@@ -163,6 +173,7 @@ class CentreTop : public sc_core::sc_module {
   std::mt19937_64 rng_;
   long long edges_ = 0;
   int stream_left_ = 0, gap_left_ = 0, streams_ = 0;
+  systemc::CentreProcessorPins e_;  // the kernel's pins of this cycle (trace)
 };
 
 // ---------------- multisampling_sequencer ----------------
@@ -195,6 +206,8 @@ class SequencerTop : public sc_core::sc_module {
     rtl.sampling_o(sampling);
     rtl.frame_o(frame);
     report.target = "multisampling_sequencer";
+    for (int p = 0; p < systemc::kReadoutPhases; ++p)
+      phases_.push_back({p, systemc::readout_phase_name(static_cast<systemc::ReadoutPhase>(p))});
     SC_METHOD(on_posedge);
     sensitive << clk.posedge_event();
     dont_initialize();
@@ -203,6 +216,17 @@ class SequencerTop : public sc_core::sc_module {
     dont_initialize();
   }
   CosimReport report;
+
+  // The kernel's pins of every cycle beside the RTL's (tb/common/cosim_run.h), as compared.
+  void trace_expected(systemc::Waveform& w) {
+    w.add(e_phase_, "sequencer", "phase", phases_);
+    w.add(e_.pix_reset, "sequencer", "pix_reset");
+    w.add(e_.latch, "sequencer", "latch");
+    w.add(e_.search_start, "sequencer", "search_start");
+    w.add(e_.frame_done, "sequencer", "frame_done");
+    w.add(e_.sampling, "sequencer", "sampling");
+    w.add(e_frame_, "sequencer", "frame");
+  }
 
  private:
   void on_posedge() {
@@ -223,6 +247,9 @@ class SequencerTop : public sc_core::sc_module {
     const int sb = clog2(small_config().multisampling.samplings + 1);
     systemc::MultisamplingSequencerPins m = kernel_.pins();
     m.frame &= 0xffffffffULL;
+    e_ = m;
+    e_phase_ = static_cast<int>(m.phase);
+    e_frame_ = static_cast<long long>(m.frame);
     systemc::MultisamplingSequencerPins g;
     g.phase = static_cast<systemc::ReadoutPhase>(port_field(phase.read(), 0, 3));
     g.pix_reset = pix_reset.read();
@@ -265,6 +292,11 @@ class SequencerTop : public sc_core::sc_module {
   std::mt19937_64 rng_;
   long long edges_ = 0;
   bool late_ = false;
+  // The kernel's pins of this cycle (trace): phase and frame as traceable integers.
+  systemc::MultisamplingSequencerPins e_;
+  int e_phase_ = 0;
+  long long e_frame_ = 0;
+  systemc::Waveform::ValueNames phases_;
 };
 
 template <class Top>

@@ -35,6 +35,7 @@
 #include "tb/common/cosim_child.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
+#include "tb/ls_conventional/stimulus.h"
 #include "tb/common/verilog_parameters.h"
 #include "tb/ls_conventional/readout_ports.h"
 #include "tb/ls_conventional/cosim.h"
@@ -50,25 +51,6 @@ using rangesim::systemc::MultisamplingSequencerPins;
 using rangesim::systemc::ReadoutPhase;
 
 constexpr int kResetEdges = 3;  // rst high; before its first edge the RTL state is random
-
-// Random scene per frame access, drawn from (seed, frame) so it does not depend on call order:
-// rows without beam, signal and background log-uniform over the evaluation grid's span, spot
-// centres anywhere on the row (edges included).
-inline systemc::StimulusSource random_scenes(std::uint64_t seed, int rows, int columns) {
-  return [=](std::uint64_t frame, FrameStimulus& out) {
-    std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
-                      static_cast<std::uint32_t>(frame), static_cast<std::uint32_t>(frame >> 32)};
-    std::mt19937_64 rng(seq);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    out.rows.assign(static_cast<std::size_t>(rows), {});
-    for (auto& r : out.rows) {
-      const bool beam = u(rng) >= 0.1;
-      r.signal_V = beam ? std::pow(10.0, -3.0 + 3.2 * u(rng)) : 0.0;  // 1 mV .. 1.6 V
-      r.background_V = std::pow(10.0, -3.0 + 2.7 * u(rng));           // 1 mV .. 0.5 V
-      r.centre_px = -0.5 + columns * u(rng);
-    }
-  };
-}
 
 struct StreamRecord {  // one row's address stream in one sampling, one side
   int bits = 0;
@@ -95,7 +77,7 @@ class LsCosimTop : public sc_core::sc_module {
         address_bits_(cfg.search.address_bits),
         cfg_(cfg),
         noise_free_(!kopt.pixel.noise.any()),
-        kernel_(cfg, kopt, random_scenes(o.seed, rows_, columns_)),
+        kernel_(cfg, kopt, random_ls_conventional_scenes(o.seed, rows_, columns_)),
         fields_(cfg),
         board_(report_),
         rec_{std::vector<StreamRecord>(static_cast<std::size_t>(rows_)),

@@ -49,11 +49,7 @@ CosimReport run_address_search(const CosimOptions& o) {
     ao.restart_operation = 3;
     ao.restart_cycle = 2;
   }
-  if (!o.trace_path.empty()) {  // the harness writes <prefix>_rtl.vcd and <prefix>_sc.vcd
-    std::string prefix = o.trace_path;
-    if (prefix.size() > 4 && prefix.compare(prefix.size() - 4, 4, ".vcd") == 0) prefix.resize(prefix.size() - 4);
-    ao.vcd_prefix = prefix;
-  }
+  ao.trace_path = o.trace_path;
   const AddressSearchCosimReport a = run_address_search_cosim(ao);
   CosimReport r;
   r.target = "address_search";

@@ -20,6 +20,7 @@
 #include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
+#include "tb/tof_lockin/stimulus.h"
 
 namespace rangesim::tb {
 namespace {
@@ -29,29 +30,7 @@ using rangesim::systemc::lockin::ColumnAdcKernel;
 constexpr const char* kMsgType = "rangesim/cosim/column_adc";
 constexpr int kResetCycles = 3;
 
-struct Conversion {
-  TofLockinConfig cfg;
-  double v_in = 0;  // ADC input
-};
-
-// Resolution 1..12 bits (the preset's 12 is the instance's width), full scale 0.5..1.5 V,
-// conversion cycles 2^bits .. 2^bits + 3 (single slope: at least one cycle per code), inputs
-// over the whole range plus a little outside it (clipping), and exact code boundaries.
-Conversion random_conversion(std::mt19937_64& rng) {
-  Conversion c;
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  c.cfg.readout.adc_bits = std::uniform_int_distribution<int>(1, 12)(rng);
-  c.cfg.readout.adc_full_scale_V = 0.5 + u(rng);
-  c.cfg.readout.adc_conversion_cycles = (1LL << c.cfg.readout.adc_bits) + std::uniform_int_distribution<int>(0, 3)(rng);
-  const double fs = c.cfg.readout.adc_full_scale_V;
-  const double lsb = fs / std::ldexp(1.0, c.cfg.readout.adc_bits);
-  if (u(rng) < 0.2) {  // on a code boundary
-    c.v_in = lsb * std::uniform_int_distribution<int>(0, 1 << c.cfg.readout.adc_bits)(rng);
-  } else {
-    c.v_in = -0.05 * fs + 1.1 * fs * u(rng);
-  }
-  return c;
-}
+using Conversion = ColumnAdcConversion;
 
 class AdcCosimTop : public sc_core::sc_module {
  public:
@@ -86,6 +65,15 @@ class AdcCosimTop : public sc_core::sc_module {
     dont_initialize();
   }
 
+  // The kernel's view of every cycle beside the RTL's (tb/common/cosim_run.h): busy, ramp and
+  // done as compared, and the expected code from the cycle it becomes valid.
+  void trace_expected(systemc::Waveform& w) {
+    w.add(e_busy_, "adc", "busy");
+    w.add(e_ramp_, "adc", "ramp");
+    w.add(e_done_, "adc", "done");
+    w.add(e_code_, "adc", "code");
+  }
+
  private:
   void stimulus() {
     for (int i = 0; i < kResetCycles; ++i) wait();
@@ -94,7 +82,7 @@ class AdcCosimTop : public sc_core::sc_module {
     std::uniform_int_distribution<int> gap(0, 2);
     while (true) {
       for (int g = gap(rng_); g > 0; --g) wait();
-      const Conversion c = random_conversion(rng_);
+      const Conversion c = random_column_adc_conversion(rng_);
       conv.write(static_cast<std::uint32_t>(c.cfg.readout.adc_conversion_cycles));
       bits.write(static_cast<std::uint32_t>(c.cfg.readout.adc_bits));
       pending_ = c;
@@ -145,11 +133,15 @@ class AdcCosimTop : public sc_core::sc_module {
         r_.fault_injected = true;
         r_.fault_site = "conversion 2: RTL code_o off by one";
       }
-      sb_.expect("adc_code", n, -1, -1, cycle, adc.code(cur_.v_in), got);
+      e_code_ = adc.code(cur_.v_in);
+      sb_.expect("adc_code", n, -1, -1, cycle, e_code_, got);
       ++conversions_;
     }
     const bool e_busy = in_conv_;
     const long long top = (1LL << cur_.cfg.readout.adc_bits) - 1;
+    e_busy_ = e_busy;
+    e_ramp_ = in_conv_ ? std::min<long long>(k_, top) : 0;
+    e_done_ = in_conv_ && k_ == cur_.cfg.readout.adc_conversion_cycles - 1;
     sb_.pin("busy_o", n, cycle, e_busy, busy.read());
     if (in_conv_) {
       sb_.pin("ramp_o", n, cycle, std::min<long long>(k_, top), static_cast<long long>(ramp.read()));
@@ -171,6 +163,9 @@ class AdcCosimTop : public sc_core::sc_module {
   long long conversions_ = 0;  // conversions checked
   std::uint64_t cycle_ = 0;
   std::ofstream record_;
+  // The kernel's view of this cycle (trace_expected).
+  bool e_busy_ = false, e_done_ = false;
+  long long e_ramp_ = 0, e_code_ = 0;
 };
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
 #include "tb/tof_lockin/lockin_gate_generator_cosim.h"
+#include "tb/tof_lockin/stimulus.h"
 
 namespace rangesim::tb {
 namespace {
@@ -29,18 +30,6 @@ using rangesim::systemc::lockin::LockinGateGeneratorKernel;
 
 constexpr const char* kMsgType = "rangesim/cosim/lockin_gate_generator";
 constexpr int kResetCycles = 3;
-
-// Gate parameters drawn within the preset ranges, kept on the gate-clock grid (the kernel's
-// rule): T0 1..32 cycles, duty 1/2..1/10, N_acc 1..64 at the preset's 100 MHz gate clock.
-TofLockinConfig random_gate_config(std::mt19937_64& rng) {
-  TofLockinConfig cfg;
-  const int t0 = std::uniform_int_distribution<int>(1, 32)(rng);
-  const int m = std::uniform_int_distribution<int>(2, 10)(rng);
-  cfg.source.pulse_width_s = t0 / cfg.gates.clock_Hz;
-  cfg.source.duty_cycle = 1.0 / m;
-  cfg.gates.accumulations_per_frame = std::uniform_int_distribution<int>(1, 64)(rng);
-  return cfg;
-}
 
 struct Pins {
   bool busy, tx1, tx2, txd, light, last;
@@ -81,6 +70,16 @@ class GateCosimTop : public sc_core::sc_module {
     dont_initialize();
   }
 
+  // The kernel's pins of every cycle beside the RTL's (tb/common/cosim_run.h), as compared.
+  void trace_expected(systemc::Waveform& w) {
+    w.add(e_.busy, "gates", "busy");
+    w.add(e_.tx1, "gates", "tx1");
+    w.add(e_.tx2, "gates", "tx2");
+    w.add(e_.txd, "gates", "txd");
+    w.add(e_.light, "gates", "light");
+    w.add(e_.last, "gates", "last");
+  }
+
   void finish() {
     // Edges one side produced and the other did not (the run ends between operations).
     for (std::size_t i = matched_; i < edges_[0].size() || i < edges_[1].size(); ++i) {
@@ -110,7 +109,7 @@ class GateCosimTop : public sc_core::sc_module {
     std::uniform_int_distribution<int> gap(0, 3);
     while (true) {
       for (int g = gap(rng_); g > 0; --g) wait();
-      const TofLockinConfig cfg = random_gate_config(rng_);
+      const TofLockinConfig cfg = random_lockin_gate_generator_config(rng_);
       const LockinGateGeneratorKernel k(cfg);
       t0.write(static_cast<std::uint32_t>(k.t0_cycles()));
       period.write(static_cast<std::uint32_t>(k.period_cycles()));
@@ -147,7 +146,8 @@ class GateCosimTop : public sc_core::sc_module {
               << ' ' << a.busy << a.tx1 << a.tx2 << a.txd << a.light << a.last << '\n';
     }
     if (cycle < kResetCycles) return;  // random state until the reset edge
-    Pins e{false, false, false, false, false, false};
+    Pins& e = e_;
+    e = {false, false, false, false, false, false};
     if (kernel_ && !kernel_->done()) {
       e = {true,
            kernel_->tx1(),
@@ -212,11 +212,12 @@ class GateCosimTop : public sc_core::sc_module {
   std::uint64_t cycle_ = 0;                          // cycles seen by the monitor
   long long op_ = 0;                                 // operations completed by the model
   long long ops_started_ = 0;
-  bool prev_tx2_ = false;       // RTL tx2 of the previous cycle (fault injection)
-  bool was_[2][4] = {};         // gate levels of the previous cycle, model / RTL
-  std::vector<Edge> edges_[2];  // gate edges, model / RTL
-  std::size_t matched_ = 0;     // edges compared so far
-  std::ofstream record_;        // Icarus replay file
+  bool prev_tx2_ = false;                             // RTL tx2 of the previous cycle (fault injection)
+  bool was_[2][4] = {};                               // gate levels of the previous cycle, model / RTL
+  std::vector<Edge> edges_[2];                        // gate edges, model / RTL
+  std::size_t matched_ = 0;                           // edges compared so far
+  std::ofstream record_;                              // Icarus replay file
+  Pins e_{false, false, false, false, false, false};  // the kernel's pins of this cycle (trace)
 };
 
 }  // namespace

@@ -5,7 +5,7 @@
 //                          cycle, gate edges as transactions; faults: gate_shift
 //   column_adc             rtl/tof_lockin/column_adc.sv vs ColumnAdcKernel: codes and conversion
 //                          ends; faults: adc_code_off_by_one
-//   tof-lockin             rtl/tof_lockin/tof_lockin_sequencer.sv + column_adc per tap and column vs
+//   tof-lockin             rtl/tof_lockin/tof_lockin_readout.sv (sequencer + column_adc per tap and column) vs
 //                          TofLockinSensorKernel in tick mode: phases, gate pins, rows,
 //                          frame boundaries, ADC codes; ranges rebuilt from the RTL codes vs
 //                          the kernel's; faults: gate_shift, adc_code_off_by_one

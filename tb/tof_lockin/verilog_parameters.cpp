@@ -51,11 +51,19 @@ VerilogParameters sequencer(const ParamSet& p) {
       {"CYCLE_BITS", s.cycle_bits}, {"ACC_BITS", s.acc_bits}, {"ROW_BITS", s.row_bits}, {"FRAME_BITS", s.frame_bits}};
 }
 
+VerilogParameters readout(const ParamSet& p) {
+  const TofLockinRtlShape s = shape(p);
+  return {{"CYCLE_BITS", s.cycle_bits}, {"ACC_BITS", s.acc_bits}, {"ROW_BITS", s.row_bits},
+          {"FRAME_BITS", s.frame_bits}, {"BITS", s.adc_bits},     {"CHANNELS", s.adc_channels}};
+}
+
 }  // namespace
 
 std::vector<RtlTop> tof_lockin_rtl_tops() {
-  return {
-      {"lockin_gate_generator", &gate_generator}, {"column_adc", &column_adc}, {"tof_lockin_sequencer", &sequencer}};
+  return {{"lockin_gate_generator", &gate_generator},
+          {"column_adc", &column_adc},
+          {"tof_lockin_sequencer", &sequencer},
+          {"tof_lockin_readout", &readout}};
 }
 
 }  // namespace rangesim::tb

@@ -39,6 +39,7 @@
 #include "tb/common/cosim_child.h"
 #include "tb/common/cosim_ports.h"
 #include "tb/common/cosim_scoreboard.h"
+#include "tb/tof_spad/stimulus.h"
 #include "tb/tof_spad/verilog_parameters.h"
 
 namespace rangesim::tb {
@@ -59,41 +60,20 @@ constexpr const char* kMsgType = "rangesim/cosim/tof-spad";
 constexpr int kResetCycles = 3;
 constexpr int kMaxCpt = 16;  // tof_spad_rtl_shape allows up to 16 columns per group
 
-struct Setup {
-  TofSpadConfig cfg;
-  int rows = 1;
-  std::vector<PixelRates> rates;  // [row * 4 + column]
-};
+using Setup = TofSpadSetup;
 
-// Within the preset's ranges, scaled so a row fits a short run: TDC LSB 0.25-2 ns, laser
-// 20-80 MHz (Np 7..200 codes), full range 0.6-1.2 laser periods (overflow happens), TDC busy
-// 0-2 periods, dead time 5-50 ns, L = 20..150 laser cycles. Rates: signal and background
-// 0.1-20 MHz per pixel (high_rates: 5-50 MHz, to crowd the arbitration).
-inline Setup random_setup(const TofSpadConfig& base, std::mt19937_64& rng, bool high_rates) {
-  Setup s;
-  s.cfg = base;
-  const int cpt = base.tdc.columns_per_tdc;
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  auto logu = [&](double a, double b) { return a * std::pow(b / a, u(rng)); };
-  TofSpadConfig& c = s.cfg;
-  c.tdc.lsb_s = logu(0.25e-9, 2e-9);
-  c.laser.repetition_rate_Hz = logu(20e6, 80e6);
-  const double period = 1.0 / c.laser.repetition_rate_Hz;
-  c.tdc.full_range_s = period * (0.6 + 0.6 * u(rng));
-  c.tdc.busy_time_s = 2.0 * period * u(rng);
-  c.spad.dead_time_s = logu(5e-9, 50e-9);
-  const long long L = std::uniform_int_distribution<int>(20, 150)(rng);
-  c.histogram.integration_time_s = static_cast<double>(L) / c.laser.repetition_rate_Hz;
-  s.rows = high_rates ? 1 : std::uniform_int_distribution<int>(2, 3)(rng);
-  for (int i = 0; i < s.rows * cpt; ++i) {
-    PixelRates p;
-    p.signal_Hz = high_rates ? logu(5e6, 50e6) : logu(1e5, 2e7);
-    p.background_Hz = high_rates ? logu(5e6, 50e6) : logu(1e5, 2e7);
-    p.round_trip_s = period * u(rng);
-    s.rates.push_back(p);
-  }
-  return s;
-}
+// The model's pins of the current cycle as the scoreboard compares them (traced under
+// "expected" by trace_expected()); the pulses are false in cycles without one.
+struct SpadExpected {
+  int phase = 0, row = 0;
+  bool tdc_event = false, tdc_overflow = false;
+  int tdc_lost = 0;
+  long long tdc_grant = 0, tdc_code = 0;
+  bool word_valid = false;
+  long long word = 0;
+  bool peak_valid = false;
+  long long peak_code = 0, peak_count = 0, centroid_num = 0, centroid_den = 0;
+};
 
 struct CycleHits {
   std::uint32_t hit = 0;                 // bit per column
@@ -200,6 +180,25 @@ class SpadCosimTop : public sc_core::sc_module {
   }
 
   long long cycle_bound() const { return kResetCycles + clear_cycles() + 20 + s_.rows * row_len_; }
+
+  // The kernels' pins of every cycle beside the RTL's in the trace (tb/common/cosim_run.h).
+  void trace_expected(systemc::Waveform& w) {
+    const systemc::Waveform::ValueNames phases{{0, "idle"}, {1, "laser_cycles"}, {2, "histogram_readout"}};
+    w.add(e_.phase, "sequencer", "phase", phases);
+    w.add(e_.row, "sequencer", "row");
+    w.add(e_.tdc_event, "tdc", "event");
+    w.add(e_.tdc_overflow, "tdc", "overflow");
+    w.add(e_.tdc_lost, "tdc", "lost");
+    w.add(e_.tdc_grant, "tdc", "grant");
+    w.add(e_.tdc_code, "tdc", "code");
+    w.add(e_.word_valid, "histogram", "word_valid");
+    w.add(e_.word, "histogram", "word");
+    w.add(e_.peak_valid, "histogram", "peak_valid");
+    w.add(e_.peak_code, "histogram", "peak_code");
+    w.add(e_.peak_count, "histogram", "peak_count");
+    w.add(e_.centroid_num, "histogram", "centroid_num");
+    w.add(e_.centroid_den, "histogram", "centroid_den");
+  }
 
   // Histograms of the two kernels, the estimator on the RTL histograms, the phase totals.
   void finish() {
@@ -367,7 +366,11 @@ class SpadCosimTop : public sc_core::sc_module {
               << peak_code.read() << ' ' << peak_count.read() << ' ' << num.read() << ' ' << den.read() << '\n';
     }
     if (cycle < kResetCycles) return;
+    e_.tdc_event = e_.tdc_overflow = e_.word_valid = e_.peak_valid = false;
+    e_.tdc_lost = 0;
+    e_.tdc_grant = 0;
     if (start_cycle_ < 0) {
+      e_.phase = 0;
       sb_.pin("phase_o", -1, cycle, 0U, phase.read());
       if (start.read() && !rst.read()) start_cycle_ = static_cast<long long>(cycle);
       return;
@@ -384,11 +387,14 @@ class SpadCosimTop : public sc_core::sc_module {
       sb_.pin("peak_valid_o", -1, cycle, false, peak_valid.read());
     }
     if (!running) {
+      e_.phase = 0;
       sb_.pin("phase_o", -1, cycle, 0U, phase.read());
       return;
     }
     const long long integ = kernel_.laser_cycles() * kernel_.phase_bins();
     const std::uint32_t e_phase = k < integ ? 1 : 2;
+    e_.phase = static_cast<int>(e_phase);
+    e_.row = rr;
     ++phase_cycles_[std::min<std::uint32_t>(phase.read(), 2)];
     sb_.pin("phase_o", -1, cycle, e_phase, phase.read());
     sb_.pin("row_o", -1, cycle, static_cast<std::uint32_t>(rr), row.read());
@@ -409,6 +415,8 @@ class SpadCosimTop : public sc_core::sc_module {
     const int col = e.recorded_column;
     const bool e_ev = col >= 0 && e.kind == TdcHit::Kind::Event;
     const bool e_ovf = col >= 0 && e.kind == TdcHit::Kind::Overflow;
+    e_.tdc_event = e_ev, e_.tdc_overflow = e_ovf, e_.tdc_lost = e.lost;
+    if (col >= 0) e_.tdc_grant = 1LL << col, e_.tdc_code = e.code;
     sb_.pin("tdc event_o", -1, cycle, e_ev, ev.read());
     sb_.pin("tdc overflow_o", -1, cycle, e_ovf, ovf.read());
     sb_.pin("tdc lost_o", -1, cycle, static_cast<std::uint32_t>(e.lost), lost.read());
@@ -432,6 +440,7 @@ class SpadCosimTop : public sc_core::sc_module {
     const long long W = kernel_.cycles_per_word(), Nc = kernel_.codes();
     const long long wi = q / W;
     const bool first = q % W == 0;
+    e_.word_valid = first;
     sb_.pin("word_valid_o", -1, cycle, first, word_valid.read());
     // The previous column's results, in the cycle after its last word.
     const bool e_peak = q > 0 && first && wi % Nc == 0;
@@ -441,6 +450,7 @@ class SpadCosimTop : public sc_core::sc_module {
     if (!first) return;
     const int cc = static_cast<int>(wi / Nc), cd = static_cast<int>(wi % Nc);
     const long long want = std::min(p.kernel.events[static_cast<size_t>(cc)][static_cast<size_t>(cd)], count_max_);
+    e_.word = want;
     long long got = word.read();
     if (o_.inject_fault == "dropped_histogram_count" && !r_.fault_injected && got > 0) {
       --got;
@@ -460,6 +470,8 @@ class SpadCosimTop : public sc_core::sc_module {
       if (v > best) best = v, at = static_cast<long long>(i);
       n += static_cast<long long>(i) * v, d += v;
     }
+    e_.peak_valid = true;
+    e_.peak_code = at, e_.peak_count = best, e_.centroid_num = n, e_.centroid_den = d;
     sb_.expect("histogram peak code", -1, rr, cc, cycle, at, static_cast<long long>(peak_code.read()));
     sb_.expect("histogram peak count", -1, rr, cc, cycle, best, static_cast<long long>(peak_count.read()));
     sb_.expect("centroid numerator", -1, rr, cc, cycle, n, static_cast<long long>(num.read()));
@@ -484,36 +496,11 @@ class SpadCosimTop : public sc_core::sc_module {
   std::vector<std::vector<long long>> rtl_events_;  // RTL histograms [row * CPT + column][code]
   std::uint64_t cycle_ = 0;
   std::ofstream record_;
+  SpadExpected e_;  // the model's pins of this cycle (trace)
 };
 
-// Rows of random setups (on `base`) until the requested cycles are covered; past the rows
-// ROW_BITS counts the integration gets longer instead (more laser cycles per row).
-inline Setup random_rows(const TofSpadConfig& base, const TofSpadRtlShape& shape, const CosimOptions& o,
-                         bool high_rates) {
-  std::mt19937_64 rng(o.seed);
-  Setup s = random_setup(base, rng, high_rates);
-  const TofSpadKernel k(s.cfg, 1, shape.cpt, {});
-  const long long row = k.laser_cycles() * k.phase_bins() + k.readout_words_per_row() * k.cycles_per_word();
-  const long long want_rows = std::max<long long>((static_cast<long long>(o.cycles) + row - 1) / row, 1);
-  const long long max_rows = (1LL << shape.row_bits) - 1;
-  const long long rows = std::min<long long>(want_rows, max_rows);
-  while (s.rows < rows) {
-    const Setup more = random_setup(base, rng, high_rates);
-    s.rates.insert(s.rates.end(), more.rates.begin(), more.rates.end());
-    s.rows += more.rows;
-  }
-  s.rows = static_cast<int>(std::min<long long>(s.rows, max_rows));
-  s.rates.resize(static_cast<size_t>(s.rows) * shape.cpt);
-  if (want_rows > max_rows) {
-    const long long stretch = (want_rows + max_rows - 1) / max_rows;
-    s.cfg.histogram.integration_time_s *= static_cast<double>(stretch);
-  }
-  return s;
-}
-
-
 // Runs the TDC group RTL VTop, verilated with verilog_parameters(base), against the kernels on
-// random setups drawn on `base` (its timing redrawn within the ranges of random_setup).
+// random setups drawn on `base` (its timing redrawn within the ranges of random_tof_spad_setup, tb/tof_spad/stimulus.h).
 // high_rates: the `tdc` target. record_path: per-cycle inputs and RTL outputs for the Icarus
 // replay (tb/tof_spad/tof_spad_sequencer_replay_tb.sv).
 template <class VTop>
@@ -523,7 +510,7 @@ CosimReport run_tof_spad_harness(const CosimOptions& o, const TofSpadConfig& bas
   r.target = target;
   VerilatedContext* ctx = cosim_verilator_context(o);
   const TofSpadRtlShape shape = tof_spad_rtl_shape(base, target);
-  Setup s = random_rows(base, shape, o, high_rates);
+  Setup s = random_tof_spad_rows(base, shape.cpt, (1LL << shape.row_bits) - 1, o.cycles, o.seed, high_rates);
   const sc_core::sc_time period(s.cfg.tdc.lsb_s, sc_core::SC_SEC);
   SpadCosimTop<VTop> top("cosim", o, r, std::move(s), shape, record, period);
   run_cosim_top(top, o.trace_path, period, top.cycle_bound());

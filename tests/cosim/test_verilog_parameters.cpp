@@ -92,7 +92,7 @@ TEST(VerilogParameters, BuiltInInstancesAreTheirPresets) {
       {"Vtof_spad_sequencer", "tof_spad_sequencer"},
       {"Vlockin_gate_generator", "lockin_gate_generator"},
       {"Vcolumn_adc", "column_adc"},
-      {"Vtof_lockin_sequencer", "tof_lockin_sequencer"},
+      {"Vtof_lockin_readout", "tof_lockin_readout"},
   };
   EXPECT_EQ(std::size(rtl::kInstancePresets), std::size(tops));
   for (const auto& [prefix, top] : tops) {

@@ -1,7 +1,8 @@
 // A user's own testbench with the installed verification kit (rangesim::cosim_kit): it verilates
 // an address search of its own (here rangesim's installed rtl/common/address_search.sv stands in
-// for the user's file, tests/install/consumer/CMakeLists.txt), drives random rows into it and
-// checks every operation against rangesim's reference kernel (AddressSearchKernel) through the
+// for the user's file, tests/install/consumer/CMakeLists.txt), drives random rows from the kit's
+// stimulus generator (tb/common/address_search_stimulus.h, the rows rangesim's own co-simulation
+// draws) into it and checks every operation against rangesim's reference kernel (AddressSearchKernel) through the
 // kit's scoreboard. Prints "byo testbench: ... 0 mismatches" and exits 0 when they agree.
 #include <cstdint>
 #include <cstdio>
@@ -10,9 +11,14 @@
 
 #include "Vmy_address_search.h"
 #include "systemc/common/address_search_kernel.h"
+#include "tb/common/address_search_stimulus.h"
 #include "tb/common/cosim_coverage.h"
 #include "tb/common/cosim_run.h"
 #include "tb/common/cosim_scoreboard.h"
+#include "tb/ls_conventional/stimulus.h"
+#include "tb/ls_demodulation/stimulus.h"
+#include "tb/tof_lockin/stimulus.h"
+#include "tb/tof_spad/stimulus.h"
 
 namespace {
 
@@ -37,15 +43,15 @@ struct Top : sc_core::sc_module {
   void drive() {
     const rangesim::systemc::AddressSearchKernel kernel({kColumns, kAddressBits, 2}, kSearchCycles);
     rangesim::tb::CosimScoreboard board(report);
-    std::mt19937 rng(7);
+    std::mt19937_64 rng(7);
     for (int i = 0; i < 3; ++i) wait(clk.negedge_event());
     rst.write(false);
     for (int op = 0; op < kOperations; ++op) {
       wait(clk.negedge_event());
-      const std::uint32_t bits = rng() & ((1U << kColumns) - 1) & (op % 5 == 0 ? 0U : ~0U);  // some empty rows
-      rangesim::systemc::ActivationRow row(kColumns);
+      const rangesim::systemc::ActivationRow row = rangesim::tb::random_address_search_row(kColumns, rng);
+      std::uint32_t bits = 0;
       for (int c = 0; c < kColumns; ++c)
-        if ((bits >> c) & 1U) row.set(c);
+        if (row.test(c)) bits |= 1U << c;
       act.write(bits);
       start.write(true);
       wait(clk.negedge_event());
@@ -83,6 +89,12 @@ int sc_main(int, char*[]) {
   std::printf("byo testbench: %d operations, %llu transactions, %llu mismatches, line coverage %.1f %%\n", kOperations,
               static_cast<unsigned long long>(top.report.transactions),
               static_cast<unsigned long long>(top.report.mismatches), cov.line_percent());
+  // Every sensor's generator is installed with the kit: one tof-lockin readout setup, as the
+  // built-in target draws it at --seed 1.
+  std::mt19937_64 rng(1);
+  const rangesim::tb::TofLockinSetup lockin = rangesim::tb::random_tof_lockin_setup(20000, 1, rng);
+  std::printf("kit generator: tof-lockin setup %d x %d pixels, %d-bit ADC, %lld frames\n", lockin.cfg.pixel.rows,
+              lockin.cfg.pixel.columns, lockin.cfg.readout.adc_bits, lockin.frames);
   for (const auto& m : top.report.first_mismatches)
     std::printf("  %s\n", rangesim::tb::CosimScoreboard::format(m).c_str());
   return top.report.mismatches == 0 && top.report.transactions > kOperations ? 0 : 1;
