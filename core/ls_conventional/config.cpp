@@ -43,6 +43,7 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.multisampling.samplings = static_cast<int>(p.integer("multisampling.samplings"));
   c.validity.min_detecting_fraction = p.real("validity.min_detecting_fraction");
   c.validity.edge_margin_px = p.real("validity.edge_margin_px");
+  c.simulation.exact_activation_sampling = p.boolean("simulation.exact_activation_sampling");
 
   c.timing.clock_Hz = p.real("timing.clock_Hz");
   c.timing.reset_cycles = static_cast<int>(p.integer("timing.reset_cycles"));

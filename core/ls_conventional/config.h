@@ -89,6 +89,11 @@ struct LsValidityConfig {
   double edge_margin_px = 1.5;        // the centre this far inside the first and last column
 };
 
+// How the clock-level model draws its noise (systemc/ls_conventional/activation_sampler.h).
+struct LsSimulationConfig {
+  bool exact_activation_sampling = true;  // first firing sampling drawn exactly, certain pixels not drawn
+};
+
 struct LsConventionalConfig {
   PixelConfig pixel;
   SpotConfig spot;
@@ -99,6 +104,7 @@ struct LsConventionalConfig {
   OpticsConfig optics;
   EvaluationGridConfig grid;
   LsValidityConfig validity;
+  LsSimulationConfig simulation;
 };
 
 // The clock schedule of one frame access, one formula each (golden/ls_conventional/frame_timing,

@@ -76,6 +76,10 @@ const ParamSchema& ls_conventional_schema() {
           {"validity.edge_margin_px", K::Real, "px", 0, 1e4, false,
            "a row's centre counts only this far inside the array's first and last column: nearer, the spot may "
            "be clipped by the edge and its centre pulled inward"},
+          // Clock-level model (rangesim simulate, evaluate --trials).
+          {"simulation.exact_activation_sampling", K::Boolean, "", 0, 0, false,
+           "draw each noisy pixel's first firing sampling from its exact distribution and skip pixels whose "
+           "outcome is certain to 2^-56 (false: every noise term drawn and compared at every sampling)"},
       }};
   return schema;
 }

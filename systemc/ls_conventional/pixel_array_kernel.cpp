@@ -31,6 +31,17 @@ PixelArrayKernel::PixelArrayKernel(const LsConventionalConfig& config, const Pix
   electrons_per_V_ = golden::electrons_per_volt(config.pixel);
   ktc_V_ = golden::ktc_noise_V(config.pixel);
   read_V_ = config.pixel.read_noise_V;
+  if (config.simulation.exact_activation_sampling && options_.noise.any()) {
+    ActivationModel m;
+    m.shot = options_.noise.shot;
+    m.ktc_V = options_.noise.reset_ktc ? ktc_V_ : 0.0;
+    m.read_V = options_.noise.read ? read_V_ : 0.0;
+    m.electrons_per_V = electrons_per_V_;
+    m.gain = config.pixel.source_follower_gain;
+    m.saturation_V = config.pixel.saturation_voltage_V;
+    m.samplings = config.multisampling.samplings;
+    exact_ = std::make_unique<ExactActivation>(m);
+  }
 }
 
 bool PixelArrayKernel::control(bool pix_reset, std::uint64_t frame, int sampling) {
@@ -107,9 +118,14 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
         }
       }
     }
+    if (exact_) {
+      reset_row_exact(r, in, row);
+      continue;
+    }
     const int W = std::max(0, row.last - row.first + 1);
     row.pixels.resize(static_cast<std::size_t>(W));
     pixels_simulated_ += W;
+    pixels_drawn_ += options_.noise.any() ? W : 0;
     for (int j = 0; j < W; ++j) {
       const int i = row.first + j;
       Pixel& p = row.pixels[static_cast<std::size_t>(j)];
@@ -133,6 +149,28 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   }
 }
 
+void PixelArrayKernel::reset_row_exact(int r, const RowIllumination& in, RowState& row) {
+  const int W = std::max(0, row.last - row.first + 1), N = config_.multisampling.samplings;
+  row.fires_at.resize(static_cast<std::size_t>(W));
+  pixels_simulated_ += W;
+  const ActivationBounds& b = exact_->bounds(row.threshold_V);
+  PixelDrive d{in.signal_V, 0.0, in.background_V, dark_V_, 0.0};
+  for (int j = 0; j < W; ++j) {
+    const int i = row.first + j;
+    d.profile = golden::spot_profile(config_.spot, i - in.centre_px);
+    // The per-sampling path's mean per interval, expression for expression.
+    d.mean_step_e = golden::pixel_swing_V(in.signal_V, d.profile, in.background_V, dark_V_, 1.0) * electrons_per_V_ / N;
+    int k = exact_->certain_first_firing(d, b);
+    if (k < 0) {
+      pcg32 rng = pixel_stream(
+          pixel_stream_key(options_.seed, frame_, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i)));
+      k = exact_->draw_first_firing(d, row.threshold_V, rng);
+      ++pixels_drawn_;
+    }
+    row.fires_at[static_cast<std::size_t>(j)] = static_cast<std::uint8_t>(k);
+  }
+}
+
 void PixelArrayKernel::sample(int k) {
   assert(have_frame_ && k == sampling_ + 1 && k <= config_.multisampling.samplings && "samplings in order");
   sampling_ = k;
@@ -140,6 +178,15 @@ void PixelArrayKernel::sample(int k) {
   const double A = config_.pixel.source_follower_gain, vsat = config_.pixel.saturation_voltage_V;
   const double t_over_T = static_cast<double>(k) / N;
   const bool noisy = options_.noise.any();
+  if (exact_) {  // the firing samplings were drawn at the reset: latch this one's
+    for (int r = 0; r < config_.pixel.rows; ++r) {
+      const RowState& row = rows_[static_cast<std::size_t>(r)];
+      ActivationRow& act = act_[static_cast<std::size_t>(r)];
+      for (int j = 0, W = static_cast<int>(row.fires_at.size()); j < W; ++j)
+        if (row.fires_at[static_cast<std::size_t>(j)] == k) act.set(row.first + j);
+    }
+    return;
+  }
   for (int r = 0; r < config_.pixel.rows; ++r) {
     RowState& row = rows_[static_cast<std::size_t>(r)];
     const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(r)];

@@ -22,7 +22,13 @@
 // is computed per row from the spot profile. The skip is bounded: P(a skipped pixel would have
 // activated) < 1e-16 per pixel and frame. Dense mode simulates
 // every pixel; tests require identical outputs.
+//
+// Exact activation sampling (config simulation.exact_activation_sampling, on by default; with
+// noise): within the window each pixel's first firing sampling is drawn at the reset from its exact
+// distribution, or set without a draw where it is certain to 2^-56 (activation_sampler.h); the
+// samplings then only latch the drawn bits. Off: the draws above at every sampling, unchanged.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <pcg_random.hpp>
@@ -31,6 +37,7 @@
 #include "systemc/common/address_search_kernel.h"
 #include "systemc/ls_conventional/frame_stimulus.h"
 #include "systemc/common/poisson_sampler.h"
+#include "systemc/ls_conventional/activation_sampler.h"
 
 namespace rangesim::systemc {
 
@@ -72,6 +79,10 @@ class PixelArrayKernel {
   const FrameStimulus& stimulus() const { return stimulus_; }
   // Pixels simulated one by one since construction (sparse windows), for the speed report.
   long long pixels_simulated() const { return pixels_simulated_; }
+  // Of those, pixels whose noise was drawn: every one on the per-sampling path, only the ones with
+  // an uncertain outcome on the exact path (the rest were certain to 2^-56).
+  long long pixels_drawn() const { return pixels_drawn_; }
+  bool exact_sampling() const { return exact_ != nullptr; }
   // Simulated window [first, last] of row r in the current frame access (last < first: none).
   int window_first(int r) const { return rows_[static_cast<std::size_t>(r)].first; }
   int window_last(int r) const { return rows_[static_cast<std::size_t>(r)].last; }
@@ -90,11 +101,13 @@ class PixelArrayKernel {
   struct RowState {
     int first = 0, last = -1;   // simulated window [first, last]
     double threshold_V = 0;     // theta at the comparator input
-    std::vector<Pixel> pixels;  // window pixels (index i - first)
+    std::vector<Pixel> pixels;  // window pixels (index i - first), per-sampling path
+    std::vector<std::uint8_t> fires_at;  // exact path: first firing sampling per window pixel, 0 never
   };
 
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
   double compute_cut_swing_V(double threshold_V) const;
+  void reset_row_exact(int r, const RowIllumination& in, RowState& row);  // the exact path's reset
 
   LsConventionalConfig config_;                    // sensor
   PixelArrayOptions options_;                      // noise, seed, sparse
@@ -109,6 +122,8 @@ class PixelArrayKernel {
   double electrons_per_V_ = 0;                     // C / q
   double ktc_V_ = 0, read_V_ = 0;                  // noise rms
   long long pixels_simulated_ = 0;                 // statistics
+  long long pixels_drawn_ = 0;                     // statistics
+  std::unique_ptr<ExactActivation> exact_;         // the exact path (null: per-sampling draws)
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 
