@@ -90,6 +90,7 @@ std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet& params
     ideal.readout.adc_full_scale_V = 2.0;
     ideal.noise.read_noise_V = 0.0;
     ideal.noise.dark_current_A = 0.0;
+    ideal.nonideal.offset_shot_noise = false;
     f.push_back(
         {id, "accuracy_best_as_shot_noise", "best range accuracy 12.6 mm (Table 5.1 [12]; 1.26 cm in 4.1.3)", 0.0126,
          "m", accuracy_at_voltage_m(ideal, 1.4, L1, 1), 0.01,
