@@ -8,6 +8,7 @@
 #include "scene/depth_map.h"
 #include "scene/physical.h"
 #include "scene/scene.h"
+#include "systemc/ls_demodulation/nonideal_stimulus.h"
 
 namespace rangesim::scene {
 
@@ -98,6 +99,8 @@ void DemodOptics::stimulus(std::uint64_t f, systemc::DemodStimulus& s) const {
       s.beam_A[static_cast<std::size_t>(r) * C + c] =
           sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
   }
+  systemc::apply_demod_blur(cfg, s);           // the lens and the pixels' crosstalk
+  systemc::apply_demod_fixed_pattern(cfg, s);  // the chip
 }
 
 }  // namespace rangesim::scene

@@ -37,6 +37,7 @@ namespace rangesim::systemc {
 struct DemodStimulus {
   std::vector<double> beam_A;        // beam-on photocurrent (square at f0, source duty cycle)
   std::vector<double> background_A;  // constant background photocurrent (dark current added by the pixel)
+  std::vector<double> comparator_offset_V;  // each comparator's fixed offset on D (empty: none)
 };
 using DemodStimulusSource = std::function<void(std::uint64_t frame, DemodStimulus&)>;
 
