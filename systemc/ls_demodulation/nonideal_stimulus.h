@@ -5,12 +5,16 @@
 // chip's fixed pattern scales each pixel's photocurrents (PRNU), adds its dark-current offset
 // (DSNU) and sets its comparator's offset. Same chip (fixed_pattern.seed), same pattern in every
 // frame.
+#include <cstdint>
+
 #include "core/ls_demodulation/config.h"
 #include "systemc/ls_demodulation/sensor_kernel.h"
 
 namespace rangesim::systemc {
 
 void apply_demod_blur(const LsDemodulationConfig& cfg, DemodStimulus& s);
+// The fixed pattern of chip `seed` (default: fixed_pattern.seed) on the stimulus's rows.
+void apply_demod_fixed_pattern(const LsDemodulationConfig& cfg, DemodStimulus& s, std::uint64_t seed);
 void apply_demod_fixed_pattern(const LsDemodulationConfig& cfg, DemodStimulus& s);
 
 }  // namespace rangesim::systemc

@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
+#include "golden/ls_demodulation/evaluation.h"
+#include "systemc/ls_demodulation/montecarlo.h"
 #include "systemc/ls_demodulation/nonideal_stimulus.h"
 #include "systemc/ls_demodulation/sensor_kernel.h"
 #include "tests/systemc/ls_demodulation/demod_test_helpers.h"
@@ -46,7 +49,7 @@ TEST(DemodNonideal, ComparatorOffsetEntersEveryDecisionOfItsPixel) {
 TEST(DemodNonideal, FixedPatternHasItsRmsAndIsTheSameEveryFrame) {
   LsDemodulationConfig c = test::preset_config();
   c.fixed_pattern.prnu_fraction = 0.02;
-  c.fixed_pattern.comparator_offset_rms_V = 1e-3;
+  c.fixed_pattern.comparator_offset_rms_V = 2e-3;
   DemodStimulus a, b;
   for (DemodStimulus* s : {&a, &b}) {
     s->beam_A.assign(static_cast<std::size_t>(c.pixel.rows) * c.pixel.columns, 1e-9);
@@ -65,6 +68,44 @@ TEST(DemodNonideal, FixedPatternHasItsRmsAndIsTheSameEveryFrame) {
   c.fixed_pattern.seed = 2;
   apply_demod_fixed_pattern(c, b);
   EXPECT_NE(a.comparator_offset_V, b.comparator_offset_V);
+}
+
+// Golden's accuracy with the comparators' fixed offsets (golden/ls_demodulation/fixed_pattern.h)
+// against the Monte Carlo of the kernel, every trial a row of another chip: exact for one frame,
+// the averaging floor (first order) for 16.
+TEST(DemodNonideal, ComparatorOffsetsAgainstMonteCarloAndTheirFloor) {
+  LsDemodulationConfig c = test::preset_config();
+  c.fixed_pattern.comparator_offset_rms_V = 2e-3;
+  const double s = 1.11e-10, b = 1e-10;
+  for (int frames : {1, 16}) {
+    c.grid.frames_averaged = frames;
+    LsDemodulationConfig off = c;
+    off.fixed_pattern.comparator_offset_rms_V = 0;
+    const golden::DemodPoint g = golden::evaluate_demod_point(c, s, b);
+    const golden::DemodPoint g_off = golden::evaluate_demod_point(off, s, b);
+    ASSERT_EQ(g.detect, golden::DemodDetect::Detectable);
+    const mc::LsDemodulationMc model(c);
+    const auto runner = model.point(s, b, 99);
+    const int n = frames == 1 ? 20000 : 400;
+    std::vector<double> sq;
+    for (int t = 0; t < n; ++t) {
+      const mc::McTrial tr = runner->trial(t);
+      if (tr.detected) sq.push_back(tr.error * tr.error);
+    }
+    ASSERT_GT(sq.size(), n * 0.99);
+    double m2 = 0, m4 = 0;
+    for (double e : sq) m2 += e;
+    m2 /= static_cast<double>(sq.size());
+    for (double e : sq) m4 += (e - m2) * (e - m2);
+    // Standard error of the mean squared error from the sample itself: the errors have heavy
+    // tails (a far pixel whose offset lets the background through moves an edge by many pixels).
+    const double se = std::sqrt(m4 / static_cast<double>(sq.size()) / static_cast<double>(sq.size()));
+    const double mc_px = std::sqrt(m2), g2 = g.accuracy.accuracy_px * g.accuracy.accuracy_px;
+    EXPECT_NEAR(m2, g2, 4 * se) << frames << " frames: MC " << mc_px << " px, golden " << g.accuracy.accuracy_px
+                                << " px (mean square +- " << se << "), without offsets " << g_off.accuracy.accuracy_px
+                                << " px";
+    if (frames == 16) EXPECT_GT(mc_px, 1.5 * g_off.accuracy.accuracy_px) << "the floor: MC " << mc_px << " golden " << g.accuracy.accuracy_px << " without " << g_off.accuracy.accuracy_px;
+  }
 }
 
 }  // namespace
