@@ -46,7 +46,12 @@ std::vector<ParamSpec> fixed_pattern_specs(const std::string& dsnu_unit, double 
 std::vector<ParamSpec> blur_specs(bool own_wavelength) {
   using K = ParamKind;
   std::vector<ParamSpec> s{
-      {"blur.psf", K::Text, "", 0, 0, false,
+      {"blur.psf",
+       K::Text,
+       "",
+       0,
+       0,
+       false,
        "optical point spread on the focal plane: none, gaussian (blur.gaussian_sigma_px) or airy (diffraction "
        "of the lens: the Gaussian of sigma 0.42 lambda F#)",
        {"none", "gaussian", "airy"}},

@@ -18,12 +18,14 @@ namespace rangesim {
 // Fixed pattern of one chip: every pixel's gain and dark signal differ from the mean by a draw
 // that is the same in every frame (a chip is made once), keyed by `seed`.
 struct FixedPatternConfig {
-  double prnu_fraction = 0;          // photo-response non-uniformity: rms relative gain spread
-  double dsnu_rms = 0;               // dark-signal non-uniformity: rms in the sensor's unit (A or Hz)
-  double tap_mismatch_fraction = 0;  // two-tap pixels: rms relative gain spread of each tap
+  double prnu_fraction = 0;            // photo-response non-uniformity: rms relative gain spread
+  double dsnu_rms = 0;                 // dark-signal non-uniformity: rms in the sensor's unit (A or Hz)
+  double tap_mismatch_fraction = 0;    // two-tap pixels: rms relative gain spread of each tap
   double comparator_offset_rms_V = 0;  // comparator pixels: rms offset at the comparator input
-  std::uint64_t seed = 1;            // the chip
-  bool any() const { return prnu_fraction > 0 || dsnu_rms > 0 || tap_mismatch_fraction > 0 || comparator_offset_rms_V > 0; }
+  std::uint64_t seed = 1;              // the chip
+  bool any() const {
+    return prnu_fraction > 0 || dsnu_rms > 0 || tap_mismatch_fraction > 0 || comparator_offset_rms_V > 0;
+  }
 };
 
 enum class PsfKind { None, Gaussian, Airy };
@@ -31,10 +33,10 @@ enum class PsfKind { None, Gaussian, Airy };
 // Optical point spread (on the focal plane) and the pixels' electrical/optical crosstalk.
 struct BlurConfig {
   PsfKind psf = PsfKind::None;
-  double gaussian_sigma_px = 0;  // psf = gaussian: sigma in pixels
-  double wavelength_m = 850e-9;  // psf = airy: the light's wavelength
-  double f_number = 1.4;         // psf = airy: the lens F#
-  double pitch_m = 10e-6;        // psf = airy: the pixel pitch (sigma in pixels)
+  double gaussian_sigma_px = 0;   // psf = gaussian: sigma in pixels
+  double wavelength_m = 850e-9;   // psf = airy: the light's wavelength
+  double f_number = 1.4;          // psf = airy: the lens F#
+  double pitch_m = 10e-6;         // psf = airy: the pixel pitch (sigma in pixels)
   double crosstalk_fraction = 0;  // share of a pixel's signal that lands on its 4 neighbours (1/4 each)
   bool any() const { return psf_sigma_px() > 0 || crosstalk_fraction > 0; }
   // The PSF as a Gaussian of this sigma on the focal plane, in pixels. Airy: the Gaussian that

@@ -72,7 +72,8 @@ Classification classify(const LsDemodulationConfig& cfg, double signal_A, double
   c.row_false_activation = std::clamp(c.row_false_activation, 0.0, 1.0);
   if (c.background.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;
-  else if (reaches_threshold(c.background.out.diff_V, vcmp) || c.row_false_activation > cfg.comparator.false_activation_max)
+  else if (reaches_threshold(c.background.out.diff_V, vcmp) ||
+           c.row_false_activation > cfg.comparator.false_activation_max)
     c.detect = DemodDetect::BackgroundActivation;
   else if (c.peak.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;

@@ -32,7 +32,7 @@ double mixed_range_m(const TofLockinConfig& cfg, const std::vector<LightReturn>&
 
 double offset_shot_var_V2(const TofLockinConfig& cfg, int tap) {
   if (!cfg.nonideal.offset_shot_noise) return 0.0;
-  const double g = volts_per_electron(cfg, tap);  // A_sf q / C
+  const double g = volts_per_electron(cfg, tap);                                         // A_sf q / C
   const double n_off = cfg.pixel.offset_voltage_V * cfg.pixel.source_follower_gain / g;  // C V_offset / q
   return g * g * n_off;
 }
@@ -51,8 +51,8 @@ double fixed_pattern_range_m(const TofLockinConfig& cfg, const FrameCharge& c, d
   double var_off = 0;
   if (!ambient) {
     const double n = static_cast<double>(cfg.gates.accumulations_per_frame);
-    const double dsnu_V = volts_per_electron(cfg, 0) * fp.dsnu_rms * n * repetition_period_s(cfg.source) /
-                          phys::kElementaryCharge_C;
+    const double dsnu_V =
+        volts_per_electron(cfg, 0) * fp.dsnu_rms * n * repetition_period_s(cfg.source) / phys::kElementaryCharge_C;
     const double o = std::hypot(dsnu_V, cfg.noise.fixed_pattern_rms_V);
     const double r = fixed_pattern_range_rms_m(K, mu_a, mu_b, o);
     var_off = r * r;

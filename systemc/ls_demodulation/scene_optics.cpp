@@ -38,9 +38,10 @@ DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig&
   if (in.light.present) {
     const NativeLight n = native_light(in, rad, &s.notes);
     if (in.has("beam.signal_A") || in.has("background.photocurrent_A"))
-      s.notes.push_back(fmt::format("{}: beam.signal_A / background.photocurrent_A override [ambient] / [source] for "
-                                    "ls-demodulation",
-                                    path));
+      s.notes.push_back(
+          fmt::format("{}: beam.signal_A / background.photocurrent_A override [ambient] / [source] for "
+                      "ls-demodulation",
+                      path));
     if (!in.has("beam.signal_A")) s.signal_A = n.signal_at(s.distance_m);
     if (!in.has("background.photocurrent_A")) s.background_A = n.background;
     // The first stripe near column 3 at the scene's distance, unless the file aims the beam.

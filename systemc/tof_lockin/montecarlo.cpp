@@ -63,7 +63,7 @@ class Runner : public McPointRunner {
   bool aggregate_;
   std::uint64_t key_;
   systemc::lockin::LockinPixelStimulus stim_;
-  std::vector<systemc::lockin::LockinPixelStimulus> stim_now_;  // stim_ with the trial's chip
+  std::vector<systemc::lockin::LockinPixelStimulus> stim_now_;    // stim_ with the trial's chip
   std::optional<systemc::lockin::TofLockinSensorKernel> kernel_;  // built at the first trial
 };
 

@@ -46,8 +46,8 @@ void apply_blur(const TofLockinConfig& cfg, std::vector<LockinPixelStimulus>& st
   st = std::move(out);
 }
 
-void apply_fixed_pattern(const TofLockinConfig& cfg, std::uint64_t seed, std::vector<LockinPixelStimulus>& st,
-                         int rows, int columns, int first_row, int first_column) {
+void apply_fixed_pattern(const TofLockinConfig& cfg, std::uint64_t seed, std::vector<LockinPixelStimulus>& st, int rows,
+                         int columns, int first_row, int first_column) {
   const FixedPatternConfig& fp = cfg.nonideal.fixed_pattern;
   if (!fp.any()) return;
   for (int r = 0; r < rows; ++r)

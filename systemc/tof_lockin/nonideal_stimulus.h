@@ -20,8 +20,8 @@ void add_multipath(const TofLockinConfig& cfg, std::vector<LockinPixelStimulus>&
 void apply_blur(const TofLockinConfig& cfg, std::vector<LockinPixelStimulus>& st, int rows, int columns);
 
 // The fixed pattern of chip `seed` on pixels (first_row + r, first_column + c).
-void apply_fixed_pattern(const TofLockinConfig& cfg, std::uint64_t seed, std::vector<LockinPixelStimulus>& st,
-                         int rows, int columns, int first_row = 0, int first_column = 0);
+void apply_fixed_pattern(const TofLockinConfig& cfg, std::uint64_t seed, std::vector<LockinPixelStimulus>& st, int rows,
+                         int columns, int first_row = 0, int first_column = 0);
 
 // All three, in the order light meets them: multipath, the optics, the chip (fixed_pattern.seed).
 void apply_nonideal(const TofLockinConfig& cfg, std::vector<LockinPixelStimulus>& st, int rows, int columns);

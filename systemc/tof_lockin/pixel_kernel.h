@@ -49,12 +49,12 @@ class LockinPixelKernel {
 
  private:
   double draw_poisson(const LockinSimOptions& o, double mean);
-  double fd_e_[2] = {0, 0};    // electrons on FD1 / FD2 (integer-valued with noise)
-  double pg_e_ = 0;            // mean electrons on the photogate in the open window
-  double ktc_V_[2] = {0, 0};   // kTC reset noise on each FD (at the FD)
-  double read_V_[2] = {0, 0};  // read noise of each tap's sample
+  double fd_e_[2] = {0, 0};          // electrons on FD1 / FD2 (integer-valued with noise)
+  double pg_e_ = 0;                  // mean electrons on the photogate in the open window
+  double ktc_V_[2] = {0, 0};         // kTC reset noise on each FD (at the FD)
+  double read_V_[2] = {0, 0};        // read noise of each tap's sample
   double offset_dev_e_[2] = {0, 0};  // offset charge of this frame minus its mean (its shot noise)
-  pcg32 rng_;                  // the pixel's stream for this frame
+  pcg32 rng_;                        // the pixel's stream for this frame
 };
 
 }  // namespace rangesim::systemc::lockin

@@ -115,8 +115,8 @@ bool TofLockinSensorKernel::step() {
           // The pixel's fixed pattern: each tap's gain on its photo charge, its own dark current.
           const LockinPixelStimulus& sp = stim_[p];
           for (int k = 0; k < 2; ++k)
-            mean[2 * p + k] = sp.tap_gain[k] * (g[k] + leak * g[2]) +
-                              (cfg_.noise.dark_current_A + sp.dark_extra_A[k]) * dark_per_A;
+            mean[2 * p + k] =
+                sp.tap_gain[k] * (g[k] + leak * g[2]) + (cfg_.noise.dark_current_A + sp.dark_extra_A[k]) * dark_per_A;
         }
       }
       for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate(opt_, &mean[2 * p]);

@@ -274,9 +274,8 @@ GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& 
                                      int first_column) {
   const int cpt = static_cast<int>(pixels.size()), np = bins.phase_bins, nc = bins.codes;
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
-  const double uniform_Hz =
-      (noise.background ? pixels.front().background_Hz : 0.0) +
-      (noise.dark ? cfg.spad.dark_count_rate_Hz + pixels.front().dark_extra_Hz : 0.0);
+  const double uniform_Hz = (noise.background ? pixels.front().background_Hz : 0.0) +
+                            (noise.dark ? cfg.spad.dark_count_rate_Hz + pixels.front().dark_extra_Hz : 0.0);
   GroupHistogram g;
   g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
   g.armed.assign(static_cast<size_t>(nc), 0);

@@ -31,9 +31,8 @@ McResult monte_carlo(const TofLockinConfig& cfg, double is, double ib, double L,
   // The offset charge C V_offset / q is Poisson too when its shot noise is on: drawn with the rest.
   const auto read = [&](int k, double mean_e) {
     const double g = volts_per_electron(cfg, k);
-    const double n_off = cfg.nonideal.offset_shot_noise
-                             ? cfg.pixel.source_follower_gain * cfg.pixel.offset_voltage_V / g
-                             : 0.0;
+    const double n_off =
+        cfg.nonideal.offset_shot_noise ? cfg.pixel.source_follower_gain * cfg.pixel.offset_voltage_V / g : 0.0;
     std::poisson_distribution<long long> pois(mean_e + n_off);
     const double v = g * (static_cast<double>(pois(rng)) - n_off) +
                      cfg.pixel.source_follower_gain * cfg.pixel.offset_voltage_V + ktc_noise_V(cfg, k) * gauss(rng) +

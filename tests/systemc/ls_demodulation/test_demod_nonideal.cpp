@@ -104,7 +104,10 @@ TEST(DemodNonideal, ComparatorOffsetsAgainstMonteCarloAndTheirFloor) {
     EXPECT_NEAR(m2, g2, 4 * se) << frames << " frames: MC " << mc_px << " px, golden " << g.accuracy.accuracy_px
                                 << " px (mean square +- " << se << "), without offsets " << g_off.accuracy.accuracy_px
                                 << " px";
-    if (frames == 16) EXPECT_GT(mc_px, 1.5 * g_off.accuracy.accuracy_px) << "the floor: MC " << mc_px << " golden " << g.accuracy.accuracy_px << " without " << g_off.accuracy.accuracy_px;
+    if (frames == 16)
+      EXPECT_GT(mc_px, 1.5 * g_off.accuracy.accuracy_px)
+          << "the floor: MC " << mc_px << " golden " << g.accuracy.accuracy_px << " without "
+          << g_off.accuracy.accuracy_px;
   }
 }
 

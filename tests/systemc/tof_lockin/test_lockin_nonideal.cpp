@@ -60,8 +60,8 @@ double ideal_range_m(const TofLockinConfig& cfg) {
 
 TEST(LockinNonideal, TapMismatchAndPrnuSpreadIsGoldensFixedPattern) {
   // Ambient frame on: PRNU cancels in the ratio, the tap mismatch stays (sqrt 2 K m a b / s^2).
-  const TofLockinConfig cfg = fine_adc({{"fixed_pattern", "prnu_fraction", "0.02"},
-                                        {"fixed_pattern", "tap_mismatch_fraction", "0.01"}});
+  const TofLockinConfig cfg =
+      fine_adc({{"fixed_pattern", "prnu_fraction", "0.02"}, {"fixed_pattern", "tap_mismatch_fraction", "0.01"}});
   const golden::LockinPoint p = golden::evaluate_point(cfg, signal_A(cfg), 1e-11, kDistance_m, 1);
   ASSERT_EQ(p.detect, golden::LockinDetect::Detectable);
   ASSERT_GT(p.fpn_m, 0.01);
@@ -160,14 +160,14 @@ TEST(LockinNonideal, BlurMakesFlyingPixelsAtADepthStep) {
 }
 
 TEST(LockinNonideal, MultipathBiasesTheRangeAsGoldenSays) {
-  const TofLockinConfig cfg = fine_adc({{"multipath", "relative_amplitude", "0.3"}, {"multipath", "extra_path_m", "3.0"}});
+  const TofLockinConfig cfg =
+      fine_adc({{"multipath", "relative_amplitude", "0.3"}, {"multipath", "extra_path_m", "3.0"}});
   const double I = signal_A(cfg), d = golden::round_trip_delay_s(kDistance_m);
   std::vector<LockinPixelStimulus> st = test::uniform(1, I, 0, kDistance_m);
   add_multipath(cfg, st);
   TofLockinSensorKernel k(cfg, LockinSimOptions{false, true, true, 1}, 1, 1, st, 2);
   k.run();
-  const double expected =
-      golden::mixed_range_m(cfg, {{I, d}, {0.3 * I, d + 3.0 / phys::kSpeedOfLight_m_per_s}});
+  const double expected = golden::mixed_range_m(cfg, {{I, d}, {0.3 * I, d + 3.0 / phys::kSpeedOfLight_m_per_s}});
   EXPECT_NEAR(k.range_m(0, 0, 0), expected, 2e-3);
   EXPECT_GT(expected - kDistance_m, 0.2);  // a longer path: the range reads long
   // Golden's evaluation carries the same second return.
