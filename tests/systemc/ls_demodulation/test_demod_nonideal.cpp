@@ -49,7 +49,7 @@ TEST(DemodNonideal, ComparatorOffsetEntersEveryDecisionOfItsPixel) {
 TEST(DemodNonideal, FixedPatternHasItsRmsAndIsTheSameEveryFrame) {
   LsDemodulationConfig c = test::preset_config();
   c.fixed_pattern.prnu_fraction = 0.02;
-  c.fixed_pattern.comparator_offset_rms_V = 2e-3;
+  c.fixed_pattern.comparator_offset_rms_V = 1e-3;
   DemodStimulus a, b;
   for (DemodStimulus* s : {&a, &b}) {
     s->beam_A.assign(static_cast<std::size_t>(c.pixel.rows) * c.pixel.columns, 1e-9);
