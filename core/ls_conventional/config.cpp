@@ -21,8 +21,11 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.pixel.pd_capacitance_F = p.real("pixel.pd_capacitance_F");
   c.pixel.source_follower_gain = p.real("pixel.source_follower_gain");
   c.pixel.saturation_voltage_V = p.real("pixel.saturation_voltage_V");
-  c.pixel.dark_current_A = p.real("pixel.dark_current_A");
   c.pixel.temperature_K = p.real("pixel.temperature_K");
+  c.dark = read_dark_temperature(p);
+  // The preset gives the dark current at the reference temperature; the models take it at the
+  // sensor's (core/nonideal.h).
+  c.pixel.dark_current_A = p.real("pixel.dark_current_A") * c.dark.scale(c.pixel.temperature_K);
   c.pixel.read_noise_V = p.real("pixel.read_noise_V");
   c.pixel.columns = static_cast<int>(p.integer("pixel.columns"));
   c.pixel.rows = static_cast<int>(p.integer("pixel.rows"));

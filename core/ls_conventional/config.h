@@ -2,6 +2,7 @@
 // Configuration of the ls-conventional sensor (thesis [31]), one struct per block. The same
 // structs feed the golden model (arguments), the SystemC kernels (constructors) and the RTL
 // (Verilog parameters), so the three views cannot drift apart.
+#include "core/nonideal.h"
 #include "core/params.h"
 
 namespace rangesim {
@@ -12,7 +13,7 @@ struct PixelConfig {
   double pd_capacitance_F = 40e-15;     // well capacity C_pd
   double source_follower_gain = 1.0;    // A_sf
   double saturation_voltage_V = 1.741;  // swing at which the pixel saturates
-  double dark_current_A = 1e-15;        // dark current (adds to the photocurrent, with its shot noise)
+  double dark_current_A = 1e-15;        // dark current at temperature_K (adds to the photocurrent, with its shot noise)
   double temperature_K = 300.0;         // for the kTC reset noise
   double read_noise_V = 0.0;            // per-frame input-referred SF/comparator noise, rms
   int columns = 375;                    // pixels per row
@@ -105,6 +106,7 @@ struct LsConventionalConfig {
   EvaluationGridConfig grid;
   LsValidityConfig validity;
   LsSimulationConfig simulation;
+  DarkTemperatureConfig dark;  // pixel.dark_current_A is already scaled to pixel.temperature_K
 };
 
 // The clock schedule of one frame access, one formula each (golden/ls_conventional/frame_timing,

@@ -1,5 +1,6 @@
 // Schema of presets/ls-conventional.toml (thesis [31], Table 3.1).
 #include "core/ls_conventional/config.h"
+#include "core/nonideal.h"
 #include "core/schemas.h"
 #include "core/sensor_registry.h"
 
@@ -7,7 +8,7 @@ namespace rangesim {
 
 const ParamSchema& ls_conventional_schema() {
   using K = ParamKind;
-  static const ParamSchema schema{
+  static const ParamSchema base{
       "ls-conventional",
       {
           // Pixel front-end (thesis eq. 3.1-3.4).
@@ -15,8 +16,10 @@ const ParamSchema& ls_conventional_schema() {
           {"pixel.pd_capacitance_F", K::Real, "F", 0, 1e-9, true, "photodiode well capacity C_pd (eq. 3.1)"},
           {"pixel.source_follower_gain", K::Real, "", 0, 10, true, "source-follower gain A_sf (eq. 3.4)"},
           {"pixel.saturation_voltage_V", K::Real, "V", 0, 10, true, "pixel swing at saturation V_sat (eq. 3.3)"},
-          {"pixel.dark_current_A", K::Real, "A", 0, 1e-9, false, "photodiode dark current"},
-          {"pixel.temperature_K", K::Real, "K", 0, 500, true, "temperature for kTC reset noise"},
+          {"pixel.dark_current_A", K::Real, "A", 0, 1e-9, false,
+           "photodiode dark current at dark.reference_temperature_K (scaled to pixel.temperature_K)"},
+          {"pixel.temperature_K", K::Real, "K", 0, 500, true,
+           "sensor temperature: kTC reset noise and the dark current's temperature law"},
           {"pixel.read_noise_V", K::Real, "V", 0, 1, false,
            "input-referred source-follower/comparator noise, rms, per frame"},
           {"pixel.columns", K::Integer, "", 1, 4096, false, "pixels per row (search direction)"},
@@ -81,6 +84,8 @@ const ParamSchema& ls_conventional_schema() {
            "draw each noisy pixel's first firing sampling from its exact distribution and skip pixels whose "
            "outcome is certain to 2^-56 (false: every noise term drawn and compared at every sampling)"},
       }};
+  // The non-idealities' keys (core/nonideal.h).
+  static const ParamSchema schema = with_specs(base, {dark_temperature_specs()});
   return schema;
 }
 

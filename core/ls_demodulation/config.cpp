@@ -43,7 +43,9 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
   c.comparator.false_activation_max = p.real("comparator.false_activation_max");
 
   c.noise.temperature_K = p.real("noise.temperature_K");
-  c.noise.dark_current_A = p.real("noise.dark_current_A");
+  c.dark = read_dark_temperature(p);
+  c.noise.dark_current_A = p.real("noise.dark_current_A") * c.dark.scale(c.noise.temperature_K);
+  c.fixed_pattern = read_fixed_pattern(p, "A", false, true);
   c.noise.read_noise_V = p.real("noise.read_noise_V");
   c.noise.fixed_pattern_rms_V = p.real("noise.fixed_pattern_rms_V");
 
@@ -56,6 +58,7 @@ LsDemodulationConfig ls_demodulation_from_params(const ParamSet& p) {
 
   c.optics.focal_length_m = p.real("optics.focal_length_m");
   c.optics.f_number = p.real("optics.f_number");
+  c.blur = read_blur(p, 0.0, c.optics.f_number, c.pixel.pitch_m);
   c.optics.baseline_m = p.real("optics.baseline_m");
   c.optics.distance_m = p.real("optics.distance_m");
   c.distance_min_m = p.real("optics.distance_min_m");

@@ -5,6 +5,7 @@
 // readout -> triangulation. The spot and triangulation geometry are shared with ls-conventional
 // (SpotConfig, OpticsConfig), as is the light-section position readout.
 #include "core/ls_conventional/config.h"
+#include "core/nonideal.h"
 #include "core/params.h"
 
 namespace rangesim {
@@ -103,6 +104,9 @@ struct LsDemodulationConfig {
   DemodGridConfig grid;
   double min_detecting_fraction = 0;  // a row's range counts when this fraction of the decisions found the spot
   double edge_margin_px = 1.5;        // ... and its centre lies this far inside the first and last column
+  FixedPatternConfig fixed_pattern;   // PRNU, DSNU (A), comparator offset per pixel (core/nonideal.h)
+  BlurConfig blur;                    // point spread and crosstalk of the scene runs
+  DarkTemperatureConfig dark;         // noise.dark_current_A is already scaled to noise.temperature_K
 };
 
 // Builds the config from a validated preset; throws UserError on cross-key inconsistencies

@@ -4,6 +4,7 @@
 // correlation frequency (eq. 2.13) -> comparator V_out+ - V_out- >= V_cmp (eq. 2.12) -> position
 // readout -> centroid (eq. 3.18-3.22) -> triangulation.
 #include "core/ls_demodulation/config.h"
+#include "core/nonideal.h"
 #include "core/schemas.h"
 #include "core/sensor_registry.h"
 
@@ -11,7 +12,7 @@ namespace rangesim {
 
 const ParamSchema& ls_demodulation_schema() {
   using K = ParamKind;
-  static const ParamSchema schema{
+  static const ParamSchema base{
       "ls-demodulation",
       {
           // Pixel array and photo-integration.
@@ -66,10 +67,13 @@ const ParamSchema& ls_demodulation_schema() {
           // Noise.
           {"noise.temperature_K", K::Real, "K", 0, 500, true, "temperature for kTC and thermal noise"},
           {"noise.dark_current_A", K::Real, "A", 0, 1e-9, false,
-           "photodiode dark current (adds to I_dc, with its shot noise)"},
+           "photodiode dark current at dark.reference_temperature_K, scaled to noise.temperature_K (adds to I_dc, with "
+           "its shot noise)"},
           {"noise.read_noise_V", K::Real, "V", 0, 1, false,
            "source-follower/comparator noise on V_out+ - V_out-, rms, per output"},
-          {"noise.fixed_pattern_rms_V", K::Real, "V", 0, 1, false, "pixel-to-pixel comparator offset, rms (0 = off)"},
+          {"noise.fixed_pattern_rms_V", K::Real, "V", 0, 1, false,
+           "comparator offset, rms, drawn anew at every decision (a noise; fixed_pattern.comparator_offset_rms_V is "
+           "the offset fixed per pixel; 0 = off)"},
           // Beam spot on the focal plane (eq. 3.18).
           {"spot.fwhm_px", K::Real, "px", 0, 100, true, "FWHM of the Gaussian sheet-beam profile across a row"},
           {"spot.sigma_per_fwhm", K::Real, "", 0, 1, true, "sigma / FWHM (exact Gaussian 0.4247; thesis writes 0.45)"},
@@ -109,6 +113,9 @@ const ParamSchema& ls_demodulation_schema() {
            "a row's centre counts only this far inside the array's first and last column: nearer, the spot may "
            "be clipped by the edge and its centre pulled inward"},
       }};
+  // The non-idealities' keys (core/nonideal.h).
+  static const ParamSchema schema =
+      with_specs(base, {fixed_pattern_specs("A", 1e-6, false, true), blur_specs(true), dark_temperature_specs()});
   return schema;
 }
 
@@ -125,7 +132,7 @@ const SensorInfo& ls_demodulation_sensor_info() {
                                           {"scene.name", "beam.signal_A", "background.photocurrent_A"},
                                           false,
                                           false},
-      &ls_demodulation_radiometry};
+                               &ls_demodulation_radiometry};
   return info;
 }
 

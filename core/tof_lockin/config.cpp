@@ -56,7 +56,12 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
   c.readout.output_cycles_per_row = p.integer("readout.output_cycles_per_row");
 
   c.noise.temperature_K = p.real("noise.temperature_K");
-  c.noise.dark_current_A = p.real("noise.dark_current_A");
+  c.nonideal.dark = read_dark_temperature(p);
+  c.noise.dark_current_A = p.real("noise.dark_current_A") * c.nonideal.dark.scale(c.noise.temperature_K);
+  c.nonideal.fixed_pattern = read_fixed_pattern(p, "A", true, false);
+  c.nonideal.blur = read_blur(p, c.source.wavelength_m, c.optics.f_number, c.pixel.pitch_m);
+  c.nonideal.multipath = read_multipath(p);
+  c.nonideal.offset_shot_noise = p.boolean("offset_charge.shot_noise");
   c.noise.read_noise_V = p.real("noise.read_noise_V");
   c.noise.fixed_pattern_rms_V = p.real("noise.fixed_pattern_rms_V");
 

@@ -6,6 +6,7 @@
 // a Lockin prefix where a plain name (PixelConfig) is already taken by another sensor.
 #include <cmath>
 
+#include "core/nonideal.h"
 #include "core/params.h"
 
 namespace rangesim {
@@ -85,6 +86,17 @@ struct LockinEvaluationConfig {
   int distance_points = 45;
 };
 
+// Non-idealities (core/nonideal.h; docs/model-limits.md): the chip's fixed pattern (PRNU of the
+// photogate, DSNU of each FD's dark current in A, tap gain mismatch), the point spread and
+// crosstalk, a second return, and the Poisson statistics of the offset charge.
+struct LockinNonidealConfig {
+  FixedPatternConfig fixed_pattern;
+  BlurConfig blur;
+  MultipathConfig multipath;
+  DarkTemperatureConfig dark;     // noise.dark_current_A is already scaled to noise.temperature_K
+  bool offset_shot_noise = true;  // the offset charge V_offset C / q on each FD is Poisson
+};
+
 struct TofLockinConfig {
   LockinPixelConfig pixel;
   LockinOpticsConfig optics;
@@ -93,6 +105,7 @@ struct TofLockinConfig {
   LockinReadoutConfig readout;
   LockinNoiseConfig noise;
   LockinEvaluationConfig eval;
+  LockinNonidealConfig nonideal;
 };
 
 // Builds the config from a validated preset; throws UserError naming file and keys on cross-key

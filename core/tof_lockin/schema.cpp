@@ -4,6 +4,7 @@
 // column ADC (eq. 4.9) -> optional ambient-frame subtraction -> L = c T0 (V2 - V_off) /
 // (2 (V1 + V2 - 2 V_off)) (eq. 2.25) -> frame averaging. Config struct: core/tof_lockin/config.h.
 #include "core/tof_lockin/config.h"
+#include "core/nonideal.h"
 #include "core/schemas.h"
 #include "core/sensor_registry.h"
 
@@ -11,7 +12,7 @@ namespace rangesim {
 
 const ParamSchema& tof_lockin_schema() {
   using K = ParamKind;
-  static const ParamSchema schema{
+  static const ParamSchema base{
       "tof-lockin",
       {
           // Pixel: photogate, two floating diffusions, source followers (eq. 2.17-2.25).
@@ -73,7 +74,8 @@ const ParamSchema& tof_lockin_schema() {
            "clock cycles to shift out one row of converted values"},
           // Noise.
           {"noise.temperature_K", K::Real, "K", 0, 500, true, "temperature for kTC reset noise"},
-          {"noise.dark_current_A", K::Real, "A", 0, 1e-9, false, "dark current into each FD, per pixel"},
+          {"noise.dark_current_A", K::Real, "A", 0, 1e-9, false,
+           "dark current into each FD, per pixel, at dark.reference_temperature_K (scaled to noise.temperature_K)"},
           {"noise.read_noise_V", K::Real, "V", 0, 1, false, "source-follower and ADC input noise, rms, per sample"},
           {"noise.fixed_pattern_rms_V", K::Real, "V", 0, 1, false, "pixel-to-pixel offset, rms (0 = off)"},
           // Default evaluation grid (thesis Fig. 4.4-4.6).
@@ -85,12 +87,22 @@ const ParamSchema& tof_lockin_schema() {
           {"evaluation.background_max_A", K::Real, "A", 0, 1, true, "highest background photocurrent of the grid"},
           {"evaluation.background_points", K::Integer, "", 1, 10000, false, "log-spaced background points"},
           {"evaluation.frames_averaged", K::Integer, "", 1, 100000, false,
-           "frames N averaged per range value (accuracy ~ 1/sqrt(N))"},
+           "frames N averaged per range value (the noise falls as 1/sqrt(N), the fixed pattern does not)"},
           {"evaluation.distance_m", K::Real, "m", 0, 1e4, true, "target distance for single-point figures"},
           {"evaluation.distance_min_m", K::Real, "m", 0, 1e4, false, "nearest target distance of the evaluation"},
           {"evaluation.distance_max_m", K::Real, "m", 0, 1e4, true, "farthest target distance (at most c T0 / 2)"},
           {"evaluation.distance_points", K::Integer, "", 1, 100000, false, "linearly spaced distance points"},
       }};
+  // The non-idealities' keys (core/nonideal.h).
+  static const ParamSchema schema = with_specs(
+      base,
+      {fixed_pattern_specs("A", 1e-9, true, false),
+       blur_specs(false),
+       dark_temperature_specs(),
+       multipath_specs(),
+       {{"offset_charge.shot_noise", ParamKind::Boolean, "", 0, 0, false,
+         "true: the offset charge on each FD (pixel.offset_voltage_V x C, deep electrons) is Poisson, drawn every "
+         "frame"}}});
   return schema;
 }
 

@@ -28,7 +28,10 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   c.array.focal_length_m = p.real("optics.focal_length_m");
   c.array.f_number = p.real("optics.f_number");
   c.spad.fill_factor = p.real("spad.fill_factor");
-  c.spad.dark_count_rate_Hz = p.real("spad.dark_count_rate_Hz");
+  c.temperature_K = p.real("spad.temperature_K");
+  c.dark = read_dark_temperature(p);
+  c.spad.dark_count_rate_Hz = p.real("spad.dark_count_rate_Hz") * c.dark.scale(c.temperature_K);
+  c.fixed_pattern = read_fixed_pattern(p, "Hz", false, false);
   c.spad.dead_time_s = p.real("spad.dead_time_s");
   c.spad.afterpulse_probability = p.real("spad.afterpulse_probability");
   c.spad.afterpulse_time_constant_s = p.real("spad.afterpulse_time_constant_s");

@@ -2,6 +2,7 @@
 // Configuration of the tof-spad sensor (thesis [11], sections 2.4 / 4.2), one struct per block.
 // The same structs feed the golden model (golden/tof_spad/), and later the SystemC kernels and
 // the RTL of the TDC / histogram, so the views cannot drift apart.
+#include "core/nonideal.h"
 #include "core/params.h"
 
 namespace rangesim {
@@ -80,6 +81,9 @@ struct TofSpadConfig {
   TdcConfig tdc;
   SpadHistogramConfig histogram;
   SpadEvaluationConfig evaluation;
+  FixedPatternConfig fixed_pattern;  // PRNU (the PDE's spread), DSNU (the dark count rate's, Hz): core/nonideal.h
+  DarkTemperatureConfig dark;        // spad.dark_count_rate_Hz is already scaled to temperature_K
+  double temperature_K = 300;        // the sensor's
 };
 
 // Builds the config from a validated preset; throws UserError on cross-key inconsistencies

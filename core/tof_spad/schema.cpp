@@ -4,6 +4,7 @@
 // histogram over the integration time -> pile-up (Coates) correction -> centroid over the peak
 // window PW (eq. 2.34 / 4.19) -> distance.
 #include "core/tof_spad/config.h"
+#include "core/nonideal.h"
 #include "core/schemas.h"
 #include "core/sensor_registry.h"
 
@@ -11,7 +12,7 @@ namespace rangesim {
 
 const ParamSchema& tof_spad_schema() {
   using K = ParamKind;
-  static const ParamSchema schema{
+  static const ParamSchema base{
       "tof-spad",
       {
           // Pixel array.
@@ -25,7 +26,8 @@ const ParamSchema& tof_spad_schema() {
            "photon detection efficiency at the laser wavelength (per photon on the active area)"},
           {"spad.fill_factor", K::Real, "", 0, 1, true, "active area / pixel area"},
           {"spad.dark_count_rate_Hz", K::Real, "Hz", 0, 1e9, false,
-           "dark count rate (thermal and tunnelling triggers)"},
+           "dark count rate (thermal and tunnelling triggers) at dark.reference_temperature_K, scaled to "
+           "spad.temperature_K"},
           {"spad.dead_time_s", K::Real, "s", 0, 1e-3, true, "dead time after each avalanche (non-paralysable)"},
           {"spad.afterpulse_probability", K::Real, "", 0, 1, false,
            "probability that an avalanche is followed by an afterpulse"},
@@ -91,6 +93,12 @@ const ParamSchema& tof_spad_schema() {
           {"evaluation.sweep_signal_Hz", K::Real, "Hz", 0, 1e10, true,
            "fixed signal count rate of the accuracy-vs-background sweep"},
       }};
+  // The non-idealities' keys (core/nonideal.h).
+  static const ParamSchema schema =
+      with_specs(base, {fixed_pattern_specs("Hz", 1e9, false, false),
+                        dark_temperature_specs(),
+                        {{"spad.temperature_K", ParamKind::Real, "K", 0, 500, true,
+                          "sensor temperature: the dark count rate follows it (dark.*)"}}});
   return schema;
 }
 

@@ -20,7 +20,9 @@ const char* to_string(DemodDetect d) {
 PixelDecision pixel_decision(const LsDemodulationConfig& cfg, double beam_A, double background_A) {
   PixelDecision d;
   d.out = correlate_periodic(cfg, pixel_segments(cfg, beam_A, background_A), cfg.correlator.cycles);
-  const double fpn = cfg.noise.fixed_pattern_rms_V;
+  // Per-decision offset and the comparator's fixed offset: in one decision both are independent
+  // per pixel (the fixed one does not average over decisions and frames: fixed_pattern.h).
+  const double fpn = std::hypot(cfg.noise.fixed_pattern_rms_V, cfg.fixed_pattern.comparator_offset_rms_V);
   d.sigma_independent_V = std::sqrt(d.out.shot_var_V2 + ktc_variance_V2(cfg) + fpn * fpn);
   d.sigma_common_V = cfg.noise.read_noise_V;
   return d;
@@ -70,7 +72,8 @@ Classification classify(const LsDemodulationConfig& cfg, double signal_A, double
   c.row_false_activation = std::clamp(c.row_false_activation, 0.0, 1.0);
   if (c.background.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;
-  else if (reaches_threshold(c.background.out.diff_V, vcmp) || c.row_false_activation > cfg.comparator.false_activation_max)
+  else if (reaches_threshold(c.background.out.diff_V, vcmp) ||
+           c.row_false_activation > cfg.comparator.false_activation_max)
     c.detect = DemodDetect::BackgroundActivation;
   else if (c.peak.out.peak_abs_V > vsat)
     c.detect = DemodDetect::Saturated;

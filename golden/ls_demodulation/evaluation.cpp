@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "golden/ls_demodulation/fixed_pattern.h"
+
 namespace rangesim::golden {
 
 DemodPoint evaluate_demod_point(const LsDemodulationConfig& cfg, double s, double b, int K, int Np) {
@@ -14,7 +16,7 @@ DemodPoint evaluate_demod_point(const LsDemodulationConfig& cfg, double s, doubl
   p.peak_output_V = c.peak.out.diff_V;
   p.background_output_V = c.background.out.diff_V;
   p.row_false_activation = c.row_false_activation;
-  if (p.detect == DemodDetect::Detectable) p.accuracy = position_accuracy(cfg, s, b, K, Np);
+  if (p.detect == DemodDetect::Detectable) p.accuracy = accuracy_with_fixed_offsets(cfg, s, b, K, Np);
   return p;
 }
 

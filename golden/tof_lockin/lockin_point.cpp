@@ -4,6 +4,7 @@
 
 #include "golden/common/threshold.h"
 #include "golden/tof_lockin/adc_moments.h"
+#include "golden/tof_lockin/nonideal.h"
 #include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/range_estimate.h"
 #include "golden/tof_lockin/tap_charge.h"
@@ -50,7 +51,7 @@ LockinPoint evaluate_point(const TofLockinConfig& cfg, double signal_A, double b
     pt.detect = LockinDetect::OutOfRange;
     return pt;
   }
-  const FrameCharge c = frame_charge(cfg, signal_A, background_A, pt.delay_s);
+  const FrameCharge c = scene_frame_charge(cfg, signal_A, background_A, pt.delay_s);
   const TapSample on[2] = {tap_sample(cfg, 0, c.total_e(0)), tap_sample(cfg, 1, c.total_e(1))};
   const TapSample off[2] = {tap_sample(cfg, 0, c.ambient_e()), tap_sample(cfg, 1, c.ambient_e())};
   pt.v1_V = on[0].mean_V, pt.v2_V = on[1].mean_V;
@@ -95,9 +96,8 @@ LockinPoint evaluate_point(const TofLockinConfig& cfg, double signal_A, double b
     pt.detect = LockinDetect::NoiseLimited;
     return pt;
   }
-  // Fixed-pattern offsets differ per tap and pixel; the ambient frame carries the same offsets.
-  pt.fpn_m =
-      cfg.readout.ambient_subtraction ? 0.0 : fixed_pattern_range_rms_m(K, mu[0], mu[1], cfg.noise.fixed_pattern_rms_V);
+  // The chip's fixed pattern (golden/tof_lockin/nonideal.h): the same every frame, so not divided by N_p.
+  pt.fpn_m = fixed_pattern_range_m(cfg, c, mu[0], mu[1]);
   const double n_p = static_cast<double>(frames < 1 ? 1 : frames);
   pt.accuracy_m = std::sqrt(pt.bias_m * pt.bias_m + pt.fpn_m * pt.fpn_m + m.var_m2 / n_p);
   return pt;

@@ -40,7 +40,7 @@ struct LockinPoint {
   double bias_m = 0;          // E[L] - distance
   double std_m = 0;           // rms noise of one frame
   double std_first_m = 0;     // first-order part of std_m
-  double fpn_m = 0;           // rms over pixels from fixed-pattern offsets (0 with ambient subtraction)
+  double fpn_m = 0;           // rms over pixels of the chip's fixed pattern (golden/tof_lockin/nonideal.h)
   double accuracy_m = 0;      // sqrt(bias^2 + fpn^2 + std^2 / N_p)
   double snr = 0;             // SNR of the ratio's denominator (validity of the delta method)
 };

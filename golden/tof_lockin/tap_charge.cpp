@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/physics.h"
+#include "golden/tof_lockin/nonideal.h"
 #include "golden/tof_lockin/pulse_timing.h"
 
 namespace rangesim::golden {
@@ -60,7 +61,8 @@ TapSample tap_sample(const TofLockinConfig& cfg, int tap, double electrons) {
   TapSample s;
   s.fd_swing_V = electrons * g / cfg.pixel.source_follower_gain + cfg.pixel.offset_voltage_V;
   s.mean_V = cfg.pixel.source_follower_gain * s.fd_swing_V;
-  s.sigma_V = std::sqrt(g * g * electrons + ktc * ktc + cfg.noise.read_noise_V * cfg.noise.read_noise_V);
+  s.sigma_V = std::sqrt(g * g * electrons + ktc * ktc + cfg.noise.read_noise_V * cfg.noise.read_noise_V +
+                        offset_shot_var_V2(cfg, tap));
   return s;
 }
 

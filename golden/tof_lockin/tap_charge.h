@@ -17,7 +17,8 @@
 //
 // At the ADC input, V_k = A_sf (q N_k / C_k + V_offset). Noise per sample (one readout of a tap):
 // Poisson shot noise of N_k (A_sf q / C_k)^2 N_k, kTC reset noise A_sf^2 k T / C_k (unless CDS),
-// read noise sigma_read^2. The ambient frame (LED off) has the same windows without the light.
+// read noise sigma_read^2, and the offset charge's own shot noise A_sf^2 q V_offset / C_k
+// (golden/tof_lockin/nonideal.h). The ambient frame (LED off) has the same windows without the light.
 #include "core/tof_lockin/config.h"
 
 namespace rangesim::golden {

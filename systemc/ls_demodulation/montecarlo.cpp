@@ -5,6 +5,7 @@
 #include "golden/ls_demodulation/position.h"
 #include "golden/common/spot.h"
 #include "systemc/ls_demodulation/sensor_kernel.h"
+#include "systemc/ls_demodulation/nonideal_stimulus.h"
 
 namespace rangesim::mc {
 
@@ -13,7 +14,12 @@ namespace {
 class Runner : public McPointRunner {
  public:
   Runner(const LsDemodulationConfig& cfg, double signal_A, double background_A, std::uint64_t key, SpotPlacement spot)
-      : cfg_(one_row(cfg)), key_(key), spot_(spot), signal_A_(signal_A), kernel_(cfg_, options(key)) {
+      : cfg_(one_row(cfg)),
+        key_(key),
+        spot_(spot),
+        signal_A_(signal_A),
+        background_A_(background_A),
+        kernel_(cfg_, options(key)) {
     stim_.background_A.assign(static_cast<std::size_t>(cfg_.pixel.columns), background_A);
   }
 
@@ -24,6 +30,12 @@ class Runner : public McPointRunner {
     stim_.beam_A.resize(stim_.background_A.size());
     for (std::size_t c = 0; c < stim_.beam_A.size(); ++c)
       stim_.beam_A[c] = signal_A_ * golden::spot_profile(cfg_.spot, static_cast<double>(c) - x0);
+    if (cfg_.fixed_pattern.any()) {
+      // Every trial is a row of another chip (its fixed pattern keyed by the trial), so the
+      // trials' spread holds the spread over chips that golden's accuracy does.
+      stim_.background_A.assign(stim_.background_A.size(), background_A_);
+      systemc::apply_demod_fixed_pattern(cfg_, stim_, trial_key(key_, static_cast<std::uint64_t>(t)));
+    }
     double sum = 0;
     int valid = 0;
     for (int j = 0; j < frames; ++j) {
@@ -52,6 +64,7 @@ class Runner : public McPointRunner {
   std::uint64_t key_;
   SpotPlacement spot_;
   double signal_A_;
+  double background_A_;
   systemc::DemodSensorKernel kernel_;
   systemc::DemodStimulus stim_;
 };

@@ -8,6 +8,7 @@
 #include "scene/depth_map.h"
 #include "scene/physical.h"
 #include "scene/scene.h"
+#include "systemc/ls_demodulation/nonideal_stimulus.h"
 
 namespace rangesim::scene {
 
@@ -37,9 +38,10 @@ DemodScene load_demod_scene(const std::string& path, const LsDemodulationConfig&
   if (in.light.present) {
     const NativeLight n = native_light(in, rad, &s.notes);
     if (in.has("beam.signal_A") || in.has("background.photocurrent_A"))
-      s.notes.push_back(fmt::format("{}: beam.signal_A / background.photocurrent_A override [ambient] / [source] for "
-                                    "ls-demodulation",
-                                    path));
+      s.notes.push_back(
+          fmt::format("{}: beam.signal_A / background.photocurrent_A override [ambient] / [source] for "
+                      "ls-demodulation",
+                      path));
     if (!in.has("beam.signal_A")) s.signal_A = n.signal_at(s.distance_m);
     if (!in.has("background.photocurrent_A")) s.background_A = n.background;
     // The first stripe near column 3 at the scene's distance, unless the file aims the beam.
@@ -98,6 +100,8 @@ void DemodOptics::stimulus(std::uint64_t f, systemc::DemodStimulus& s) const {
       s.beam_A[static_cast<std::size_t>(r) * C + c] =
           sc.signal_A * std::exp(-(c - x0) * (c - x0) / (2 * sigma * sigma));
   }
+  systemc::apply_demod_blur(cfg, s);           // the lens and the pixels' crosstalk
+  systemc::apply_demod_fixed_pattern(cfg, s);  // the chip
 }
 
 }  // namespace rangesim::scene

@@ -107,8 +107,10 @@ void DemodSensorKernel::decide() {
     const double o = opt_.noise.read ? n * cfg_.noise.read_noise_V : 0.0;
     ActivationRow act(columns_);
     for (int c = 0; c < columns_; ++c) {
-      const double d = pixels_[static_cast<std::size_t>(r) * columns_ + c].diff_V();
-      if (d + o >= cfg_.comparator.threshold_V) act.set(c);
+      const std::size_t i = static_cast<std::size_t>(r) * columns_ + c;
+      const double d = pixels_[i].diff_V();
+      const double offset = stim_.comparator_offset_V.empty() ? 0.0 : stim_.comparator_offset_V[i];
+      if (d + o + offset >= cfg_.comparator.threshold_V) act.set(c);
       if (opt_.keep_analogue) res_.diff_V.push_back(d);
     }
     if (opt_.keep_analogue) res_.read_offset_V.push_back(o);

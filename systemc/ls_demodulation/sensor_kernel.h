@@ -35,8 +35,9 @@ namespace rangesim::systemc {
 
 // Light on the array during one frame, row-major [row * columns + column].
 struct DemodStimulus {
-  std::vector<double> beam_A;        // beam-on photocurrent (square at f0, source duty cycle)
-  std::vector<double> background_A;  // constant background photocurrent (dark current added by the pixel)
+  std::vector<double> beam_A;               // beam-on photocurrent (square at f0, source duty cycle)
+  std::vector<double> background_A;         // constant background photocurrent (dark current added by the pixel)
+  std::vector<double> comparator_offset_V;  // each comparator's fixed offset on D (empty: none)
 };
 using DemodStimulusSource = std::function<void(std::uint64_t frame, DemodStimulus&)>;
 

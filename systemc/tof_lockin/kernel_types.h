@@ -33,11 +33,20 @@ struct LockinSimOptions {
   double time_step_s = 0;
 };
 
-// Per-pixel stimulus from the scene.
+// A further return of the pulse on a pixel (multipath; a neighbour's surface by the point spread).
+struct LockinEcho {
+  double signal_A = 0;  // photocurrent during the received pulse
+  double delay_s = 0;   // its round-trip delay
+};
+
+// Per-pixel stimulus from the scene (and the chip's fixed pattern, systemc/tof_lockin/nonideal_stimulus.h).
 struct LockinPixelStimulus {
-  double signal_A = 0;      // signal photocurrent during the received pulse
-  double background_A = 0;  // constant background photocurrent
-  double delay_s = 0;       // round-trip delay T_D = 2 L / c
+  double signal_A = 0;                  // signal photocurrent during the received pulse
+  double background_A = 0;              // constant background photocurrent
+  double delay_s = 0;                   // round-trip delay T_D = 2 L / c
+  std::vector<LockinEcho> echoes = {};  // further returns, each like signal_A at its own delay (usually none)
+  double tap_gain[2] = {1, 1};          // fixed pattern: relative charge gain of FD1 / FD2
+  double dark_extra_A[2] = {0, 0};      // fixed pattern: this pixel's dark current minus the mean, per FD
 };
 
 }  // namespace rangesim::systemc::lockin

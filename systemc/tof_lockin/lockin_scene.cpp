@@ -1,6 +1,7 @@
 #include "systemc/tof_lockin/lockin_scene.h"
 
 #include "golden/tof_lockin/pulse_timing.h"
+#include "systemc/tof_lockin/nonideal_stimulus.h"
 
 namespace rangesim::systemc::lockin {
 
@@ -24,6 +25,7 @@ std::vector<LockinPixelStimulus> LockinScene::stimulus(const TofLockinConfig& cf
       const double k = reference_distance_m / d;
       st.push_back({signal_photocurrent_A * k * k, background_photocurrent_A, golden::round_trip_delay_s(d)});
     }
+  apply_nonideal(cfg, st, R, C);  // multipath, point spread and crosstalk, the chip's fixed pattern
   return st;
 }
 

@@ -4,6 +4,7 @@
 
 #include "systemc/tof_lockin/montecarlo.h"
 #include "golden/tof_lockin/pulse_timing.h"
+#include "systemc/tof_lockin/nonideal_stimulus.h"
 #include "systemc/tof_lockin/sensor_kernel.h"
 
 namespace rangesim::mc {
@@ -25,11 +26,21 @@ class Runner : public McPointRunner {
     // One kernel for all the point's trials, restarted with the trial's streams: (trial key,
     // frame, row 0, column 0), the same bits as a kernel built per trial.
     const std::uint64_t seed = trial_key(key_, static_cast<std::uint64_t>(t));
+    // Every trial is a pixel of another chip (its fixed pattern keyed by the trial), so the
+    // trials' spread holds the spread over pixels that golden's fpn_m is; one pixel of a uniform
+    // plane: the point spread changes nothing there, the second return does.
+    const bool fixed_pattern = cfg_.nonideal.fixed_pattern.any();
+    if (fixed_pattern || !kernel_) {
+      std::vector<LockinPixelStimulus> st{stim_};
+      add_multipath(cfg_, st);
+      apply_fixed_pattern(cfg_, seed, st, 1, 1);
+      if (fixed_pattern) kernel_.reset();
+      stim_now_ = st;
+    }
     if (!kernel_) {
       const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
       const long long per_map = cfg_.readout.ambient_subtraction ? 2 : 1;
-      kernel_.emplace(cfg_, LockinSimOptions{true, true, aggregate_, seed}, 1, 1,
-                      std::vector<LockinPixelStimulus>{stim_}, maps * per_map);
+      kernel_.emplace(cfg_, LockinSimOptions{true, true, aggregate_, seed}, 1, 1, stim_now_, maps * per_map);
     } else {
       kernel_->restart(seed);
     }
@@ -52,6 +63,7 @@ class Runner : public McPointRunner {
   bool aggregate_;
   std::uint64_t key_;
   systemc::lockin::LockinPixelStimulus stim_;
+  std::vector<systemc::lockin::LockinPixelStimulus> stim_now_;    // stim_ with the trial's chip
   std::optional<systemc::lockin::TofLockinSensorKernel> kernel_;  // built at the first trial
 };
 

@@ -25,11 +25,14 @@ double LockinPixelKernel::generated_e(const TofLockinConfig& cfg, const LockinPi
   const double T0 = cfg.source.pulse_width_s;
   const double Trep = golden::repetition_period_s(cfg.source);
   double e = s.background_A * (t_b - t_a);
-  if (led_on && s.signal_A != 0.0) {
+  const auto add = [&](double signal_A, double delay_s) {
+    if (!led_on || signal_A == 0.0) return;
     const double eta = cfg.pixel.charge_separation;
-    const double light = golden::window_light_in_period_s(cfg.source, s.delay_s, t_a, t_b, period, time_step_s);
-    e += eta * s.signal_A * light + (1.0 - eta) * s.signal_A * T0 / Trep * (t_b - t_a);
-  }
+    const double light = golden::window_light_in_period_s(cfg.source, delay_s, t_a, t_b, period, time_step_s);
+    e += eta * signal_A * light + (1.0 - eta) * signal_A * T0 / Trep * (t_b - t_a);
+  };
+  add(s.signal_A, s.delay_s);
+  for (const LockinEcho& echo : s.echoes) add(echo.signal_A, echo.delay_s);
   return e / q;
 }
 
@@ -40,11 +43,14 @@ double LockinPixelKernel::frame_generated_e(const TofLockinConfig& cfg, const Lo
   const double Trep = golden::repetition_period_s(cfg.source);
   const double nd = static_cast<double>(n);
   double e = s.background_A * nd * (t_b - t_a);
-  if (led_on && s.signal_A != 0.0) {
+  const auto add = [&](double signal_A, double delay_s) {
+    if (!led_on || signal_A == 0.0) return;
     const double eta = cfg.pixel.charge_separation;
-    const double light = golden::window_light_in_frame_s(cfg.source, s.delay_s, t_a, t_b, n, time_step_s);
-    e += eta * s.signal_A * light + (1.0 - eta) * s.signal_A * T0 / Trep * nd * (t_b - t_a);
-  }
+    const double light = golden::window_light_in_frame_s(cfg.source, delay_s, t_a, t_b, n, time_step_s);
+    e += eta * signal_A * light + (1.0 - eta) * signal_A * T0 / Trep * nd * (t_b - t_a);
+  };
+  add(s.signal_A, s.delay_s);
+  for (const LockinEcho& echo : s.echoes) add(echo.signal_A, echo.delay_s);
   return e / q;
 }
 
@@ -52,6 +58,10 @@ LockinPixelKernel::ResetNoise LockinPixelKernel::ResetNoise::of(const TofLockinC
   ResetNoise n;
   for (int k = 0; k < 2; ++k) n.ktc_fd_V[k] = golden::ktc_noise_V(cfg, k) / cfg.pixel.source_follower_gain;
   n.read_V = cfg.noise.read_noise_V;
+  // The offset charge C V_offset / q of each FD, Poisson when its shot noise is on.
+  if (cfg.nonideal.offset_shot_noise)
+    for (int k = 0; k < 2; ++k)
+      n.offset_e[k] = cfg.pixel.offset_voltage_V * cfg.pixel.source_follower_gain / golden::volts_per_electron(cfg, k);
   return n;
 }
 
@@ -59,6 +69,7 @@ void LockinPixelKernel::reset(const ResetNoise& n, const LockinSimOptions& o, st
                               std::uint32_t column) {
   fd_e_[0] = fd_e_[1] = 0, pg_e_ = 0;
   ktc_V_[0] = ktc_V_[1] = read_V_[0] = read_V_[1] = 0;
+  offset_dev_e_[0] = offset_dev_e_[1] = 0;
   if (!o.noise) return;
   rng_ = pixel_stream(pixel_stream_key(o.seed, frame, row, column));
   // Draw order: the pair (kTC FD1, kTC FD2), the pair (read FD1, read FD2)
@@ -67,6 +78,10 @@ void LockinPixelKernel::reset(const ResetNoise& n, const LockinSimOptions& o, st
   standard_normal_pair(rng_, z[0], z[1]);
   standard_normal_pair(rng_, z[2], z[3]);
   for (int k = 0; k < 2; ++k) ktc_V_[k] = z[k] * n.ktc_fd_V[k], read_V_[k] = z[2 + k] * n.read_V;
+  // Offset charge: drawn after the Gaussian pairs, so those keep their values; kept as its
+  // deviation from the mean, which V_offset already carries.
+  for (int k = 0; k < 2; ++k)
+    if (n.offset_e[k] > 0) offset_dev_e_[k] = static_cast<double>(PoissonSampler(n.offset_e[k])(rng_)) - n.offset_e[k];
 }
 
 void LockinPixelKernel::collect(const TofLockinConfig& cfg, const LockinSimOptions& o, const LockinPixelStimulus& s,
@@ -84,13 +99,16 @@ double LockinPixelKernel::draw_poisson(const LockinSimOptions& o, double mean) {
   return static_cast<double>(PoissonSampler(mean)(rng_));
 }
 
-void LockinPixelKernel::transfer(const TofLockinConfig& cfg, const LockinSimOptions& o, int window, double period_s) {
+void LockinPixelKernel::transfer(const TofLockinConfig& cfg, const LockinSimOptions& o, const LockinPixelStimulus& s,
+                                 int window, double period_s) {
   if (window < 2) {
-    fd_e_[window] += draw_poisson(o, pg_e_);
+    fd_e_[window] += draw_poisson(o, s.tap_gain[window] * pg_e_);
   } else {
     const double leak = (1.0 - cfg.pixel.drain_efficiency) / 2.0;
-    const double dark = cfg.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
-    for (int k = 0; k < 2; ++k) fd_e_[k] += draw_poisson(o, leak * pg_e_ + dark);
+    for (int k = 0; k < 2; ++k) {
+      const double dark = (cfg.noise.dark_current_A + s.dark_extra_A[k]) * period_s / phys::kElementaryCharge_C;
+      fd_e_[k] += draw_poisson(o, s.tap_gain[k] * leak * pg_e_ + dark);
+    }
   }
   pg_e_ = 0;
 }
@@ -102,7 +120,7 @@ void LockinPixelKernel::aggregate(const LockinSimOptions& o, const double m_tota
 double LockinPixelKernel::adc_input_V(const TofLockinConfig& cfg, int tap) const {
   const double a = cfg.pixel.source_follower_gain;
   const double g = golden::volts_per_electron(cfg, tap);
-  double swing = fd_e_[tap] * g / a + cfg.pixel.offset_voltage_V;  // golden::tap_sample's form
+  double swing = (fd_e_[tap] + offset_dev_e_[tap]) * g / a + cfg.pixel.offset_voltage_V;  // golden::tap_sample's form
   swing += ktc_V_[tap];
   swing = std::min(swing, cfg.pixel.saturation_voltage_V);
   return a * swing + read_V_[tap];

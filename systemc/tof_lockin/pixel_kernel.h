@@ -23,6 +23,7 @@ class LockinPixelKernel {
   struct ResetNoise {
     double ktc_fd_V[2] = {0, 0};  // kTC rms on FD1 / FD2, at the FD
     double read_V = 0;            // read noise rms per sample
+    double offset_e[2] = {0, 0};  // mean offset charge C V_offset / q per FD (0: its shot noise off)
     static ResetNoise of(const TofLockinConfig& cfg);
   };
   // Reset of both FDs at the frame start; draws kTC and read noise (always
@@ -36,21 +37,24 @@ class LockinPixelKernel {
   // Closing edge of window w: TX1 / TX2 move the photogate charge into FD1 /
   // FD2; TXD drains it, (1 - eps) / 2 leaking into each FD, plus the dark
   // charge of the period on each FD.
-  void transfer(const TofLockinConfig& cfg, const LockinSimOptions& o, int window, double period_s);
+  // The pixel's tap gains and dark-current offsets (fixed pattern) come with its stimulus.
+  void transfer(const TofLockinConfig& cfg, const LockinSimOptions& o, const LockinPixelStimulus& s, int window,
+                double period_s);
   // Aggregation: a frame's periods in one event, mean total m[k] per tap (all
   // windows and dark).
   void aggregate(const LockinSimOptions& o, const double m_total[2]);
-  // ADC input of tap k: A_sf min(q N / C + V_offset + v_kTC, V_sat) + v_read.
+  // ADC input of tap k: A_sf min(q (N + n_off - <n_off>) / C + V_offset + v_kTC, V_sat) + v_read.
   double adc_input_V(const TofLockinConfig& cfg, int tap) const;
   double fd_e(int tap) const { return fd_e_[tap]; }
 
  private:
   double draw_poisson(const LockinSimOptions& o, double mean);
-  double fd_e_[2] = {0, 0};    // electrons on FD1 / FD2 (integer-valued with noise)
-  double pg_e_ = 0;            // mean electrons on the photogate in the open window
-  double ktc_V_[2] = {0, 0};   // kTC reset noise on each FD (at the FD)
-  double read_V_[2] = {0, 0};  // read noise of each tap's sample
-  pcg32 rng_;                  // the pixel's stream for this frame
+  double fd_e_[2] = {0, 0};          // electrons on FD1 / FD2 (integer-valued with noise)
+  double pg_e_ = 0;                  // mean electrons on the photogate in the open window
+  double ktc_V_[2] = {0, 0};         // kTC reset noise on each FD (at the FD)
+  double read_V_[2] = {0, 0};        // read noise of each tap's sample
+  double offset_dev_e_[2] = {0, 0};  // offset charge of this frame minus its mean (its shot noise)
+  pcg32 rng_;                        // the pixel's stream for this frame
 };
 
 }  // namespace rangesim::systemc::lockin

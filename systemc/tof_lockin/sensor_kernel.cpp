@@ -102,7 +102,7 @@ bool TofLockinSensorKernel::step() {
       if (mean.empty()) {
         const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
         const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
-        const double dark = static_cast<double>(n) * cfg_.noise.dark_current_A * period_s / phys::kElementaryCharge_C;
+        const double dark_per_A = static_cast<double>(n) * period_s / phys::kElementaryCharge_C;
         double t[3][2];
         for (int w = 0; w < 3; ++w)
           t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
@@ -112,8 +112,11 @@ bool TofLockinSensorKernel::step() {
           double g[3];
           for (int w = 0; w < 3; ++w)
             g[w] = LockinPixelKernel::frame_generated_e(cfg_, stim_[p], on, t[w][0], t[w][1], n, opt_.time_step_s);
-          mean[2 * p] = g[0] + (leak * g[2] + dark);
-          mean[2 * p + 1] = g[1] + (leak * g[2] + dark);
+          // The pixel's fixed pattern: each tap's gain on its photo charge, its own dark current.
+          const LockinPixelStimulus& sp = stim_[p];
+          for (int k = 0; k < 2; ++k)
+            mean[2 * p + k] =
+                sp.tap_gain[k] * (g[k] + leak * g[2]) + (cfg_.noise.dark_current_A + sp.dark_extra_A[k]) * dark_per_A;
         }
       }
       for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate(opt_, &mean[2 * p]);
@@ -137,8 +140,8 @@ bool TofLockinSensorKernel::step() {
       const bool empty_drain = closed && w == 1 && gates_.period_cycles() == 2 * gates_.t0_cycles();
       for (std::size_t p = 0; p < pixels_.size(); ++p) {
         pixels_[p].collect(cfg_, opt_, stim_[p], on, t_open, t_now, period);
-        if (closed) pixels_[p].transfer(cfg_, opt_, w, period_s);
-        if (empty_drain) pixels_[p].transfer(cfg_, opt_, 2, period_s);
+        if (closed) pixels_[p].transfer(cfg_, opt_, stim_[p], w, period_s);
+        if (empty_drain) pixels_[p].transfer(cfg_, opt_, stim_[p], 2, period_s);
       }
     }
     if (gates_.done()) {

@@ -4,6 +4,7 @@
 #include "systemc/tof_spad/montecarlo.h"
 #include "core/physics.h"
 #include "systemc/tof_spad/sensor_kernel.h"
+#include "systemc/tof_spad/nonideal_rates.h"
 
 namespace rangesim::mc {
 
@@ -13,14 +14,18 @@ class Runner : public McPointRunner {
  public:
   Runner(const TofSpadConfig& cfg, const systemc::spad::TofSpadKernelOptions& opt, double signal_Hz,
          double background_Hz)
-      : kernel_(cfg, 1, cfg.tdc.columns_per_tdc, opt),
+      : cfg_(cfg),
+        key_(opt.seed),
+        kernel_(cfg, 1, cfg.tdc.columns_per_tdc, opt),
         distance_m_(cfg.evaluation.distance_m),
         rates_(systemc::spad::PixelRates{signal_Hz, background_Hz,
                                          2 * cfg.evaluation.distance_m / phys::kSpeedOfLight_m_per_s}) {}
 
   McTrial trial(long long t) override {
     // Frame = trial: the group's streams are keyed (point key, trial, row 0, column).
-    const auto rates = [this](int, int) { return rates_; };
+    // Every trial is a group of another chip (its fixed pattern keyed by the trial).
+    const std::uint64_t chip = trial_key(key_, static_cast<std::uint64_t>(t));
+    const auto rates = [this, chip](int, int c) { return systemc::spad::with_fixed_pattern(cfg_, chip, rates_, 0, c); };
     const systemc::spad::GroupHistogram g = kernel_.simulate_group(static_cast<std::uint64_t>(t), 0, 0, rates);
     const std::optional<double> tof = kernel_.estimate(g.events[0], g.armed);
     McTrial out;
@@ -30,6 +35,8 @@ class Runner : public McPointRunner {
   }
 
  private:
+  TofSpadConfig cfg_;
+  std::uint64_t key_;
   systemc::spad::TofSpadKernel kernel_;
   double distance_m_;
   systemc::spad::PixelRates rates_;

@@ -27,6 +27,7 @@ struct PixelRates {
   double signal_Hz = 0;      // signal detections per second before dead-time losses
   double background_Hz = 0;  // ambient detections per second before dead-time losses
   double round_trip_s = 0;   // echo centre 2 L / c
+  double dark_extra_Hz = 0;  // fixed pattern: this pixel's dark count rate minus the preset's
 };
 
 // Noise sources; none() leaves a delta echo with Poisson-many photons and nothing else.

@@ -41,7 +41,7 @@ std::optional<GroupHistogram> TofSpadKernel::simulate_group_background(std::uint
   for (int k = 0; k < cpt; ++k) px.push_back(rates(row, group * cpt + k));
   if (!spad_group_background_only(px)) return std::nullopt;
   const bool no_arrivals = !(opt_.noise.background && px.front().background_Hz > 0) &&
-                           !(opt_.noise.dark && cfg_.spad.dark_count_rate_Hz > 0);
+                           !(opt_.noise.dark && cfg_.spad.dark_count_rate_Hz + px.front().dark_extra_Hz > 0);
   if (!background_blocker_.empty() && !no_arrivals) return std::nullopt;
   return background_spad_group(cfg_, opt_.noise, bins_, px, laser_cycles_, opt_.seed, frame, row, group * cpt);
 }

@@ -13,6 +13,7 @@
 #include "golden/tof_spad/model.h"
 #include "systemc/tof_spad/scene_adapter.h"
 #include "systemc/tof_spad/sensor.h"
+#include "systemc/tof_spad/nonideal_rates.h"
 
 namespace rangesim::systemc {
 
@@ -71,7 +72,11 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
   for (int r = sc.first_row; r < sc.first_row + sc.rows; ++r) sel.rows.push_back(r);
   sel.first_group = sc.first_column / columns_per_tdc;
   sel.groups = sc.columns / columns_per_tdc;
-  const sp::RateSource rates = [&sc](int r, int c) { return sc.rates(r, c); };
+  // The scene's rates on the chip (its fixed pattern: systemc/tof_spad/nonideal_rates.h).
+  const TofSpadConfig& cfg = kernel.config();
+  const sp::RateSource rates = [&sc, &cfg](int r, int c) {
+    return sp::with_fixed_pattern(cfg, cfg.fixed_pattern.seed, sc.rates(r, c), r, c);
+  };
   const auto t_sim = Clock::now();
   sp::SystemcRun res = req.kernel_only
                            ? sp::run_tof_spad_kernel(kernel, sel, rates, frames, host.progress("frame", frames))

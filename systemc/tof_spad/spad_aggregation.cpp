@@ -164,7 +164,7 @@ std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& 
 bool spad_group_aggregatable(const std::vector<PixelRates>& px) {
   for (const auto& p : px)
     if (p.signal_Hz != px.front().signal_Hz || p.background_Hz != px.front().background_Hz ||
-        p.round_trip_s != px.front().round_trip_s)
+        p.round_trip_s != px.front().round_trip_s || p.dark_extra_Hz != px.front().dark_extra_Hz)
       return false;
   return true;
 }
@@ -178,7 +178,7 @@ GroupHistogram aggregate_spad_group(const TofSpadConfig& cfg, const SpadNoise& n
   const PixelRates& r = pixels.front();
   const double sigma = noise.pulse_width ? cfg.laser.sigma_per_fwhm * cfg.laser.pulse_fwhm_s : 0.0;
   const double uniform_Hz =
-      (noise.background ? r.background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz : 0.0);
+      (noise.background ? r.background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz + r.dark_extra_Hz : 0.0);
   const double mu = r.signal_Hz / cfg.laser.repetition_rate_Hz;  // signal photons per pixel and cycle
   // Bin edges as the TDC sorts phases (TofSpadKernel::phase_bin): bin 0 from the START, the last to the period.
   std::vector<double> edge(static_cast<size_t>(np) + 1);
@@ -263,7 +263,8 @@ std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& n
 
 bool spad_group_background_only(const std::vector<PixelRates>& px) {
   for (const auto& p : px)
-    if (p.signal_Hz != 0 || p.background_Hz != px.front().background_Hz) return false;
+    if (p.signal_Hz != 0 || p.background_Hz != px.front().background_Hz || p.dark_extra_Hz != px.front().dark_extra_Hz)
+      return false;
   return true;
 }
 
@@ -273,8 +274,8 @@ GroupHistogram background_spad_group(const TofSpadConfig& cfg, const SpadNoise& 
                                      int first_column) {
   const int cpt = static_cast<int>(pixels.size()), np = bins.phase_bins, nc = bins.codes;
   const double period_s = 1.0 / cfg.laser.repetition_rate_Hz;
-  const double uniform_Hz =
-      (noise.background ? pixels.front().background_Hz : 0.0) + (noise.dark ? cfg.spad.dark_count_rate_Hz : 0.0);
+  const double uniform_Hz = (noise.background ? pixels.front().background_Hz : 0.0) +
+                            (noise.dark ? cfg.spad.dark_count_rate_Hz + pixels.front().dark_extra_Hz : 0.0);
   GroupHistogram g;
   g.events.assign(static_cast<size_t>(cpt), std::vector<long long>(static_cast<size_t>(nc), 0));
   g.armed.assign(static_cast<size_t>(nc), 0);

@@ -113,6 +113,9 @@ RC_GTEST_PROP(LockinStress, MoreBackgroundNeverLowersNoise, ()) {
   cfg.pixel.fd2_capacitance_F = *log_uniform(1e-14, 1e-9);
   cfg.pixel.saturation_voltage_V = *log_uniform(0.1, 10.0);
   cfg.pixel.offset_voltage_V = 0.3 * cfg.pixel.saturation_voltage_V;
+  // The offset charge of 0.3 V_sat is background-independent noise; with it most drawn points
+  // fail the preconditions below (rapidcheck gives up), so the property is checked without it.
+  cfg.nonideal.offset_shot_noise = false;
   cfg.readout.adc_full_scale_V = 4 * cfg.pixel.source_follower_gain * cfg.pixel.saturation_voltage_V;
   cfg.noise.read_noise_V = 100 * adc_lsb_V(cfg);
   const double d = distance_for(cfg, *rc::gen::map(rc::gen::inRange(1, 1000), [](int i) { return i / 1000.0; }));

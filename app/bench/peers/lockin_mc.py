@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """NumPy peer of `rangesim evaluate tof-lockin --trials N` at one operating point: the same physics
-(systemc/tof_lockin: Poisson tap charges of the frame's total mean, kTC and read noise, FD
+(systemc/tof_lockin: Poisson tap charges of the frame's total mean, the offset charge's own Poisson
+draw, kTC and read noise, FD
 saturation, column ADC, ambient frame subtracted per tap, range c T0 / 2 x b / (a + b), frames
 averaged), vectorised over the trials as a scientist would write it. `rangesim bench` runs it
 beside rangesim at the same point and compares the rms range errors (docs/bench.md).
@@ -61,7 +62,10 @@ def tap_means(p, signal_A, background_A, delay_s, led_on):
             e += eta * signal_A * light + (1 - eta) * signal_A * T0 / Trep * n * (b - a)
         g.append(e / Q)
     leak = (1 - px["drain_efficiency"]) / 2
-    dark = n * p["noise"]["dark_current_A"] * Trep / Q
+    # The preset's dark current is at dark.reference_temperature_K; it doubles every doubling_temperature_K.
+    d = p.get("dark", {})
+    law = 2.0 ** ((p["noise"]["temperature_K"] - d["reference_temperature_K"]) / d["doubling_temperature_K"]) if d else 1.0
+    dark = n * p["noise"]["dark_current_A"] * law * Trep / Q
     return np.array([g[0] + leak * g[2] + dark, g[1] + leak * g[2] + dark])
 
 
@@ -89,8 +93,11 @@ def main():
     rng = np.random.default_rng(a.seed)
     means = {on: tap_means(p, a.signal, a.background, delay, on) for on in (True, False)}
 
+    # The offset charge C V_offset / q of each FD is Poisson too (offset_charge.shot_noise).
+    n_off = px["offset_voltage_V"] * C / Q if p.get("offset_charge", {}).get("shot_noise", False) else np.zeros(2)
+
     def frame_codes(on, T):
-        N = rng.poisson(means[on], size=(T, 2))
+        N = rng.poisson(means[on], size=(T, 2)) + (rng.poisson(n_off, size=(T, 2)) - n_off)
         z = rng.standard_normal((T, 4))
         swing = np.minimum(N * (Q / C) + px["offset_voltage_V"] + z[:, :2] * ktc, px["saturation_voltage_V"])
         v = A * swing + z[:, 2:] * nz["read_noise_V"]

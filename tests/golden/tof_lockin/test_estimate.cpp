@@ -24,6 +24,7 @@ static TofLockinConfig shot_only() {
   c.readout.adc_bits = 24;
   c.readout.adc_full_scale_V = 2.0;
   c.noise.read_noise_V = 0;
+  c.nonideal.offset_shot_noise = false;  // signal shot noise alone
   c.noise.dark_current_A = 0;
   return c;
 }

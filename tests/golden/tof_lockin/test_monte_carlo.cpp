@@ -1,5 +1,5 @@
 // Monte Carlo check of the closed-form mean and variance of L (lockin_point.h): 20000 frames of
-// the same model, drawn electron by electron (Poisson) with Gaussian kTC and read noise, the
+// the same model, drawn electron by electron (Poisson, the offset charge too) with Gaussian kTC and read noise, the
 // truncating ADC of eq. 4.9, the ambient frame and eq. 2.25. Seeded, so the test is deterministic.
 #include <gtest/gtest.h>
 
@@ -28,9 +28,13 @@ McResult monte_carlo(const TofLockinConfig& cfg, double is, double ib, double L,
   const double K = max_range_m(cfg.source);
   // One readout of tap k holding `mean_e` electrons on average: Poisson electrons, frozen kTC
   // of the reset, read noise, truncating ADC.
+  // The offset charge C V_offset / q is Poisson too when its shot noise is on: drawn with the rest.
   const auto read = [&](int k, double mean_e) {
-    std::poisson_distribution<long long> pois(mean_e);
-    const double v = volts_per_electron(cfg, k) * static_cast<double>(pois(rng)) +
+    const double g = volts_per_electron(cfg, k);
+    const double n_off =
+        cfg.nonideal.offset_shot_noise ? cfg.pixel.source_follower_gain * cfg.pixel.offset_voltage_V / g : 0.0;
+    std::poisson_distribution<long long> pois(mean_e + n_off);
+    const double v = g * (static_cast<double>(pois(rng)) - n_off) +
                      cfg.pixel.source_follower_gain * cfg.pixel.offset_voltage_V + ktc_noise_V(cfg, k) * gauss(rng) +
                      cfg.noise.read_noise_V * gauss(rng);
     return std::clamp(std::floor(v / lsb), 0.0, top) * lsb;

@@ -66,11 +66,12 @@ TEST(LockinNoise, MomentsMatchGoldenNonIdealPixelNoAmbient) {
 }
 
 TEST(LockinNoise, CdsRemovesKtc) {
-  // With CDS and no read noise, the ambient frame of a dark pixel reads the FD
-  // offset + dark only.
+  // With CDS, no read noise and no shot noise of the offset charge, the ambient
+  // frame of a dark pixel reads the FD offset + dark only.
   const TofLockinConfig cfg = test::edited_config({{"pixel", "rows", "1"},
                                                    {"readout", "cds_enabled", "true"},
                                                    {"noise", "read_noise_V", "0"},
+                                                   {"offset_charge", "shot_noise", "false"},
                                                    {"noise", "dark_current_A", "0"}});
   TofLockinSensorKernel k(cfg, LockinSimOptions{true, true, true, 5}, 1, 8, test::uniform(8, 0, 0, 1.0), 2);
   k.run();

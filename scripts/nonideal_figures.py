@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Figures of the non-idealities (docs/model-limits.md), made with rangesim's own commands.
+
+(a) step-scene range profiles with the point spread off and on: tof-lockin along a row across its
+    column step (flying pixels), ls-demodulation down a beam position across its row step (mixed rows);
+(b) accuracy against frames averaged, tof-lockin at one operating point: golden and the clock-level
+    Monte Carlo (evaluate --trials; every trial a pixel of another chip), the chip's fixed pattern
+    (1 % tap gain mismatch) on and off.
+
+Usage: /usr/bin/python3 scripts/nonideal_figures.py [--rangesim build/app/rangesim] [--out docs/nonideal]
+Writes PNGs and the numbers behind them (CSV) into --out; the rangesim runs go to --work.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BLUR_ON = ["--set", "blur.psf=gaussian", "--set", "blur.gaussian_sigma_px=1.0"]
+BLUR_OFF = ["--set", "blur.psf=none"]
+
+
+def run(cmd):
+    print("$ " + " ".join(cmd), flush=True)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+
+
+def range_map(folder):
+    with open(os.path.join(folder, "range_map.csv")) as f:
+        rows = list(csv.reader(f))
+    return [[float(v) if v else math.nan for v in r[1:]] for r in rows[1:]]
+
+
+def simulate(rs, sensor, scene, extra, out):
+    run([rs, "simulate", sensor, "--scene", os.path.join(ROOT, "scenes", scene), "--out", out, "--force", "--no-plots"]
+        + extra)
+    return range_map(out)
+
+
+def step_profiles(rs, work, out):
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    lines = []
+    # tof-lockin: the middle row across the column step (near 2 m | far 9 m at column 134.4).
+    lk = {name: simulate(rs, "tof-lockin", "tof-lockin-step.toml", extra, os.path.join(work, "lockin_" + name))
+          for name, extra in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+    row = len(lk["sharp"]) // 2
+    cols = list(range(124, 146))
+    for name, style in (("sharp", "o-"), ("blur", "s--")):
+        vals = [lk[name][row][c] for c in cols]
+        axes[0].plot(cols, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
+        lines += [("tof-lockin", name, row, c, v) for c, v in zip(cols, vals)]
+    axes[0].set(title="tof-lockin, step 2 m | 9 m, row %d" % row, xlabel="column", ylabel="range (m)")
+    axes[0].legend()
+    # ls-demodulation: one beam position down the rows across the row step (0.9 m | 1.2 m).
+    dm = {name: simulate(rs, "ls-demodulation", "step.toml", extra, os.path.join(work, "demod_" + name))
+          for name, extra in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+    nrows = len(dm["sharp"])
+    b = max(range(len(dm["sharp"][0])), key=lambda j: sum(not math.isnan(dm["sharp"][r][j]) for r in range(nrows)))
+    rows = list(range(nrows // 2 - 10, nrows // 2 + 10))
+    for name, style in (("sharp", "o-"), ("blur", "s--")):
+        vals = [dm[name][r][b] for r in rows]
+        axes[1].plot(rows, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
+        lines += [("ls-demodulation", name, r, b, v) for r, v in zip(rows, vals)]
+    axes[1].set(title="ls-demodulation, step 0.9 m | 1.2 m, beam position %d" % b, xlabel="row", ylabel="range (m)")
+    axes[1].legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "step_profile_blur.png"), dpi=110)
+    with open(os.path.join(out, "step_profile_blur.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["sensor", "blur", "row", "column_or_beam_position", "range_m"])
+        w.writerows(lines)
+
+
+def frames_floor(rs, work, out, trials):
+    frames = [1, 3, 10, 30, 100, 300, 1000]
+    cases = (("fixed pattern on (tap mismatch 1 %)", ["--set", "fixed_pattern.tap_mismatch_fraction=0.01"]),
+             ("fixed pattern off", ["--set", "fixed_pattern.tap_mismatch_fraction=0"]))
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    rows = []
+    for label, extra in cases:
+        g, mc, lo, hi = [], [], [], []
+        for n in frames:
+            folder = os.path.join(work, "frames_%s_%d" % ("on" if "on" in label else "off", n))
+            run([rs, "evaluate", "tof-lockin", "--signal", "3e-10:3e-10:1", "--background", "1e-11:1e-11:1",
+                 "--frames", str(n), "--trials", str(trials), "--no-plots", "--force", "--out", folder] + extra)
+            with open(os.path.join(folder, "mc_points.csv")) as f:
+                p = next(csv.DictReader(f))
+            g.append(float(p["golden_accuracy_m"]) * 1e3)
+            mc.append(float(p["accuracy_m"]) * 1e3)
+            lo.append(float(p["accuracy_lo_m"]) * 1e3)
+            hi.append(float(p["accuracy_hi_m"]) * 1e3)
+            rows.append([label, n, g[-1], mc[-1], lo[-1], hi[-1]])
+        line, = ax.plot(frames, g, "-", label="golden, " + label)
+        ax.errorbar(frames, mc, yerr=[[m - l for m, l in zip(mc, lo)], [h - m for m, h in zip(mc, hi)]], fmt="o",
+                    color=line.get_color(), label="Monte Carlo 95 % CI, " + label)
+    ax.plot(frames, [rows[len(frames)][2] / math.sqrt(n) for n in frames], ":", color="grey", label="1/sqrt(N)")
+    ax.set(xscale="log", yscale="log", xlabel="frames averaged N", ylabel="range accuracy (mm)",
+           title="tof-lockin, 0.3 nA signal, 10 pA background, 1 m")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "accuracy_vs_frames_floor.png"), dpi=110)
+    with open(os.path.join(out, "accuracy_vs_frames_floor.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "frames", "golden_mm", "mc_mm", "mc_lo_mm", "mc_hi_mm"])
+        w.writerows(rows)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--rangesim", default=os.path.join(ROOT, "build", "app", "rangesim"))
+    ap.add_argument("--out", default=os.path.join(ROOT, "docs", "nonideal"))
+    ap.add_argument("--work", default="/tmp/rangesim-nonideal")
+    ap.add_argument("--trials", type=int, default=400)
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    os.makedirs(a.work, exist_ok=True)
+    step_profiles(a.rangesim, a.work, a.out)
+    frames_floor(a.rangesim, a.work, a.out, a.trials)
+
+
+if __name__ == "__main__":
+    main()
