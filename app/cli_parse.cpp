@@ -461,7 +461,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       ->transform(unsigned_in(0, kMaxU64));
   co->add_option("--trace", co_opt.trace,
                  "Write a VCD of the RTL run, with the model's expected values beside it under the scope\n"
-                 "'expected', to this file ('all': FILE_<target>.vcd)")
+                 "'expected', to this file ('all': FILE_<target>.vcd), and beside it FILE.gtkw, a GTKWave\n"
+                 "save file with each compared signal below its RTL counterpart")
       ->check(kPath);
   co->add_option("--junit", co_opt.junit,
                  "Write a JUnit XML report (one testcase per target and scoreboard check) to this file")

@@ -453,7 +453,21 @@ class StagedFiles {
     if (n.empty()) throw UserError("cosim: " + flag + " '" + path + "' names a directory; give a file");
     auto& dir = dirs_[d];
     if (!dir) dir = std::make_unique<OutputDir>(d, flag);
-    return dir->staged(n);
+    const std::string staged = dir->staged(n);
+    of_staged_[staged] = dir.get();
+    return staged;
+  }
+  // Files the run wrote beside staged file `staged` (a trace's save file and filters:
+  // <stem>.gtkw, <stem>.*.txt) are committed with it.
+  void adopt_companions(const std::string& staged) {
+    if (staged.empty()) return;
+    const std::filesystem::path p(staged);
+    const std::string prefix = p.stem().string() + ".";
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(p.parent_path(), ec)) {
+      const std::string name = e.path().filename().string();
+      if (name != p.filename().string() && name.rfind(prefix, 0) == 0) of_staged_.at(staged)->staged(name);
+    }
   }
   void commit() {
     for (auto& [d, o] : dirs_) o->commit();
@@ -461,6 +475,7 @@ class StagedFiles {
 
  private:
   std::map<std::string, std::unique_ptr<OutputDir>> dirs_;
+  std::map<std::string, OutputDir*> of_staged_;  // staged path -> its folder
 };
 
 void write_text(const std::string& path, const std::string& text) {
@@ -637,6 +652,7 @@ int run_cosim(const CosimCommandOptions& opt) {
     out = runs.front();
   }
   if (!junit_file.empty()) write_text(junit_file, junit_xml(runs));
+  staged.adopt_companions(trace_file);
   staged.commit();
   if (journal) {  // the run is complete: nothing left to resume
     journal->remove();

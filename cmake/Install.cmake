@@ -62,6 +62,7 @@ if(TARGET rangesim_cosim_kit)
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_scoreboard.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_run.h"
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_ports.h" "${PROJECT_SOURCE_DIR}/tb/common/cosim_target.h"
     "${PROJECT_SOURCE_DIR}/tb/common/cosim_coverage.h" "${PROJECT_SOURCE_DIR}/tb/common/vcd_merge.h"
+    "${PROJECT_SOURCE_DIR}/tb/common/cosim_save_file.h"
     "${PROJECT_SOURCE_DIR}/tb/common/address_search_stimulus.h"
     DESTINATION "${RANGESIM_INSTALL_INCLUDEDIR}/tb/common")
   # The stimulus generators (header-only, one per sensor: tb/<sensor>/stimulus.h), the random

@@ -45,12 +45,15 @@ class Waveform {
   // Closes the VCD and writes the save file and filters. Idempotent.
   void close();
 
- private:
   struct Signal {
     std::string scope, name;
     int width;  // bits (1: a wire)
     ValueNames names;
   };
+  // What was traced, in the order added (a co-simulation's save file pairs them with the RTL's).
+  const std::vector<Signal>& signals() const { return signals_; }
+
+ private:
   template <class T>
   static int width_of(const T&) {
     using V = std::decay_t<decltype(std::declval<const T&>().read())>;

@@ -4,18 +4,21 @@
 // periods, close the trace, read the RTL's coverage counters while the model is alive. The top
 // exposes its verilated model as `rtl`; a top with `trace_expected(systemc::Waveform&)` adds the
 // model's expected values, which end up in the same VCD under the scope "expected"
-// (tb/common/vcd_merge.h), beside the RTL's.
+// (tb/common/vcd_merge.h), beside the RTL's; beside the trace goes its GTKWave save file
+// (tb/common/cosim_save_file.h).
 #include <verilated_vcd_sc.h>
 
 #include <cstdio>
 #include <memory>
 #include <type_traits>
-#include <utility>
 #include <string>
+#include <utility>
+#include <vector>
 #include <systemc>
 
 #include "systemc/common/waveform.h"
 #include "tb/common/cosim_coverage.h"
+#include "tb/common/cosim_save_file.h"
 #include "tb/common/vcd_merge.h"
 
 namespace rangesim::tb {
@@ -51,6 +54,7 @@ void run_cosim_top(Top& top, const std::string& trace_path, sc_core::sc_time per
     merge_vcd(trace_path, expected_base + ".vcd", "expected");
     std::remove((expected_base + ".vcd").c_str());
   }
+  if (tf) write_cosim_save_file(trace_path, expected ? expected->signals() : std::vector<systemc::Waveform::Signal>{});
   capture_rtl_coverage();
 }
 

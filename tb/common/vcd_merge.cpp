@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -143,6 +144,38 @@ void write_header(std::ostream& out, const VcdReader& a, const VcdReader& b, con
 }
 
 }  // namespace
+
+std::string VcdVariable::full_name() const {
+  std::string n;
+  for (const auto& s : scopes) n += s + ".";
+  return n + name + range;
+}
+
+std::vector<VcdVariable> vcd_variables(const std::string& vcd) {
+  const VcdReader r(vcd);
+  std::vector<VcdVariable> vars;
+  std::vector<std::string> scopes;
+  for (const auto& d : r.declarations()) {
+    std::istringstream w(d);
+    std::string first, kind, name;
+    w >> first;
+    if (first == "$scope") {
+      w >> kind >> name;
+      scopes.push_back(name);
+    } else if (first == "$upscope") {
+      if (!scopes.empty()) scopes.pop_back();
+    } else if (first == "$var") {
+      VcdVariable v;
+      std::string type, width, id, word;
+      w >> type >> width >> id >> v.name;
+      v.width = std::atoi(width.c_str());
+      while (w >> word && word != "$end") v.range += word;  // "[10:0]", possibly split by spaces
+      v.scopes = scopes;
+      vars.push_back(std::move(v));
+    }
+  }
+  return vars;
+}
 
 void merge_vcd(const std::string& vcd, const std::string& extra, const std::string& scope) {
   VcdReader a(vcd), b(extra);

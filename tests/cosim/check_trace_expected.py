@@ -1,6 +1,9 @@
 """Checks a `rangesim cosim --trace` VCD: the RTL (Verilator) and, under the top-level scope
 "expected", the model's values of the signals the target's scoreboard compares; every value change
-refers to a declared identifier and the times increase. Prints OK and the expected signals.
+refers to a declared identifier and the times increase. Beside it, the GTKWave save file
+(tb/common/cosim_save_file.h): every signal it names is declared in the trace, every compared
+signal is in the "checked" group right below its RTL counterpart, and the translate filters it
+uses exist. Prints OK and the expected signals.
 
 usage: check_trace_expected.py TRACE.vcd TARGET
 """
@@ -8,6 +11,8 @@ import sys
 
 # The compared signals each target's expected scope must hold (scope.signal below "expected").
 REQUIRED = {
+    "ls-demodulation": ["sequencer.phase", "sequencer.row", "readout.row_valid", "readout.found", "readout.left",
+                        "readout.right"],
     "tof-lockin": ["sequencer.phase", "sequencer.tx1", "sequencer.tx2", "sequencer.txd", "sequencer.light",
                    "sequencer.row", "sequencer.frame", "adc0.ramp", "adc0.code", "adc1.code"],
     "tof-spad": ["sequencer.phase", "sequencer.row", "tdc.event", "tdc.overflow", "tdc.lost", "tdc.grant",
@@ -26,8 +31,43 @@ REQUIRED = {
 }
 
 
+def check_save_file(path, target, full_names):
+    """full_names: every declared variable as GTKWave names it (scopes.name[range])."""
+    import os
+    gtkw = path[:-4] + ".gtkw"
+    assert os.path.exists(gtkw), "no save file " + gtkw
+    refs, filters, group, checked = [], [], None, []
+    pending_filter = None
+    for line in open(gtkw):
+        line = line.rstrip("\n")
+        if line.startswith("^1 "):
+            pending_filter = line[3:]
+            filters.append(pending_filter)
+        elif line.startswith("-"):
+            group = None if group == line[1:] else line[1:]
+        elif line and line[0] not in "@[*":
+            refs.append(line)
+            if group and group.startswith("checked"):
+                checked.append((line, pending_filter))
+            pending_filter = None
+    unknown = [r for r in refs if r not in full_names]
+    assert not unknown, ("save file names undeclared signals", unknown[:10])
+    for f in set(filters):
+        assert os.path.exists(os.path.join(os.path.dirname(gtkw), f)), "missing filter " + f
+    # Each compared signal sits in the checked group, preceded by an RTL signal (its counterpart).
+    names = [c[0] for c in checked]
+    for s in REQUIRED[target]:
+        hits = [i for i, n in enumerate(names) if n.split("[")[0] == "expected." + s]
+        assert hits, ("compared signal not in the checked group", s)
+        i = hits[0]
+        assert i > 0 and not names[i - 1].startswith("expected."), ("no RTL counterpart above", s)
+        assert checked[i - 1][1] == checked[i][1], ("RTL and expected decoded differently", s)
+    return len(refs)
+
+
 def main(path, target):
     decl, scope, header, bad, last, ordered = {}, [], True, 0, -1, True
+    full = set()
     changes = {}
     for line in open(path):
         t = line.split()
@@ -40,6 +80,8 @@ def main(path, target):
                 scope.pop()
             elif t[0] == "$var":
                 decl[t[3]] = ".".join(scope + [t[4]])
+                rng = "".join(w for w in t[5:] if w != "$end")
+                full.add(".".join(scope + [t[4]]) + rng)
             elif t[0] == "$enddefinitions":
                 header = False
             continue
@@ -60,7 +102,9 @@ def main(path, target):
     # The model's values move: at least one expected signal changes after time 0.
     moving = [decl[i] for i, n in changes.items() if decl[i].startswith("expected.") and n > 1]
     assert moving, "the expected signals never change"
-    print("OK", target, len(names), "signals,", len(REQUIRED[target]), "compared signals under expected")
+    shown = check_save_file(path, target, full)
+    print("OK", target, len(names), "signals,", len(REQUIRED[target]), "compared signals under expected,", shown,
+          "in the save file")
 
 
 if __name__ == "__main__":
