@@ -48,6 +48,7 @@ void DemodSensor::on_clock() {
   for (PixelProbe& p : pixel_probes_) {
     const DemodPixelKernel& px = kernel_.pixel(p.at.row, p.at.column);
     p.out_V[0] = px.plus_V(), p.out_V[1] = px.minus_V();
+    *p.active = kernel_.active(p.at.row, p.at.column);
   }
   if (!kernel_.frame_done()) return;
   const DemodFrameResult& r = kernel_.result();
@@ -87,8 +88,9 @@ void DemodSensor::trace(Waveform& w, const std::vector<TracePixel>& pixels) {
   w.add(row_centre_px_o, ro, "row_centre_px");
   if (!w.enabled()) return;
   for (const TracePixel& p : pixels) {
-    pixel_probes_.push_back({p, std::make_unique<double[]>(2)});
+    pixel_probes_.push_back({p, std::make_unique<double[]>(2), std::make_unique<bool>(false)});
     const std::string scope = top + ".pixel_" + std::to_string(p.row) + "_" + std::to_string(p.column);
+    w.add(*pixel_probes_.back().active, scope, "active");
     w.add(pixel_probes_.back().out_V[0], scope, "out_plus_V");
     w.add(pixel_probes_.back().out_V[1], scope, "out_minus_V");
   }

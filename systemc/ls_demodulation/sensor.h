@@ -63,6 +63,7 @@ class DemodSensor : public sc_core::sc_module {
   struct PixelProbe {
     TracePixel at;
     std::unique_ptr<double[]> out_V;  // V_out+, V_out- (traced by reference: fixed storage)
+    std::unique_ptr<bool> active;     // the comparator output latched at the last decision
   };
   std::vector<PixelProbe> pixel_probes_;  // traced pixels (updated at every edge the kernel stops at)
 };

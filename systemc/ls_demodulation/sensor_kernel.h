@@ -115,6 +115,11 @@ class DemodSensorKernel {
   long long phase_cycle() const { return phase_cycle_; }  // cycles done in the current phase (row: in the row)
   bool mpy_plus() const;                                  // integration: MPY+ (C1) selected at this cycle
   const DemodPixelKernel& pixel(int r, int c) const { return pixels_[static_cast<std::size_t>(r) * columns_ + c]; }
+  // The comparator output of pixel (r, c) at the last decision (the bit its row search reads).
+  bool active(int r, int c) const {
+    const auto row = static_cast<std::size_t>(r);
+    return row < res_.activations.size() && res_.activations[row].test(c);
+  }
 
   const LsDemodulationConfig& config() const { return cfg_; }
   const DemodWindowSchedule& schedule() const { return sched_; }
