@@ -326,7 +326,10 @@ TEST(SimulateTrace, TracePixelsShowEachSensorsPixelSignals) {
   };
   const std::vector<Case> cases = {
       {"ls-conventional", "plane.toml", "182:187", {"ls_conventional.pixel_182_187.active"}},
-      {"ls-demodulation", "ls-demodulation-plane.toml", "55:60", {"ls_demodulation.pixel_55_60.out_plus_V"}},
+      {"ls-demodulation",
+       "ls-demodulation-plane.toml",
+       "5:2",
+       {"ls_demodulation.pixel_5_2.out_plus_V", "ls_demodulation.pixel_5_2.active"}},
       {"tof-lockin",
        "tof-lockin-step.toml",
        "5:7",
@@ -347,6 +350,10 @@ TEST(SimulateTrace, TracePixelsShowEachSensorsPixelSignals) {
     ASSERT_TRUE(v.ok) << v.error;
     for (const std::string& s : c.signals) EXPECT_TRUE(v.has(s)) << c.sensor << ": " << s;
   }
+  // ls-demodulation: pixel (5, 2) is on the stripe of frame 0: its comparator output rises.
+  const VcdFile dm = read_vcd(dir + "/ls-demodulation.vcd");
+  ASSERT_TRUE(dm.ok) << dm.error;
+  EXPECT_FALSE(dm.rising_edges("ls_demodulation.pixel_5_2.active").empty());
   // tof-lockin: the pixel's codes are its column ADC's codes of its row (written at its row).
   const VcdFile lk = read_vcd(dir + "/tof-lockin.vcd");
   ASSERT_TRUE(lk.ok) << lk.error;
