@@ -105,6 +105,24 @@ std::string ascii(const std::string& s) {
   return out;
 }
 
+// The text in lines of at most `chars` characters, broken at spaces where it can be (at most 3).
+std::vector<std::string> wrap(const std::string& text, std::size_t chars) {
+  chars = std::max<std::size_t>(chars, 1);
+  std::vector<std::string> lines;
+  std::size_t at = 0;
+  while (at < text.size() && lines.size() < 3) {
+    std::size_t end = std::min(text.size(), at + chars);
+    if (end < text.size()) {
+      const std::size_t space = text.rfind(' ', end);
+      if (space != std::string::npos && space > at) end = space;
+    }
+    lines.push_back(text.substr(at, end - at));
+    at = end;
+    while (at < text.size() && text[at] == ' ') ++at;
+  }
+  return lines;
+}
+
 std::string fit(const std::string& s, std::size_t chars) {
   const std::string a = ascii(s);
   return a.size() <= chars ? a : a.substr(0, chars);
@@ -112,10 +130,17 @@ std::string fit(const std::string& s, std::size_t chars) {
 
 }  // namespace
 
-void write_map_image(const std::string& path, const std::vector<std::vector<double>>& values,
-                     const MapImageSpec& spec) {
-  const int rows = static_cast<int>(values.size()), cols = rows ? static_cast<int>(values[0].size()) : 0;
-  const int s = std::clamp(750 / std::max({cols, rows, 1}), 1, 8);
+struct MapImageWriter::Buffers {
+  IndexedImage image{1, 1};
+  std::string png;
+};
+
+MapImageWriter::MapImageWriter() : b_(std::make_unique<Buffers>()) {}
+MapImageWriter::~MapImageWriter() = default;
+
+void MapImageWriter::write(const std::string& path, int rows, int cols, const std::function<double(int, int)>& value,
+                           const MapImageSpec& spec) {
+  const int s = std::clamp(400 / std::max({cols, rows, 1}), 1, 8);
   const int W = std::max(cols, 1) * s, H = std::max(rows, 1) * s;
   const double span = std::max(spec.hi - spec.lo, 1e-300);
   const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(span / 5))), 0, 9);
@@ -124,9 +149,12 @@ void write_map_image(const std::string& path, const std::vector<std::vector<doub
   for (double v : cticks) clabel = std::max(clabel, fmt::format("{:.{}f}", v, decimals).size());
   const std::vector<double> yt = ticks(spec.first_row, spec.first_row + std::max(rows - 1, 0), 8);
   const int left = 12 + kLine + 10 + static_cast<int>(std::to_string(spec.first_row + rows).size() + 1) * kAdvance;
-  const int top = 12 + kLine + 12, bottom = 8 + kLine + 10 + kLine + 10;
   const int bar_x = left + W + 20, right = 20 + 20 + 8 + static_cast<int>(clabel) * kAdvance + 10 + kLine + 12;
-  IndexedImage im(left + W + right, top + H + bottom);
+  const int width = left + W + right;
+  const std::vector<std::string> title = wrap(ascii(spec.title), static_cast<std::size_t>((width - 24) / kAdvance));
+  const int top = 12 + static_cast<int>(title.size()) * (kLine + 4) + 8, bottom = 8 + kLine + 10 + kLine + 10;
+  IndexedImage& im = b_->image;
+  im.reset(width, top + H + bottom);
   im.palette[kWhite] = {255, 255, 255};
   im.palette[kBlack] = {0, 0, 0};
   if (spec.palette == MapPalette::Viridis)
@@ -139,11 +167,15 @@ void write_map_image(const std::string& path, const std::vector<std::vector<doub
   };
   Canvas cv(im);
   // The map, row 0 at the bottom.
-  for (int r = 0; r < rows; ++r)
+  for (int r = 0; r < rows; ++r) {
+    // One scanline of the row's squares, copied to its s lines.
+    std::uint8_t* line = im.row(top + H - (r + 1) * s) + left;
     for (int c = 0; c < cols; ++c) {
-      const double v = values[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
-      if (std::isfinite(v)) cv.fill(left + c * s, top + H - (r + 1) * s, s, s, colour(v));
+      const double v = value(r, c);
+      if (std::isfinite(v)) std::fill_n(line + c * s, s, colour(v));
     }
+    for (int j = 1; j < s; ++j) std::copy_n(line, W, im.row(top + H - (r + 1) * s + j) + left);
+  }
   // Frame, ticks and their values.
   cv.fill(left - 1, top - 1, W + 2, 1, kBlack);
   cv.fill(left - 1, top + H, W + 2, 1, kBlack);
@@ -173,16 +205,16 @@ void write_map_image(const std::string& path, const std::vector<std::vector<doub
     cv.text(bar_x + 28, y - kLine / 2, fmt::format("{:.{}f}", v, decimals));
   }
   // Title and labels.
-  const std::size_t title_chars = static_cast<std::size_t>(std::max(1, (im.width - 24) / kAdvance));
-  const std::string title = fit(spec.title, title_chars);
-  cv.text(std::max(12, (im.width - cv.text_width(title)) / 2), 12, title);
+  for (std::size_t n = 0; n < title.size(); ++n)
+    cv.text(std::max(12, (im.width - cv.text_width(title[n])) / 2), 12 + static_cast<int>(n) * (kLine + 4), title[n]);
   const std::string xl = fit(spec.x_label, static_cast<std::size_t>(std::max(1, W / kAdvance)));
   cv.text(left + (W - cv.text_width(xl)) / 2, top + H + 8 + kLine + 10, xl);
   const std::string yl = fit(spec.y_label, static_cast<std::size_t>(std::max(1, H / kAdvance)));
   cv.text_up(12, top + (H + cv.text_width(yl)) / 2, yl);
   const std::string cl = fit(spec.colour_label, static_cast<std::size_t>(std::max(1, H / kAdvance)));
-  cv.text_up(im.width - 12 - kLine, top + (H + cv.text_width(cl)) / 2, cl);
-  write_png(path, im);
+  cv.text_up(bar_x + 28 + static_cast<int>(clabel) * kAdvance + 10, top + (H + cv.text_width(cl)) / 2, cl);
+  encode_png(im, b_->png);
+  write_file(path, b_->png);
 }
 
 }  // namespace rangesim::app

@@ -163,9 +163,9 @@ void chunk(std::string& png, const char* type, Data data) {
 
 }  // namespace
 
-std::string encode_png(const IndexedImage& im) {
+void encode_png(const IndexedImage& im, std::string& png) {
   if (im.width < 1 || im.height < 1) throw std::invalid_argument("encode_png: empty image");
-  std::string png("\x89PNG\r\n\x1a\n", 8);
+  png.assign("\x89PNG\r\n\x1a\n", 8);
   png.reserve(im.scanlines.size() / 2);
   chunk(png, "IHDR", [&](std::string& s) {
     put_be32(s, static_cast<std::uint32_t>(im.width));
@@ -181,11 +181,9 @@ std::string encode_png(const IndexedImage& im) {
     put_be32(s, adler32(im.scanlines));
   });
   chunk(png, "IEND", [](std::string&) {});
-  return png;
 }
 
-void write_png(const std::string& path, const IndexedImage& image) {
-  const std::string bytes = encode_png(image);
+void write_file(const std::string& path, const std::string& bytes) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw std::runtime_error("cannot write " + path);
   const bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();

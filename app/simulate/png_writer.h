@@ -17,16 +17,20 @@ struct IndexedImage {
   // the encoder compresses this very buffer.
   std::vector<std::uint8_t> scanlines;
   std::array<std::array<std::uint8_t, 3>, 256> palette{};  // RGB
-  IndexedImage(int w, int h)
-      : width(w), height(h), scanlines((static_cast<std::size_t>(w) + 1) * static_cast<std::size_t>(h), 0) {}
+  IndexedImage(int w, int h) { reset(w, h); }
+  // A blank (index 0) w x h image, in the same memory where it fits.
+  void reset(int w, int h) {
+    width = w, height = h;
+    scanlines.assign((static_cast<std::size_t>(w) + 1) * static_cast<std::size_t>(h), 0);
+  }
   std::size_t stride() const { return static_cast<std::size_t>(width) + 1; }
   std::uint8_t* row(int y) { return &scanlines[static_cast<std::size_t>(y) * stride() + 1]; }
   std::uint8_t& at(int x, int y) { return row(y)[x]; }
 };
 
-// The image as PNG file bytes.
-std::string encode_png(const IndexedImage& image);
-// Writes them to `path`; throws std::runtime_error naming the path when it cannot.
-void write_png(const std::string& path, const IndexedImage& image);
+// The image as PNG file bytes, into `png` (its memory reused).
+void encode_png(const IndexedImage& image, std::string& png);
+// Writes bytes to `path`; throws std::runtime_error naming the path when it cannot.
+void write_file(const std::string& path, const std::string& bytes);
 
 }  // namespace rangesim::app

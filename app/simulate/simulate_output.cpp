@@ -10,22 +10,17 @@ namespace rangesim::app {
 
 namespace {
 
-// The map's error where both the range and the truth exist.
-std::vector<std::vector<double>> error_rows(const systemc::RangeMap& m) {
-  std::vector<std::vector<double>> e = m.range_m;
-  for (std::size_t r = 0; r < e.size(); ++r)
-    for (std::size_t c = 0; c < e[r].size(); ++c)
-      e[r][c] = r < m.truth_m.size() && c < m.truth_m[r].size() ? m.range_m[r][c] - m.truth_m[r][c] : NAN;
-  return e;
-}
-
-// The q-quantile of |v| over the finite values (0 when none).
-double abs_quantile(const std::vector<std::vector<double>>& rows, double q) {
-  std::vector<double> a;
-  for (const auto& r : rows)
-    for (double v : r)
-      if (std::isfinite(v)) a.push_back(std::fabs(v));
-  if (a.empty()) return 0;
+// The q-quantile of |e| over the finite errors e = range - truth (-1 when none), in single
+// precision: the colour scale's end, not a figure (half the memory of doubles).
+double abs_quantile(const systemc::RangeMap& m, double q) {
+  std::vector<float> a;
+  a.reserve(m.range_m.size() * (m.range_m.empty() ? 0 : m.range_m[0].size()));
+  for (std::size_t r = 0; r < m.range_m.size() && r < m.truth_m.size(); ++r)
+    for (std::size_t c = 0; c < m.range_m[r].size() && c < m.truth_m[r].size(); ++c) {
+      const double e = m.range_m[r][c] - m.truth_m[r][c];
+      if (std::isfinite(e)) a.push_back(static_cast<float>(std::fabs(e)));
+    }
+  if (a.empty()) return -1;
   const auto k = static_cast<std::size_t>(q * static_cast<double>(a.size() - 1));
   std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k), a.end());
   return a[k];
@@ -46,17 +41,27 @@ std::string render_range_map(OutputDir& out, const systemc::RangeMap& m) {
     const double pad = hi > lo ? 0.0 : 1e-9 * std::max(1.0, std::fabs(hi));
     spec.lo = lo - pad, spec.hi = hi + pad;
   }
-  write_map_image(out.staged("range_map.png"), m.range_m, spec);
-  const std::vector<std::vector<double>> err = error_rows(m);
-  if (std::isfinite(finite_range(err).first)) {
-    // Symmetric about 0 to the 99th percentile of |error|: a few edge pixels must not wash the rest
-    // out; beyond it the end colours show.
-    const double span = std::max(abs_quantile(err, 0.99), 1e-9);
-    spec.title = m.title + " - range error";
-    spec.colour_label = "range - ground truth [m] (clipped at the 99th percentile)";
+  const int rows = static_cast<int>(m.range_m.size()), cols = rows ? static_cast<int>(m.range_m[0].size()) : 0;
+  MapImageWriter images;
+  images.write(
+      out.staged("range_map.png"), rows, cols,
+      [&m](int r, int c) { return m.range_m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)]; }, spec);
+  // The error where both the range and the truth exist, symmetric about 0 to the 99th percentile of
+  // |error|: a few edge pixels must not wash the rest out; beyond it the end colours show.
+  const double q99 = abs_quantile(m, 0.99);
+  if (q99 >= 0) {
+    const double span = std::max(q99, 1e-9);
+    spec.title = m.title + " - range error (colours clipped at the 99th percentile)";
+    spec.colour_label = "range - truth [m]";
     spec.lo = -span, spec.hi = span;
     spec.palette = MapPalette::Diverging;
-    write_map_image(out.staged("range_error.png"), err, spec);
+    images.write(
+        out.staged("range_error.png"), rows, cols,
+        [&m](int r, int c) {
+          const std::size_t i = static_cast<std::size_t>(r), j = static_cast<std::size_t>(c);
+          return i < m.truth_m.size() && j < m.truth_m[i].size() ? m.range_m[i][j] - m.truth_m[i][j] : NAN;
+        },
+        spec);
   }
   return "";
 }

@@ -160,6 +160,23 @@ bool ExactActivation::below(double u, double lambda, ThresholdEntry& e) {
   return u < p;
 }
 
+void ExactActivation::prepare_inversion(const PixelDrive& d, const ThresholdEntry& e, double* cut) const {
+  for (int k = 1; k <= m_.samplings; ++k) {
+    const double l = lambda_e(d, k);
+    double* c = cut + 2 * (k - 1);
+    if (l <= e.b.never_upto_e) {
+      c[0] = c[1] = 0;  // f = 0: never u < 0
+    } else if (l >= e.b.always_from_e) {
+      c[0] = c[1] = 2;  // f = 1: always u < 2
+    } else if (e.table) {
+      const double v = e.table->value(l), bound = e.table->bound();
+      c[0] = v - bound, c[1] = v + bound;
+    } else {
+      c[0] = -1, c[1] = 2;  // no table yet: every u goes to below()
+    }
+  }
+}
+
 int ExactActivation::invert_first_firing(const PixelDrive& d, ThresholdEntry& e, double u) {
   // K = the first k with u < f(lambda_k); f rises with k.
   for (int k = 1; k <= m_.samplings; ++k) {

@@ -32,7 +32,7 @@
 // at or below lambda_lo counts as f = 0 and at or above lambda_hi as f = 1 (the certain outcomes'
 // own 2^-56 per end). In between, u is compared with the threshold's ActivationTable
 // (activation_table.h): |f~ - f| <= bound, so u < f~ - bound and u >= f~ + bound decide as golden's
-// f would; only the rest (~2e-6 of the comparisons) evaluates golden::activation_probability
+// f would; only the rest (~2e-5 of the comparisons) evaluates golden::activation_probability
 // itself. The decision is therefore that of u < f(lambda_k) with golden's f (absolute error
 // < 1e-15) whether or not the table exists yet: it is made after a threshold's first few exact
 // evaluations, so a threshold used for a handful of pixels never pays for one. u is the pixel's
@@ -110,6 +110,20 @@ class ExactActivation {
   int invert_first_firing(const PixelDrive& d, ThresholdEntry& e, double u);
   // u < f(lambda) at the entry's threshold, decided as with golden's f (table or not).
   bool below(double u, double lambda_e, ThresholdEntry& e);
+  // The inversion of one pixel prepared for many uniforms (rows with the same drive): per sampling
+  // k, cut[2(k-1)] and cut[2(k-1)+1] with u below the first: fired by k, at or above the second: not
+  // (f~ -+ bound; 0, 0 for f = 0; 2, 2 for f = 1; -1, 2 before the table exists). Then
+  // invert_prepared(d, e, cut, u) == invert_first_firing(d, e, u) for every u.
+  void prepare_inversion(const PixelDrive& d, const ThresholdEntry& e, double* cut) const;
+  int invert_prepared(const PixelDrive& d, ThresholdEntry& e, const double* cut, double u) {
+    for (int k = 1; k <= m_.samplings; ++k) {
+      const double a = cut[2 * (k - 1)], b = cut[2 * (k - 1) + 1];
+      if (u < a) return k;
+      if (u >= b) continue;
+      if (below(u, lambda_e(d, k), e)) return k;
+    }
+    return 0;
+  }
   // Exact evaluations since construction (the inversion's fallbacks and the tables' first uses).
   long long exact_evaluations() const { return exact_evaluations_; }
 

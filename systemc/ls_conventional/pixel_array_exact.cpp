@@ -27,7 +27,7 @@ void PixelArrayKernel::reset_row_exact(int r, const RowIllumination& in, RowStat
   }
   pixels_examined_ += static_cast<long long>(s.band.size());
   for (const BandPixel& p : s.band)
-    band_k_.push_back(static_cast<std::uint8_t>(p.certain >= 0 ? p.certain : draw(r, p, *shape_entry_)));
+    band_k_.push_back(static_cast<std::uint8_t>(p.certain >= 0 ? p.certain : draw(r, s, p, *shape_entry_)));
 }
 
 int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row) {
@@ -40,6 +40,7 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
   s.core_first.assign(static_cast<std::size_t>(N), 0);
   s.core_last.assign(static_cast<std::size_t>(N), -1);
   s.band.clear();
+  s.cut.clear();
   if (s.last >= s.first) {
     ThresholdEntry& e = exact_->entry(s.threshold_V);
     shape_entry_ = &e;
@@ -48,7 +49,7 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
       pixels_examined_ += s.last - s.first + 1;
       for (int i = s.first; i <= s.last; ++i) {
         BandPixel p = look_at(i, in, e);
-        if (p.certain < 0) p.certain = draw(r, p, e);
+        if (p.certain < 0) p.certain = draw(r, s, p, e);
         if (p.certain > 0) s.band.push_back(p);
       }
     } else {
@@ -64,8 +65,18 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
       const int left_hi = col(std::ceil(x0 - inner));
       const int right_lo = std::max(col(std::floor(x0 + inner)), left_hi + 1);
       const int right_hi = outer == RowCertainty::kAll ? s.last : col(std::ceil(x0 + outer));
-      for (int i = left_lo; i <= right_hi; i = (i == left_hi && right_lo > i + 1) ? right_lo : i + 1)
-        if (c.classify(std::fabs(i - x0)) < 0) s.band.push_back(look_at(i, in, e));
+      for (int i = left_lo; i <= right_hi; i = (i == left_hi && right_lo > i + 1) ? right_lo : i + 1) {
+        if (c.classify(std::fabs(i - x0)) >= 0) continue;
+        BandPixel p = look_at(i, in, e);
+        if (p.certain < 0 && inversion_ && ExactActivation::inversion_applies(e)) {
+          // Every row with this drive draws it against the same f~ values: look them up once.
+          p.prepared = true;
+          p.cut_at = s.cut.size();
+          s.cut.resize(s.cut.size() + 2 * static_cast<std::size_t>(N));
+          exact_->prepare_inversion(p.drive, e, s.cut.data() + p.cut_at);
+        }
+        s.band.push_back(p);
+      }
     }
   }
   return shapes_used_++;
@@ -104,10 +115,11 @@ PixelArrayKernel::BandPixel PixelArrayKernel::look_at(int i, const RowIlluminati
   return p;
 }
 
-int PixelArrayKernel::draw(int r, const BandPixel& p, ThresholdEntry& e) {
+int PixelArrayKernel::draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e) {
   ++pixels_drawn_;
   const std::uint64_t key =
       pixel_key_in_frame(frame_key_, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(p.column));
+  if (p.prepared) return exact_->invert_prepared(p.drive, e, s.cut.data() + p.cut_at, keyed_uniform(key));
   if (inversion_ && ExactActivation::inversion_applies(e))
     return exact_->invert_first_firing(p.drive, e, keyed_uniform(key));
   pcg32 rng = pixel_stream(key);

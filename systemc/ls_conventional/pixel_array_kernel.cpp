@@ -116,6 +116,8 @@ void PixelArrayKernel::set_window(const RowIllumination& in, RowState& row) {
 
 void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   stimulus_.rows.resize(static_cast<std::size_t>(config_.pixel.rows));
+  stimulus_.first_row = first_row_;
+  stimulus_.row_count = rows();
   source_(frame, stimulus_);
   if (static_cast<int>(stimulus_.rows.size()) != config_.pixel.rows)
     throw std::invalid_argument("PixelArrayKernel: stimulus has " + std::to_string(stimulus_.rows.size()) +

@@ -130,6 +130,8 @@ class PixelArrayKernel {
     int column = 0;
     int certain = -1;  // first firing sampling if certain (0: never), -1: drawn
     PixelDrive drive;
+    std::size_t cut_at = 0;  // its prepared inversion in RowShape::cut (when one was prepared)
+    bool prepared = false;
   };
   // Exact path: what a row's drive (signal, background, centre) decides: its threshold and window,
   // the columns certain to have fired by each sampling (core ranges) and the band pixels. With
@@ -143,6 +145,7 @@ class PixelArrayKernel {
     double threshold_V = 0;
     std::vector<int> core_first, core_last;
     std::vector<BandPixel> band;
+    std::vector<double> cut;  // the band pixels' prepared inversions (ExactActivation::prepare_inversion)
   };
 
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
@@ -153,7 +156,7 @@ class PixelArrayKernel {
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
   BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
-  int draw(int r, const BandPixel& p, ThresholdEntry& e);
+  int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
   void sample_exact(int k);
 
   LsConventionalConfig config_;                    // sensor

@@ -122,7 +122,9 @@ void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) con
   const int b = beam_position(frame);
   const double cot = cot_beam(b);
   out.rows.resize(static_cast<std::size_t>(rows()));
-  for (int r = 0; r < rows(); ++r) {
+  const int first = std::clamp(out.first_row, 0, rows());
+  const int last = out.row_count < 0 ? rows() : std::min(rows(), first + out.row_count);
+  for (int r = first; r < last; ++r) {
     const RowTruth t = truth(b, cot, r);
     systemc::RowIllumination& in = out.rows[static_cast<std::size_t>(r)];
     in.background_V = t.background_V;
