@@ -22,17 +22,23 @@ class ActivationRow {
 
   int columns() const { return columns_; }
   // Inline: the pixel array calls these per pixel and sampling.
-  bool test(int column) const { return (words_[static_cast<std::size_t>(column) / 64] >> (column % 64)) & 1U; }
+  // (Columns are never negative: unsigned arithmetic spares the signed division's fix-ups.)
+  bool test(int column) const {
+    const auto c = static_cast<unsigned>(column);
+    return (words_[c / 64] >> (c % 64)) & 1U;
+  }
   void set(int column, bool value = true) {
-    const std::uint64_t mask = std::uint64_t{1} << (column % 64);
-    std::uint64_t& w = words_[static_cast<std::size_t>(column) / 64];
+    const auto c = static_cast<unsigned>(column);
+    const std::uint64_t mask = std::uint64_t{1} << (c % 64);
+    std::uint64_t& w = words_[c / 64];
     w = value ? (w | mask) : (w & ~mask);
   }
   // Columns first..last on (nothing if last < first); 0 <= first, last < columns.
   void set_range(int first, int last) {
     if (last < first) return;
-    const std::size_t wf = static_cast<std::size_t>(first) / 64, wl = static_cast<std::size_t>(last) / 64;
-    const std::uint64_t mf = ~std::uint64_t{0} << (first % 64), ml = ~std::uint64_t{0} >> (63 - last % 64);
+    const auto f = static_cast<unsigned>(first), l = static_cast<unsigned>(last);
+    const std::size_t wf = f / 64, wl = l / 64;
+    const std::uint64_t mf = ~std::uint64_t{0} << (f % 64), ml = ~std::uint64_t{0} >> (63 - l % 64);
     if (wf == wl) {
       words_[wf] |= mf & ml;
       return;

@@ -127,14 +127,26 @@ int PixelArrayKernel::draw(int r, const RowShape& s, const BandPixel& p, Thresho
 }
 
 void PixelArrayKernel::sample_exact(int k) {
+  // Rows in order: consecutive rows mostly share their shape, so its core range and band are
+  // looked up once per run of rows.
   const std::size_t kk = static_cast<std::size_t>(k - 1);
+  int current = -1, core_first = 0, core_last = -1;
+  const BandPixel* band = nullptr;
+  std::size_t band_size = 0;
   for (int r = 0; r < rows(); ++r) {
     const RowState& row = rows_[static_cast<std::size_t>(r)];
-    const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
+    if (row.shape != current) {
+      const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
+      current = row.shape;
+      core_first = s.core_first[kk], core_last = s.core_last[kk];
+      band = s.band.data(), band_size = s.band.size();
+    }
     ActivationRow& act = act_[static_cast<std::size_t>(r)];
-    act.set_range(s.core_first[kk], s.core_last[kk]);
+    act.set_range(core_first, core_last);
     const std::uint8_t* fk = band_k_.data() + row.band_at;
-    for (std::size_t j = 0; j < s.band.size(); ++j) act.set(s.band[j].column, fk[j] != 0 && fk[j] <= k);
+    // Fired by k: first firing 1..k (0, never, wraps to the largest unsigned).
+    for (std::size_t j = 0; j < band_size; ++j)
+      act.set(band[j].column, static_cast<unsigned>(fk[j]) - 1U < static_cast<unsigned>(k));
   }
 }
 
