@@ -46,15 +46,15 @@ std::string table_header(const systemc::Table& t) {
   return header(descr, "(" + std::to_string(t.rows()) + ",)");
 }
 
-// Cells [first, first + n) of `t` as record bytes at `p` (integer columns converted to int64).
-void table_bytes(const systemc::Table& t, std::size_t first, std::size_t n, char* p) {
+// n whole rows of `t`'s cells as record bytes at `p` (integer columns converted to int64).
+void table_bytes(const systemc::Table& t, const double* cells, std::size_t n, char* p) {
   const std::size_t C = t.columns.size();
-  for (std::size_t i = first; i < first + n; ++i, p += 8) {
+  for (std::size_t i = 0; i < n; ++i, p += 8) {
     if (t.columns[i % C].integer) {
-      const auto v = static_cast<std::int64_t>(t.cells[i]);
+      const auto v = static_cast<std::int64_t>(cells[i]);
       std::memcpy(p, &v, 8);
     } else {
-      std::memcpy(p, &t.cells[i], 8);
+      std::memcpy(p, &cells[i], 8);
     }
   }
 }
@@ -95,14 +95,19 @@ void write_npy_table(const std::string& path, const systemc::Table& t) {
   const std::string h = table_header(t);
   File f(path);
   f.put(h.data(), h.size());
-  // Through a 256 KB buffer: the converted records never exist whole in memory.
-  constexpr std::size_t kChunk = 32768;
-  std::vector<char> buf(kChunk * 8);
-  for (std::size_t i = 0; i < t.cells.size(); i += kChunk) {
-    const std::size_t n = std::min(kChunk, t.cells.size() - i);
-    table_bytes(t, i, n, buf.data());
-    f.put(buf.data(), n * 8);
-  }
+  // Through a 256 KB buffer, whole rows at a time: the converted records never exist whole in memory.
+  const std::size_t C = std::max<std::size_t>(t.columns.size(), 1), chunk_rows = std::max<std::size_t>(32768 / C, 1);
+  std::vector<char> buf(chunk_rows * C * 8);
+  std::size_t written = 0;
+  t.for_each_block([&](const double* cells, std::size_t rows) {
+    for (std::size_t r = 0; r < rows; r += chunk_rows) {
+      const std::size_t n = std::min(chunk_rows, rows - r);
+      table_bytes(t, cells + r * C, n * C, buf.data());
+      f.put(buf.data(), n * C * 8);
+    }
+    written += rows;
+  });
+  if (written != t.rows()) throw std::logic_error("npy_table: the table produced a different number of rows");
   f.close();
 }
 

@@ -9,8 +9,9 @@
 namespace rangesim::app {
 
 // Stages range_map.png (valid ranges on viridis, invalid pixels blank, one pixel a square) and
-// range_error.png (range - truth on a diverging map symmetric about 0, where both exist). Returns
-// "" or a warning (gnuplot missing/failed; nothing left behind).
+// range_error.png (range - truth on a diverging map symmetric about 0, where both exist), drawn
+// in-process (app/simulate/map_image.h). Returns "" or a warning (none at present; a write error
+// throws).
 std::string render_range_map(OutputDir& out, const systemc::RangeMap& map);
 
 }  // namespace rangesim::app

@@ -108,7 +108,7 @@ std::string write_files(const SimulateOptions& opt, OutputDir& out, const system
       out.write("confidence_map.csv", systemc::confidence_map_csv(m));
   }
   if (!r.points.empty()) {
-    if (as_npy(opt, r.points.cells.size()))
+    if (as_npy(opt, r.points.values()))
       write_npy_table(out.staged("points.npy"), r.points);
     else
       out.write("points.csv", systemc::table_csv(r.points));

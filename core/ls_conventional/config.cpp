@@ -47,6 +47,8 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.validity.min_detecting_fraction = p.real("validity.min_detecting_fraction");
   c.validity.edge_margin_px = p.real("validity.edge_margin_px");
   c.simulation.exact_activation_sampling = p.boolean("simulation.exact_activation_sampling");
+  c.simulation.certain_intervals = p.boolean("simulation.certain_intervals");
+  c.simulation.inversion_draw = p.boolean("simulation.inversion_draw");
 
   c.timing.clock_Hz = p.real("timing.clock_Hz");
   c.timing.reset_cycles = static_cast<int>(p.integer("timing.reset_cycles"));

@@ -93,6 +93,8 @@ struct LsValidityConfig {
 // How the clock-level model draws its noise (systemc/ls_conventional/activation_sampler.h).
 struct LsSimulationConfig {
   bool exact_activation_sampling = true;  // first firing sampling drawn exactly, certain pixels not drawn
+  bool certain_intervals = true;          // exact, sparse: a row's certain pixels found as intervals, not one by one
+  bool inversion_draw = true;             // exact: an uncertain pixel's first firing by inversion, one uniform
 };
 
 struct LsConventionalConfig {

@@ -83,6 +83,13 @@ const ParamSchema& ls_conventional_schema() {
           {"simulation.exact_activation_sampling", K::Boolean, "", 0, 0, false,
            "draw each noisy pixel's first firing sampling from its exact distribution and skip pixels whose "
            "outcome is certain to 2^-56 (false: every noise term drawn and compared at every sampling)"},
+          {"simulation.certain_intervals", K::Boolean, "", 0, 0, false,
+           "with exact_activation_sampling and the sparse window: find a row's certain pixels as intervals "
+           "around the spot centre and look only at the pixels between them one by one (false: every window "
+           "pixel; the same bits either way)"},
+          {"simulation.inversion_draw", K::Boolean, "", 0, 0, false,
+           "with exact_activation_sampling: draw an uncertain pixel's first firing sampling with one uniform by "
+           "inversion of its exact distribution function (false: a normal pair and a Gamma variate)"},
       }};
   // The non-idealities' keys (core/nonideal.h).
   static const ParamSchema schema = with_specs(base, {dark_temperature_specs()});

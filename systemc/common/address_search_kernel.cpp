@@ -146,17 +146,4 @@ AddressSearchResult AddressSearchKernel::run(const ActivationRow& act) {
   return r;
 }
 
-AddressSearchResult AddressSearchKernel::evaluate(const ActivationRow& act) const {
-  AddressSearchResult r;
-  r.found = act.any();
-  r.left = r.found ? act.first() : 0;
-  r.right = r.found ? act.last() : 0;
-  r.done_cycle = operation_cycles(r.found);
-  return r;
-}
-
-int AddressSearchKernel::operation_cycles(bool found) const {
-  return found ? search_cycles_ + stream_bits_ : search_cycles_;
-}
-
 }  // namespace rangesim::systemc

@@ -22,11 +22,30 @@ class ActivationRow {
 
   int columns() const { return columns_; }
   // Inline: the pixel array calls these per pixel and sampling.
-  bool test(int column) const { return (words_[static_cast<std::size_t>(column) / 64] >> (column % 64)) & 1U; }
+  // (Columns are never negative: unsigned arithmetic spares the signed division's fix-ups.)
+  bool test(int column) const {
+    const auto c = static_cast<unsigned>(column);
+    return (words_[c / 64] >> (c % 64)) & 1U;
+  }
   void set(int column, bool value = true) {
-    const std::uint64_t mask = std::uint64_t{1} << (column % 64);
-    std::uint64_t& w = words_[static_cast<std::size_t>(column) / 64];
+    const auto c = static_cast<unsigned>(column);
+    const std::uint64_t mask = std::uint64_t{1} << (c % 64);
+    std::uint64_t& w = words_[c / 64];
     w = value ? (w | mask) : (w & ~mask);
+  }
+  // Columns first..last on (nothing if last < first); 0 <= first, last < columns.
+  void set_range(int first, int last) {
+    if (last < first) return;
+    const auto f = static_cast<unsigned>(first), l = static_cast<unsigned>(last);
+    const std::size_t wf = f / 64, wl = l / 64;
+    const std::uint64_t mf = ~std::uint64_t{0} << (f % 64), ml = ~std::uint64_t{0} >> (63 - l % 64);
+    if (wf == wl) {
+      words_[wf] |= mf & ml;
+      return;
+    }
+    words_[wf] |= mf;
+    for (std::size_t w = wf + 1; w < wl; ++w) words_[w] = ~std::uint64_t{0};
+    words_[wl] |= ml;
   }
   void clear() { std::fill(words_.begin(), words_.end(), 0); }  // every column off, width kept
   bool any() const;
@@ -85,11 +104,24 @@ class AddressSearchKernel {
   AddressSearchResult run(const ActivationRow& act);
 
   // The same result in closed form, no ticks (the event-skipping path; tests prove it equal).
-  AddressSearchResult evaluate(const ActivationRow& act) const;
+  AddressSearchResult evaluate(const ActivationRow& act) const {
+    AddressSearchResult r;
+    const std::vector<std::uint64_t>& w = act.words();
+    std::size_t i = 0, j = w.size();
+    while (i < j && w[i] == 0) ++i;  // the first word with an activation, then the last
+    if (i < j) {
+      while (w[j - 1] == 0) --j;
+      r.found = true;
+      r.left = static_cast<int>(i * 64) + __builtin_ctzll(w[i]);
+      r.right = static_cast<int>((j - 1) * 64) + 63 - __builtin_clzll(w[j - 1]);
+    }
+    r.done_cycle = operation_cycles(r.found);
+    return r;
+  }
 
   // Cycles from start (k = 0, exclusive) to done_o (inclusive): S + 2B, or S if nothing found.
   // Start-to-next-start is one more (the latch cycle).
-  int operation_cycles(bool found) const;
+  int operation_cycles(bool found) const { return found ? search_cycles_ + stream_bits_ : search_cycles_; }
 
   const AddressSearchConfig& config() const { return config_; }
   int search_cycles() const { return search_cycles_; }

@@ -30,13 +30,17 @@ inline std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-// Hash of the key (seed, frame, row, column): each word is mixed in after the previous ones.
+// Hash of the key (seed, frame, row, column): each word is mixed in after the previous ones. The
+// first two words' part (frame_stream_key) can be made once per frame access (pixel_key_in_frame).
+inline std::uint64_t frame_stream_key(std::uint64_t seed, std::uint64_t frame) {
+  return splitmix64(splitmix64(seed ^ 0x72616e676573696dULL) ^ frame);  // "rangesim"
+}
+inline std::uint64_t pixel_key_in_frame(std::uint64_t frame_key, std::uint32_t row, std::uint32_t column) {
+  return splitmix64(frame_key ^ ((static_cast<std::uint64_t>(row) << 32) | column));
+}
 inline std::uint64_t pixel_stream_key(std::uint64_t seed, std::uint64_t frame, std::uint32_t row,
                                       std::uint32_t column) {
-  std::uint64_t h = splitmix64(seed ^ 0x72616e676573696dULL);  // "rangesim"
-  h = splitmix64(h ^ frame);
-  h = splitmix64(h ^ ((static_cast<std::uint64_t>(row) << 32) | column));
-  return h;
+  return pixel_key_in_frame(frame_stream_key(seed, frame), row, column);
 }
 
 // The generator of one key: state and stream selector both derived from the hash.
@@ -46,6 +50,13 @@ inline pcg32 pixel_stream(std::uint64_t key) { return pcg32(key, splitmix64(key 
 inline double uniform_open01(pcg32& rng) {
   const std::uint64_t hi = rng() >> 5, lo = rng() >> 6;  // 27 + 26 bits
   return (static_cast<double>((hi << 26) | lo) + 0.5) * (1.0 / 9007199254740992.0);
+}
+
+// One uniform in (0, 1) from a key alone, 53 bits: a counter-based draw (a hash of the key, no
+// generator state), for a pixel that needs exactly one variate. The extra finaliser round makes it
+// independent of pixel_stream(key), which the same key seeds.
+inline double keyed_uniform(std::uint64_t key) {
+  return (static_cast<double>(splitmix64(key ^ 0x6b65796564753031ULL) >> 11) + 0.5) * (1.0 / 9007199254740992.0);
 }
 
 // Standard normal by Box-Muller (one value per call; two uniforms). Library-independent.

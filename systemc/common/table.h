@@ -1,12 +1,15 @@
 #pragma once
 // A table of numbers as a scene run returns it (points.csv / points.npy): named columns, cells
-// row-major as doubles. The run fills it; app/simulate/ writes it as CSV or as a NumPy .npy
-// record array. Holding numbers rather than text keeps formatting out of the model run and lets
-// a large table go to disk without any text at all.
+// row-major as doubles. The run fills it, or for a large table gives a producer that makes its rows
+// in order, block by block, when they are written (a full ls-conventional map has 137,000 points, a
+// 14 MB table never held whole); app/simulate/ writes it as CSV or as a NumPy .npy record array.
+// Holding numbers rather than text keeps formatting out of the model run and lets a large table go
+// to disk without any text at all.
 #include <cassert>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -18,16 +21,33 @@ struct Table {
     std::string name;      // CSV header / .npy field name
     bool integer = false;  // written as an integer (CSV) / '<i8' (.npy); never NaN
   };
+  // Called with consecutive blocks of whole rows (cells row-major, and the count of rows).
+  using BlockSink = std::function<void(const double* cells, std::size_t rows)>;
+
   std::vector<Column> columns;
   std::vector<double> cells;  // row-major; NaN = empty (floating columns only)
+  // Or: produce(sink) calls sink with every row in order, in blocks; produced_rows rows in all.
+  std::function<void(const BlockSink& sink)> produce;
+  std::size_t produced_rows = 0;
 
   Table() = default;
   explicit Table(std::vector<Column> c) : columns(std::move(c)) {}
   bool empty() const { return columns.empty(); }
-  std::size_t rows() const { return columns.empty() ? 0 : cells.size() / columns.size(); }
+  std::size_t rows() const {
+    if (produce) return produced_rows;
+    return columns.empty() ? 0 : cells.size() / columns.size();
+  }
+  std::size_t values() const { return rows() * columns.size(); }
   void add_row(std::initializer_list<double> values) {
-    assert(values.size() == columns.size());
+    assert(values.size() == columns.size() && !produce);
     cells.insert(cells.end(), values);
+  }
+  // Every row in order, in blocks: the held cells at once, or the producer's blocks.
+  void for_each_block(const BlockSink& sink) const {
+    if (produce)
+      produce(sink);
+    else if (!cells.empty())
+      sink(cells.data(), rows());
   }
 };
 

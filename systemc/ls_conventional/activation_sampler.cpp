@@ -34,12 +34,15 @@ void ExactActivation::probability(double lambda, double threshold_V, double& p, 
   p = Phi((lambda - t_e) / s_e), q = Phi((t_e - lambda) / s_e);
 }
 
-const ActivationBounds& ExactActivation::bounds(double threshold_V) {
-  for (const Memo& e : memo_)
-    if (e.threshold_V == threshold_V) return e.b;
+ThresholdEntry& ExactActivation::entry(double threshold_V) {
+  for (ThresholdEntry& e : memo_)
+    if (e.threshold_V == threshold_V) return e;
   if (memo_.size() >= kMemoEntries) memo_.erase(memo_.begin());
-  memo_.push_back({threshold_V, compute_bounds(threshold_V)});
-  return memo_.back().b;
+  ThresholdEntry e;
+  e.threshold_V = threshold_V;
+  e.b = compute_bounds(threshold_V);
+  memo_.push_back(std::move(e));
+  return memo_.back();
 }
 
 ActivationBounds ExactActivation::compute_bounds(double threshold_V) const {
@@ -47,8 +50,16 @@ ActivationBounds ExactActivation::compute_bounds(double threshold_V) const {
   // and widened until the bracket holds; each end kept on its certain side, so rounding only
   // narrows the certain ranges.
   const double t = threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
-  auto p_of = [&](double l) { double p, q; probability(l, threshold_V, p, q); return p; };
-  auto q_of = [&](double l) { double p, q; probability(l, threshold_V, p, q); return q; };
+  auto p_of = [&](double l) {
+    double p, q;
+    probability(l, threshold_V, p, q);
+    return p;
+  };
+  auto q_of = [&](double l) {
+    double p, q;
+    probability(l, threshold_V, p, q);
+    return q;
+  };
   ActivationBounds b;
   const double width = std::sqrt(std::max(t, 0.0) + s_e * s_e) + 1;
   if (p_of(0) <= kComputedTail) {
@@ -63,8 +74,8 @@ ActivationBounds ExactActivation::compute_bounds(double threshold_V) const {
   }
   // Certain firing needs the saturation to be harmless: A (V_sat + r) >= theta almost surely.
   const double sat_room_V = m_.saturation_V - threshold_V / m_.gain;
-  const bool sat_harmless =
-      m_.read_V > 0 ? Phi(-sat_room_V / m_.read_V) <= 1e-19 : sat_room_V >= 0;
+  const bool sat_harmless = m_.read_V > 0 ? Phi(-sat_room_V / m_.read_V) <= 1e-19 : sat_room_V >= 0;
+  b.saturation_harmless = sat_harmless;
   if (sat_harmless) {
     double lo = std::max(t, 0.0), hi = lo + 12 * width;
     for (int i = 0; i < 60 && q_of(hi) > kComputedTail; ++i) hi = lo + 2 * (hi - lo);
@@ -76,6 +87,9 @@ ActivationBounds ExactActivation::compute_bounds(double threshold_V) const {
       b.always_from_e = hi;
     }
   }
+  b.invertible = m_.shot && s_e > 0 && sat_harmless && b.always_from_e < 1e300 &&
+                 ActivationTable::intervals_for(s_e, std::max(b.never_upto_e, 0.0), b.always_from_e) <=
+                     ActivationTable::kMaxIntervals;
   return b;
 }
 
@@ -109,8 +123,8 @@ int ExactActivation::draw_first_firing(const PixelDrive& d, double threshold_V, 
   const int N = m_.samplings;
   if (!m_.shot) {
     for (int k = 1; k <= N; ++k) {
-      const double v = golden::pixel_swing_V(d.signal_V, d.profile, d.background_V, d.dark_V,
-                                             static_cast<double>(k) / N);
+      const double v =
+          golden::pixel_swing_V(d.signal_V, d.profile, d.background_V, d.dark_V, static_cast<double>(k) / N);
       if (m_.gain * (std::min(v + o, m_.saturation_V) + r) >= threshold_V) return k;
     }
     return 0;
@@ -128,6 +142,49 @@ int ExactActivation::draw_first_firing(const PixelDrive& d, double threshold_V, 
   const double T = gamma_variate(rng, n);  // mean count at which the n*-th electron arrives
   const double k = std::max(1.0, std::ceil(T / d.mean_step_e));
   return k <= N ? static_cast<int>(k) : 0;
+}
+
+bool ExactActivation::below(double u, double lambda, ThresholdEntry& e) {
+  if (e.table) {
+    const double v = e.table->value(lambda), d = e.table->bound();
+    if (u < v - d) return true;
+    if (u >= v + d) return false;
+  }
+  double p, q;
+  probability(lambda, e.threshold_V, p, q);
+  ++exact_evaluations_;
+  if (!e.table && ++e.exact_evaluations >= kTableAfter) {
+    const double t_e = e.threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
+    e.table = std::make_unique<ActivationTable>(t_e, s_e, std::max(e.b.never_upto_e, 0.0), e.b.always_from_e);
+  }
+  return u < p;
+}
+
+void ExactActivation::prepare_inversion(const PixelDrive& d, const ThresholdEntry& e, double* cut) const {
+  for (int k = 1; k <= m_.samplings; ++k) {
+    const double l = lambda_e(d, k);
+    double* c = cut + 2 * (k - 1);
+    if (l <= e.b.never_upto_e) {
+      c[0] = c[1] = 0;  // f = 0: never u < 0
+    } else if (l >= e.b.always_from_e) {
+      c[0] = c[1] = 2;  // f = 1: always u < 2
+    } else if (e.table) {
+      const double v = e.table->value(l), bound = e.table->bound();
+      c[0] = v - bound, c[1] = v + bound;
+    } else {
+      c[0] = -1, c[1] = 2;  // no table yet: every u goes to below()
+    }
+  }
+}
+
+int ExactActivation::invert_first_firing(const PixelDrive& d, ThresholdEntry& e, double u) {
+  // K = the first k with u < f(lambda_k); f rises with k.
+  for (int k = 1; k <= m_.samplings; ++k) {
+    const double l = lambda_e(d, k);
+    if (l <= e.b.never_upto_e) continue;
+    if (l >= e.b.always_from_e || below(u, l, e)) return k;
+  }
+  return 0;
 }
 
 }  // namespace rangesim::systemc

@@ -25,24 +25,40 @@
 // end, so a map's 1.4 M classified pixels differ from exact sampling with probability < 4e-11.
 // Saturation only makes firing less likely: lambda_lo stays an upper bound; lambda_hi is used only
 // when P(A (V_sat + r) < theta) <= 1e-19 on the row.
+//
+// Inversion (config simulation.inversion_draw; shot and static noise on, saturation harmless as
+// above): P(K <= k) = f(lambda_k) exactly (the comparator input only grows while o and r stay
+// frozen), so with one uniform u, K = the first k with u < f(lambda_k), never if none. A lambda_k
+// at or below lambda_lo counts as f = 0 and at or above lambda_hi as f = 1 (the certain outcomes'
+// own 2^-56 per end). In between, u is compared with the threshold's ActivationTable
+// (activation_table.h): |f~ - f| <= bound, so u < f~ - bound and u >= f~ + bound decide as golden's
+// f would; only the rest (~2e-5 of the comparisons) evaluates golden::activation_probability
+// itself. The decision is therefore that of u < f(lambda_k) with golden's f (absolute error
+// < 1e-15) whether or not the table exists yet: it is made after a threshold's first few exact
+// evaluations, so a threshold used for a handful of pixels never pays for one. u is the pixel's
+// keyed_uniform (systemc/common/random_stream.h), the same for any visiting order or thread.
+// Saturation that can matter, or no static noise: the Gamma draw above.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <pcg_random.hpp>
 
+#include "systemc/ls_conventional/activation_table.h"
+
 namespace rangesim::systemc {
 
-constexpr double kComputedTail = 1e-17;             // classification level of the computed tails
+constexpr double kComputedTail = 1e-17;                  // classification level of the computed tails
 constexpr double kCertainTail = 1.3877787807814457e-17;  // 2^-56: bound on the true tail, per end
 
 // The pixel's noise and comparator, fixed for a kernel.
 struct ActivationModel {
-  bool shot = true;             // Poisson electrons (else the deterministic swing)
+  bool shot = true;              // Poisson electrons (else the deterministic swing)
   double ktc_V = 0, read_V = 0;  // rms of the static noise terms (0: switched off)
-  double electrons_per_V = 0;   // c = C / q
-  double gain = 1;              // A_sf
-  double saturation_V = 0;      // V_sat
-  int samplings = 1;            // N
+  double electrons_per_V = 0;    // c = C / q
+  double gain = 1;               // A_sf
+  double saturation_V = 0;       // V_sat
+  int samplings = 1;             // N
 };
 
 // What a pixel gets in one frame access (the per-pixel inputs of the pixel array).
@@ -53,16 +69,31 @@ struct PixelDrive {
 
 // Mean electron counts (lambda) bounding the certain outcomes at one comparator threshold.
 struct ActivationBounds {
-  double never_upto_e = -1;       // lambda <= this: P(fired) <= kComputedTail (-1: none)
-  double always_from_e = 1e300;   // lambda >= this: P(not fired) <= kComputedTail (1e300: none)
+  double never_upto_e = -1;          // lambda <= this: P(fired) <= kComputedTail (-1: none)
+  double always_from_e = 1e300;      // lambda >= this: P(not fired) <= kComputedTail (1e300: none)
+  bool saturation_harmless = false;  // P(A (V_sat + r) < theta) <= 1e-19: f without saturation is exact
+  bool invertible = false;           // the inversion applies: shot and static noise, saturation harmless, a table fits
+};
+
+// What the sampler keeps per comparator threshold: its bounds and, once it has been used for a few
+// draws, its table of f for the inversion.
+struct ThresholdEntry {
+  double threshold_V = 0;
+  ActivationBounds b;
+  std::unique_ptr<ActivationTable> table;  // made after kTableAfter exact evaluations
+  int exact_evaluations = 0;               // golden::activation_probability calls at this threshold
 };
 
 class ExactActivation {
  public:
   explicit ExactActivation(const ActivationModel& model);
 
-  // Bounds at threshold theta (comparator input, V); a small memo (rows share thresholds).
-  const ActivationBounds& bounds(double threshold_V);
+  static constexpr int kTableAfter = 8;  // exact evaluations at a threshold before its table is made
+
+  // Bounds (and table) at threshold theta (comparator input, V); a small memo (rows share
+  // thresholds). A reference stays valid until the next call.
+  ThresholdEntry& entry(double threshold_V);
+  const ActivationBounds& bounds(double threshold_V) { return entry(threshold_V).b; }
   // f(lambda) and 1 - f(lambda) at threshold theta, the pixel's exact activation probability.
   void probability(double lambda_e, double threshold_V, double& p, double& q) const;
 
@@ -73,17 +104,37 @@ class ExactActivation {
   // A draw of the first firing sampling (0: never) from the pixel's stream (positioned at its start).
   int draw_first_firing(const PixelDrive& d, double threshold_V, pcg32& rng) const;
 
+  // Whether invert_first_firing applies at this threshold: shot and static noise on, saturation harmless.
+  static bool inversion_applies(const ThresholdEntry& e) { return e.b.invertible; }
+  // The first firing sampling (0: never) by inversion with the uniform u in (0, 1).
+  int invert_first_firing(const PixelDrive& d, ThresholdEntry& e, double u);
+  // u < f(lambda) at the entry's threshold, decided as with golden's f (table or not).
+  bool below(double u, double lambda_e, ThresholdEntry& e);
+  // The inversion of one pixel prepared for many uniforms (rows with the same drive): per sampling
+  // k, cut[2(k-1)] and cut[2(k-1)+1] with u below the first: fired by k, at or above the second: not
+  // (f~ -+ bound; 0, 0 for f = 0; 2, 2 for f = 1; -1, 2 before the table exists). Then
+  // invert_prepared(d, e, cut, u) == invert_first_firing(d, e, u) for every u.
+  void prepare_inversion(const PixelDrive& d, const ThresholdEntry& e, double* cut) const;
+  int invert_prepared(const PixelDrive& d, ThresholdEntry& e, const double* cut, double u) {
+    for (int k = 1; k <= m_.samplings; ++k) {
+      const double a = cut[2 * (k - 1)], b = cut[2 * (k - 1) + 1];
+      if (u < a) return k;
+      if (u >= b) continue;
+      if (below(u, lambda_e(d, k), e)) return k;
+    }
+    return 0;
+  }
+  // Exact evaluations since construction (the inversion's fallbacks and the tables' first uses).
+  long long exact_evaluations() const { return exact_evaluations_; }
+
  private:
   ActivationBounds compute_bounds(double threshold_V) const;
   bool fires(double n_e, double offset_V, double read_V, double threshold_V) const;
 
   ActivationModel m_;
   double sigma_V_ = 0;  // rms of o + r
-  struct Memo {
-    double threshold_V;
-    ActivationBounds b;
-  };
-  std::vector<Memo> memo_;
+  std::vector<ThresholdEntry> memo_;
+  long long exact_evaluations_ = 0;
 };
 
 }  // namespace rangesim::systemc

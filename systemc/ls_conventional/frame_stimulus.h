@@ -19,10 +19,13 @@ struct RowIllumination {
 
 struct FrameStimulus {
   std::vector<RowIllumination> rows;  // one per sensor row
+  // The rows the pixel array simulates (a band of them when rows run on several threads): a source
+  // may fill only rows first_row .. first_row + row_count - 1 and leave the others as they are.
+  int first_row = 0, row_count = -1;  // -1: every row
 };
 
 // Supplies the stimulus of frame access `frame` (0, 1, ...); called once per frame at the pixel
-// reset. Must fill exactly `rows` entries.
+// reset. Must fill exactly `rows` entries (at least the band's).
 using StimulusSource = std::function<void(std::uint64_t frame, FrameStimulus& out)>;
 
 }  // namespace rangesim::systemc

@@ -25,8 +25,13 @@ PixelArrayKernel::PixelArrayKernel(const LsConventionalConfig& config, const Pix
     throw std::invalid_argument("PixelArrayKernel: rows and columns must be >= 1");
   if (config.multisampling.samplings < 1) throw std::invalid_argument("PixelArrayKernel: samplings must be >= 1");
   if (!source_) throw std::invalid_argument("PixelArrayKernel: no stimulus source");
-  rows_.resize(static_cast<std::size_t>(config.pixel.rows));
-  act_.assign(static_cast<std::size_t>(config.pixel.rows), ActivationRow(config.pixel.columns));
+  first_row_ = options.first_row;
+  const int band = options.row_count < 0 ? config.pixel.rows - first_row_ : options.row_count;
+  if (first_row_ < 0 || band < 1 || first_row_ + band > config.pixel.rows)
+    throw std::invalid_argument("PixelArrayKernel: rows " + std::to_string(first_row_) + " + " + std::to_string(band) +
+                                " outside the array's " + std::to_string(config.pixel.rows));
+  rows_.resize(static_cast<std::size_t>(band));
+  act_.assign(static_cast<std::size_t>(band), ActivationRow(config.pixel.columns));
   dark_V_ = golden::dark_voltage_V(config.pixel);
   electrons_per_V_ = golden::electrons_per_volt(config.pixel);
   ktc_V_ = golden::ktc_noise_V(config.pixel);
@@ -41,6 +46,9 @@ PixelArrayKernel::PixelArrayKernel(const LsConventionalConfig& config, const Pix
     m.saturation_V = config.pixel.saturation_voltage_V;
     m.samplings = config.multisampling.samplings;
     exact_ = std::make_unique<ExactActivation>(m);
+    inversion_ = config.simulation.inversion_draw;
+    if (config.simulation.certain_intervals && options_.sparse)
+      intervals_ = std::make_unique<CertainIntervals>(config.spot, dark_V_, electrons_per_V_, m.samplings);
   }
 }
 
@@ -88,40 +96,50 @@ double PixelArrayKernel::compute_cut_swing_V(double threshold_V) const {
   return lo / electrons_per_V_;
 }
 
+void PixelArrayKernel::set_window(const RowIllumination& in, RowState& row) {
+  // The pixels that can activate: all, or with the sparse window those within the spot's reach.
+  const int C = config_.pixel.columns;
+  row.threshold_V = golden::comparator_threshold_V(config_, in.background_V);
+  row.first = 0;
+  row.last = C - 1;
+  if (!options_.sparse) return;
+  const double rest = cut_swing_V(row.threshold_V) - in.background_V - dark_V_;
+  if (!(rest > 0)) return;
+  const double h = in.signal_V > 0 ? golden::spot_half_width_px(config_.spot, rest / in.signal_V) : -1;
+  if (h < 0) {
+    row.last = -1;  // nothing on this row can activate
+  } else {
+    row.first = static_cast<int>(std::max<double>(0, std::ceil(in.centre_px - h) - 1));
+    row.last = static_cast<int>(std::min<double>(C - 1, std::floor(in.centre_px + h) + 1));
+  }
+}
+
 void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   stimulus_.rows.resize(static_cast<std::size_t>(config_.pixel.rows));
+  stimulus_.first_row = first_row_;
+  stimulus_.row_count = rows();
   source_(frame, stimulus_);
   if (static_cast<int>(stimulus_.rows.size()) != config_.pixel.rows)
     throw std::invalid_argument("PixelArrayKernel: stimulus has " + std::to_string(stimulus_.rows.size()) +
                                 " rows, expected " + std::to_string(config_.pixel.rows));
   frame_ = frame;
+  frame_key_ = frame_stream_key(options_.seed, frame);
   have_frame_ = true;
   sampling_ = 0;
-  const int C = config_.pixel.columns, N = config_.multisampling.samplings;
-  for (int r = 0; r < config_.pixel.rows; ++r) {
-    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(r)];
+  const int N = config_.multisampling.samplings;
+  if (exact_) {
+    shapes_used_ = 0;
+    band_k_.clear();
+  }
+  for (int r = 0; r < rows(); ++r) {
+    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r)];
     RowState& row = rows_[static_cast<std::size_t>(r)];
     act_[static_cast<std::size_t>(r)].clear();
-    row.threshold_V = golden::comparator_threshold_V(config_, in.background_V);
-    // Window of pixels that can activate.
-    row.first = 0;
-    row.last = C - 1;
-    if (options_.sparse) {
-      const double rest = cut_swing_V(row.threshold_V) - in.background_V - dark_V_;
-      if (rest > 0) {
-        const double h = in.signal_V > 0 ? golden::spot_half_width_px(config_.spot, rest / in.signal_V) : -1;
-        if (h < 0) {
-          row.last = -1;  // nothing on this row can activate
-        } else {
-          row.first = static_cast<int>(std::max<double>(0, std::ceil(in.centre_px - h) - 1));
-          row.last = static_cast<int>(std::min<double>(C - 1, std::floor(in.centre_px + h) + 1));
-        }
-      }
-    }
     if (exact_) {
-      reset_row_exact(r, in, row);
+      reset_row_exact(first_row_ + r, in, row);
       continue;
     }
+    set_window(in, row);
     const int W = std::max(0, row.last - row.first + 1);
     row.pixels.resize(static_cast<std::size_t>(W));
     pixels_simulated_ += W;
@@ -133,7 +151,7 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
       p.electrons = 0;
       if (options_.noise.any()) {
         p.rng = pixel_stream(
-            pixel_stream_key(options_.seed, frame, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i)));
+            pixel_key_in_frame(frame_key_, static_cast<std::uint32_t>(first_row_ + r), static_cast<std::uint32_t>(i)));
         double ktc = 0, read = 0;
         standard_normal_pair(p.rng, ktc, read);  // always drawn
         p.offset_V = options_.noise.reset_ktc ? ktc * ktc_V_ : 0.0;
@@ -149,28 +167,6 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   }
 }
 
-void PixelArrayKernel::reset_row_exact(int r, const RowIllumination& in, RowState& row) {
-  const int W = std::max(0, row.last - row.first + 1), N = config_.multisampling.samplings;
-  row.fires_at.resize(static_cast<std::size_t>(W));
-  pixels_simulated_ += W;
-  const ActivationBounds& b = exact_->bounds(row.threshold_V);
-  PixelDrive d{in.signal_V, 0.0, in.background_V, dark_V_, 0.0};
-  for (int j = 0; j < W; ++j) {
-    const int i = row.first + j;
-    d.profile = golden::spot_profile(config_.spot, i - in.centre_px);
-    // The per-sampling path's mean per interval, expression for expression.
-    d.mean_step_e = golden::pixel_swing_V(in.signal_V, d.profile, in.background_V, dark_V_, 1.0) * electrons_per_V_ / N;
-    int k = exact_->certain_first_firing(d, b);
-    if (k < 0) {
-      pcg32 rng = pixel_stream(
-          pixel_stream_key(options_.seed, frame_, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i)));
-      k = exact_->draw_first_firing(d, row.threshold_V, rng);
-      ++pixels_drawn_;
-    }
-    row.fires_at[static_cast<std::size_t>(j)] = static_cast<std::uint8_t>(k);
-  }
-}
-
 void PixelArrayKernel::sample(int k) {
   assert(have_frame_ && k == sampling_ + 1 && k <= config_.multisampling.samplings && "samplings in order");
   sampling_ = k;
@@ -178,18 +174,13 @@ void PixelArrayKernel::sample(int k) {
   const double A = config_.pixel.source_follower_gain, vsat = config_.pixel.saturation_voltage_V;
   const double t_over_T = static_cast<double>(k) / N;
   const bool noisy = options_.noise.any();
-  if (exact_) {  // the firing samplings were drawn at the reset: latch this one's
-    for (int r = 0; r < config_.pixel.rows; ++r) {
-      const RowState& row = rows_[static_cast<std::size_t>(r)];
-      ActivationRow& act = act_[static_cast<std::size_t>(r)];
-      for (int j = 0, W = static_cast<int>(row.fires_at.size()); j < W; ++j)
-        if (row.fires_at[static_cast<std::size_t>(j)] == k) act.set(row.first + j);
-    }
+  if (exact_) {  // the firing samplings were decided at the reset: latch this one's
+    sample_exact(k);
     return;
   }
-  for (int r = 0; r < config_.pixel.rows; ++r) {
+  for (int r = 0; r < rows(); ++r) {
     RowState& row = rows_[static_cast<std::size_t>(r)];
-    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(r)];
+    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r)];
     ActivationRow& act = act_[static_cast<std::size_t>(r)];
     for (int j = 0, W = static_cast<int>(row.pixels.size()); j < W; ++j) {
       const int i = row.first + j;

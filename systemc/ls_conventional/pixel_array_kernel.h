@@ -27,6 +27,16 @@
 // noise): within the window each pixel's first firing sampling is drawn at the reset from its exact
 // distribution, or set without a draw where it is certain to 2^-56 (activation_sampler.h); the
 // samplings then only latch the drawn bits. Off: the draws above at every sampling, unchanged.
+// Two further switches of that path: simulation.certain_intervals (sparse only; --dense looks at
+// every pixel) finds a row's certain pixels as intervals around the spot centre and looks only at
+// the band between them one by one (certain_intervals.h; bit-identical to looking at every window
+// pixel), and simulation.inversion_draw draws an uncertain pixel's first firing sampling with one
+// keyed uniform by inversion of its exact distribution function (activation_sampler.h; else the
+// Gamma draw).
+//
+// Rows: a kernel may simulate a band of the array's rows (PixelArrayOptions::first_row,
+// row_count) so that bands run on several cores; the keyed streams make each row's bits
+// independent of the band it runs in.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -38,6 +48,7 @@
 #include "systemc/ls_conventional/frame_stimulus.h"
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/ls_conventional/activation_sampler.h"
+#include "systemc/ls_conventional/certain_intervals.h"
 
 namespace rangesim::systemc {
 
@@ -54,6 +65,8 @@ struct PixelArrayOptions {
   PixelNoiseConfig noise;  // which noise sources are sampled
   std::uint64_t seed = 1;  // key of the random streams
   bool sparse = true;      // simulate only the pixels that can activate (bounded skip)
+  int first_row = 0;       // the band of rows simulated: first_row ..
+  int row_count = -1;      // .. first_row + row_count - 1 (-1: to the last row)
 };
 
 class PixelArrayKernel {
@@ -71,8 +84,10 @@ class PixelArrayKernel {
   void reset_frame(std::uint64_t frame);
   void sample(int k);
 
+  // Rows are counted within the band: row(r) is the array's row first_row() + r.
   const ActivationRow& row(int r) const { return act_[static_cast<std::size_t>(r)]; }
-  int rows() const { return config_.pixel.rows; }
+  int rows() const { return static_cast<int>(rows_.size()); }
+  int first_row() const { return first_row_; }
   int columns() const { return config_.pixel.columns; }
   std::uint64_t frame() const { return frame_; }
   int sampling() const { return sampling_; }
@@ -82,7 +97,12 @@ class PixelArrayKernel {
   // Of those, pixels whose noise was drawn: every one on the per-sampling path, only the ones with
   // an uncertain outcome on the exact path (the rest were certain to 2^-56).
   long long pixels_drawn() const { return pixels_drawn_; }
+  // Exact path: pixels looked at one by one (every window pixel, or with certain intervals the band).
+  long long pixels_examined() const { return pixels_examined_; }
   bool exact_sampling() const { return exact_ != nullptr; }
+  bool certain_intervals() const { return intervals_ != nullptr; }
+  bool inversion_draw() const { return inversion_; }
+  const ExactActivation* exact() const { return exact_.get(); }
   // Simulated window [first, last] of row r in the current frame access (last < first: none).
   int window_first(int r) const { return rows_[static_cast<std::size_t>(r)].first; }
   int window_last(int r) const { return rows_[static_cast<std::size_t>(r)].last; }
@@ -102,12 +122,42 @@ class PixelArrayKernel {
     int first = 0, last = -1;   // simulated window [first, last]
     double threshold_V = 0;     // theta at the comparator input
     std::vector<Pixel> pixels;  // window pixels (index i - first), per-sampling path
-    std::vector<std::uint8_t> fires_at;  // exact path: first firing sampling per window pixel, 0 never
+    int shape = -1;             // exact path: the row's RowShape in shapes_
+    std::size_t band_at = 0;    // exact path: its band pixels' first firings from band_k_[band_at]
+  };
+  // Exact path: a pixel looked at one by one, with its certain first firing or its drive for a draw.
+  struct BandPixel {
+    int column = 0;
+    int certain = -1;  // first firing sampling if certain (0: never), -1: drawn
+    PixelDrive drive;
+    std::size_t cut_at = 0;  // its prepared inversion in RowShape::cut (when one was prepared)
+    bool prepared = false;
+  };
+  // Exact path: what a row's drive (signal, background, centre) decides: its threshold and window,
+  // the columns certain to have fired by each sampling (core ranges) and the band pixels. With
+  // certain intervals, consecutive rows of a frame access with the same drive share one (a plane
+  // puts the same drive on every row); without, every row makes its own from every window pixel.
+  // At sampling k a row holds its shape's columns core_first[k-1]..core_last[k-1] and the band
+  // pixels whose first firing is 1..k (a band pixel's own sampling decides, even inside a core range).
+  struct RowShape {
+    double signal_V = 0, background_V = 0, centre_px = 0;
+    int first = 0, last = -1;
+    double threshold_V = 0;
+    std::vector<int> core_first, core_last;
+    std::vector<BandPixel> band;
+    std::vector<double> cut;  // the band pixels' prepared inversions (ExactActivation::prepare_inversion)
   };
 
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
   double compute_cut_swing_V(double threshold_V) const;
-  void reset_row_exact(int r, const RowIllumination& in, RowState& row);  // the exact path's reset
+  void set_window(const RowIllumination& in, RowState& row);  // threshold and simulated window
+  // The exact path (pixel_array_exact.cpp): a row's reset for frame_, and the latch of sampling k.
+  void reset_row_exact(int r, const RowIllumination& in, RowState& row);
+  int make_shape(int r, const RowIllumination& in, RowState& row);
+  void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
+  BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
+  int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
+  void sample_exact(int k);
 
   LsConventionalConfig config_;                    // sensor
   PixelArrayOptions options_;                      // noise, seed, sparse
@@ -123,7 +173,16 @@ class PixelArrayKernel {
   double ktc_V_ = 0, read_V_ = 0;                  // noise rms
   long long pixels_simulated_ = 0;                 // statistics
   long long pixels_drawn_ = 0;                     // statistics
+  long long pixels_examined_ = 0;                  // statistics
+  int first_row_ = 0;                              // the band's first row in the array
+  std::uint64_t frame_key_ = 0;                    // frame_stream_key(seed, frame)
   std::unique_ptr<ExactActivation> exact_;         // the exact path (null: per-sampling draws)
+  std::unique_ptr<CertainIntervals> intervals_;    // certain pixels by intervals (null: every window pixel)
+  bool inversion_ = false;                         // uncertain pixels drawn by inversion where it applies
+  std::vector<RowShape> shapes_;                   // exact path: this frame access's row shapes ..
+  int shapes_used_ = 0;                            // .. the first shapes_used_ of them (kept for reuse)
+  ThresholdEntry* shape_entry_ = nullptr;          // the last shape's threshold entry
+  std::vector<std::uint8_t> band_k_;               // exact path: first firing of every row's band pixels
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 

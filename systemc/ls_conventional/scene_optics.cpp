@@ -18,17 +18,18 @@ constexpr double kPi = 3.14159265358979323846;
 Scene ls_conventional_scene(Scene s, const ParamSet& params) {
   const SensorRadiometry rad = ls_conventional_radiometry(params);
   if (s.shape == TargetShape::Step && !s.has("target.step_y_m")) {
-    s.notes.push_back(fmt::format("{}: a step with a column edge is rasterised into a depth map for ls-conventional",
-                                  s.file));
+    s.notes.push_back(
+        fmt::format("{}: a step with a column edge is rasterised into a depth map for ls-conventional", s.file));
     s = rasterised(s, rad);
   }
   if (s.shape == TargetShape::Objects) s = rasterised(s, rad);
   if (s.light.present) {
     const NativeLight n = native_light(s, rad, &s.notes);
     if (s.has("beam.power_W") || s.has("background.irradiance_W_per_m2"))
-      s.notes.push_back(fmt::format("{}: beam.power_W / background.irradiance_W_per_m2 override [source] / [ambient] "
-                                    "for ls-conventional",
-                                    s.file));
+      s.notes.push_back(
+          fmt::format("{}: beam.power_W / background.irradiance_W_per_m2 override [source] / [ambient] "
+                      "for ls-conventional",
+                      s.file));
     if (!s.has("beam.power_W")) s.beam_power_W = s.light.source_power_W;
     if (!s.has("background.irradiance_W_per_m2")) s.background_irradiance_W_per_m2 = n.ambient_in_band_W_per_m2;
     if (!s.has("beam.reference_distance_m")) s.reference_distance_m = s.distance_m;
@@ -73,9 +74,10 @@ double SceneOptics::cot_beam(int b) const {
 
 double SceneOptics::beam_angle_rad(int b) const { return std::atan2(1.0, cot_beam(b)); }
 
-RowTruth SceneOptics::truth(int b, int row) const {
+RowTruth SceneOptics::truth(int b, int row) const { return truth(b, cot_beam(b), row); }
+
+RowTruth SceneOptics::truth(int b, double cot, int row) const {
   const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m, p = config_.pixel.pitch_m;
-  const double cot = cot_beam(b);
   const double y_e = (row - principal_row_px()) * p;
   double z = 0;
   switch (scene_.shape) {
@@ -118,9 +120,12 @@ double SceneOptics::depth_map_z(int b, int row) const {
 
 void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) const {
   const int b = beam_position(frame);
+  const double cot = cot_beam(b);
   out.rows.resize(static_cast<std::size_t>(rows()));
-  for (int r = 0; r < rows(); ++r) {
-    const RowTruth t = truth(b, r);
+  const int first = std::clamp(out.first_row, 0, rows());
+  const int last = out.row_count < 0 ? rows() : std::min(rows(), first + out.row_count);
+  for (int r = first; r < last; ++r) {
+    const RowTruth t = truth(b, cot, r);
     systemc::RowIllumination& in = out.rows[static_cast<std::size_t>(r)];
     in.background_V = t.background_V;
     in.signal_V = t.hit ? t.signal_V : 0.0;

@@ -74,7 +74,8 @@ class SceneOptics {
 
  private:
   double cot_beam(int b) const;
-  double depth_map_z(int b, int row) const;  // depth_map: depth of the lit point on a row (< 0: none)
+  RowTruth truth(int b, double cot_beam, int row) const;  // truth(b, row) with cot_beam(b) made once
+  double depth_map_z(int b, int row) const;               // depth_map: depth of the lit point on a row (< 0: none)
 
   LsConventionalConfig config_;
   Scene scene_;

@@ -1,8 +1,13 @@
 #include "systemc/ls_conventional/sensor.h"
 
+#include <time.h>
+
+#include <algorithm>
 #include <chrono>
+#include <exception>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace rangesim::systemc {
 
@@ -136,26 +141,89 @@ long long default_budget(const LsConventionalConfig& c, long long frames) {
 }
 }  // namespace
 
+namespace {
+double thread_cpu_now() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// One band of rows run to the end on the calling thread.
+struct BandRun {
+  std::vector<FrameResult> frames;
+  std::vector<std::string> errors;
+  long long cycles = 0, pixels_simulated = 0, ticks = 0;
+  double cpu_s = 0;
+  std::exception_ptr failure;
+};
+
+void run_band(const LsConventionalConfig& config, SensorKernelOptions options, int first_row, int rows,
+              const StimulusSource& source, const SensorRunOptions& run, bool report, BandRun& out) {
+  const double c0 = thread_cpu_now();
+  try {
+    options.pixel.first_row = first_row;
+    options.pixel.row_count = rows;
+    LsConventionalSensorKernel k(config, options, source);
+    k.reserve_results(run.frames);
+    k.reset();
+    const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
+    for (long long f = 0; f < run.frames; ++f) {
+      const long long left = budget - k.cycle();
+      if (left <= 0)
+        throw std::runtime_error("simulation cycle budget of " + std::to_string(budget) + " cycles exhausted");
+      k.advance_frames(1, left);
+      if (report && run.progress) run.progress(f + 1);
+    }
+    out.cycles = k.cycle();
+    out.errors = k.errors();
+    out.pixels_simulated = k.pixels().pixels_simulated();
+    out.ticks = k.ticks();
+    out.frames = k.take_results();
+  } catch (...) {
+    out.failure = std::current_exception();
+  }
+  out.cpu_s = thread_cpu_now() - c0;
+}
+}  // namespace
+
 SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const SensorKernelOptions& options,
                                   StimulusSource source, const SensorRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
-  LsConventionalSensorKernel k(config, options, std::move(source));
-  k.reset();
-  const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
-  SensorRunResult r;
-  for (long long f = 0; f < run.frames; ++f) {
-    const long long left = budget - k.cycle();
-    if (left <= 0)
-      throw std::runtime_error("simulation cycle budget of " + std::to_string(budget) + " cycles exhausted");
-    k.run_frames(1, left);
-    if (run.progress) run.progress(f + 1);
+  const double c0 = thread_cpu_now();
+  const int rows = config.pixel.rows, bands = std::clamp(run.threads, 1, std::max(1, rows));
+  std::vector<BandRun> band(static_cast<std::size_t>(bands));
+  auto first_row = [&](int b) { return static_cast<int>(static_cast<long long>(rows) * b / bands); };
+  {
+    std::vector<std::thread> workers;
+    for (int b = 1; b < bands; ++b)
+      workers.emplace_back([&, b] {
+        run_band(config, options, first_row(b), first_row(b + 1) - first_row(b), source, run, false,
+                 band[static_cast<std::size_t>(b)]);
+      });
+    run_band(config, options, 0, first_row(1), source, run, true, band[0]);
+    for (auto& w : workers) w.join();
   }
-  r.frames = k.results();
-  r.cycles = k.cycle();
+  for (const BandRun& b : band)
+    if (b.failure) std::rethrow_exception(b.failure);
+  // The bands share the sequencer's schedule: frame results differ only in their rows.
+  SensorRunResult r;
+  r.frames = std::move(band[0].frames);
+  for (int b = 1; b < bands; ++b) {
+    BandRun& o = band[static_cast<std::size_t>(b)];
+    if (o.frames.size() != r.frames.size() || o.cycles != band[0].cycles)
+      throw std::logic_error("run_sensor_kernel: row bands disagree on the frame schedule");
+    for (std::size_t f = 0; f < r.frames.size(); ++f)
+      r.frames[f].rows.insert(r.frames[f].rows.end(), o.frames[f].rows.begin(), o.frames[f].rows.end());
+  }
+  r.cycles = band[0].cycles;
   r.simulated_time_s = static_cast<double>(r.cycles) / config.timing.clock_Hz;
-  r.errors = k.errors();
-  r.pixels_simulated = k.pixels().pixels_simulated();
-  r.ticks = k.ticks();
+  r.ticks = band[0].ticks;
+  for (BandRun& b : band) {
+    r.errors.insert(r.errors.end(), b.errors.begin(), b.errors.end());
+    r.pixels_simulated += b.pixels_simulated;
+    r.thread_cpu_s.push_back(b.cpu_s);
+  }
+  r.thread_cpu_s[0] = thread_cpu_now() - c0;  // band 0 with the set-up and the merge
   r.wall_time_s = seconds_since(t0);
   return r;
 }

@@ -98,6 +98,7 @@ struct SensorRunOptions {
   std::vector<int> traced_rows;             // rows whose search and centre pins are traced
   std::vector<TracePixel> traced_pixels;    // pixels whose comparator output is traced
   std::function<void(long long)> progress;  // after each frame access (frames done so far)
+  int threads = 1;  // bare kernel: the rows split into this many bands, one thread each (same results)
 };
 
 struct SensorRunResult {
@@ -110,9 +111,13 @@ struct SensorRunResult {
   std::vector<std::string> errors;  // kernel protocol violations
   long long pixels_simulated = 0;   // pixels simulated one by one (sparse windows)
   long long ticks = 0;              // clock edges evaluated (kernel; SystemC: = cycles)
+  // Bare kernel: CPU time of each band's thread (CLOCK_THREAD_CPUTIME_ID); [0] is the calling
+  // thread, which also sets up, runs band 0 and merges. Their maximum is the run's critical path.
+  std::vector<double> thread_cpu_s;
 };
 
-// Bare kernel. Throws std::runtime_error if the cycle budget runs out.
+// Bare kernel, on run.threads threads (row bands; the keyed streams make the result the same for
+// any thread count). Throws std::runtime_error if the cycle budget runs out.
 SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const SensorKernelOptions& options,
                                   StimulusSource source, const SensorRunOptions& run);
 

@@ -28,7 +28,7 @@ LsConventionalSensorKernel::LsConventionalSensorKernel(const LsConventionalConfi
       options_(options),
       sequencer_(config.timing, config.multisampling.samplings),
       pixels_(config, options.pixel, std::move(source)) {
-  const int rows = config.pixel.rows;
+  const int rows = pixels_.rows();  // the band of rows this kernel simulates
   search_.reserve(static_cast<std::size_t>(rows));
   centre_.reserve(static_cast<std::size_t>(rows));
   for (int r = 0; r < rows; ++r) {
@@ -76,12 +76,14 @@ void LsConventionalSensorKernel::tick() {
     for (std::size_t r = 0; r < rows; ++r)
       if (!search_[r].idle())
         errors_.push_back("frame " + std::to_string(p.frame) + " sampling " + std::to_string(p.sampling) + " row " +
-                          std::to_string(r) + ": search start while the row's search is busy");
+                          std::to_string(pixels_.first_row() + static_cast<int>(r)) +
+                          ": search start while the row's search is busy");
   }
   if (p.frame_done) {
     for (std::size_t r = 0; r < rows; ++r)
       if (search_pins_[r].busy)
-        errors_.push_back("frame " + std::to_string(p.frame) + " row " + std::to_string(r) +
+        errors_.push_back("frame " + std::to_string(p.frame) + " row " +
+                          std::to_string(pixels_.first_row() + static_cast<int>(r)) +
                           ": address search still busy at the end of the frame access");
     finish_frame(p);
   }
@@ -112,7 +114,13 @@ void LsConventionalSensorKernel::step() {
 }
 
 std::vector<FrameResult> LsConventionalSensorKernel::run_frames(long long frames, long long cycle_budget) {
-  const std::size_t first = results_.size(), target = first + static_cast<std::size_t>(frames);
+  const std::size_t first = results_.size();
+  advance_frames(frames, cycle_budget);
+  return {results_.begin() + static_cast<std::ptrdiff_t>(first), results_.end()};
+}
+
+void LsConventionalSensorKernel::advance_frames(long long frames, long long cycle_budget) {
+  const std::size_t target = results_.size() + static_cast<std::size_t>(frames);
   if (cycle_budget <= 0) cycle_budget = 2 * sequencer_.frame_cycles() * (frames + 1);
   const long long limit = sequencer_.cycle() + cycle_budget;
   while (results_.size() < target) {
@@ -121,7 +129,6 @@ std::vector<FrameResult> LsConventionalSensorKernel::run_frames(long long frames
                                " cycles exhausted before " + std::to_string(frames) + " frame accesses completed");
     step();
   }
-  return {results_.begin() + static_cast<std::ptrdiff_t>(first), results_.end()};
 }
 
 }  // namespace rangesim::systemc

@@ -28,16 +28,16 @@
 namespace rangesim::systemc {
 
 struct SensorKernelOptions {
-  PixelArrayOptions pixel;     // noise, seed, sparse
+  PixelArrayOptions pixel;     // noise, seed, sparse, the band of rows
   bool event_skipping = true;  // step() jumps to the next event instead of ticking every cycle
 };
 
 // Outcome of one frame access.
 struct FrameResult {
-  std::uint64_t frame = 0;                               // frame-access counter (beam position index in a range map)
-  std::vector<CentreProcessorPins> rows;                 // centre per row, as output in the frame's last cycle
-  long long end_cycle = 0;                               // cycles since reset release at the end of this frame
-  long long cycles = 0;                                  // cycles of this frame access
+  std::uint64_t frame = 0;                // frame-access counter (beam position index in a range map)
+  std::vector<CentreProcessorPins> rows;  // centre per row (of the kernel's band), as output in the frame's last cycle
+  long long end_cycle = 0;                // cycles since reset release at the end of this frame
+  long long cycles = 0;                   // cycles of this frame access
   std::array<long long, kReadoutPhases> phase_cycles{};  // by ReadoutPhase
   int rows_detected() const;
   bool operator==(const FrameResult& o) const {
@@ -60,8 +60,12 @@ class LsConventionalSensorKernel {
   // Runs until `frames` more frame results exist; throws std::runtime_error if that takes more
   // than `cycle_budget` cycles (0: 2 frame accesses' worth per frame). Returns the new results.
   std::vector<FrameResult> run_frames(long long frames, long long cycle_budget = 0);
+  // The same without returning them (results() holds them): no copy per call.
+  void advance_frames(long long frames, long long cycle_budget = 0);
 
   const std::vector<FrameResult>& results() const { return results_; }
+  std::vector<FrameResult> take_results() { return std::move(results_); }
+  void reserve_results(long long frames) { results_.reserve(static_cast<std::size_t>(frames)); }
   // Forgets the stored results: a caller that takes each frame from run_frames() (Monte Carlo
   // trials, one frame each) keeps memory bounded instead of growing by one result per frame.
   void clear_results() { results_.clear(); }

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <fmt/format.h>
 #include <stdexcept>
 
@@ -83,44 +84,96 @@ struct Reconstruction {
   bool timing_matches = true;
 };
 
-// One row of one frame access: the range, its error against the truth, its points.csv line. The
-// row's range counts when enough of the samplings found the spot and its centre lies inside the
-// edge margin (cfg.validity).
-void add_point(Reconstruction& out, const scene::SceneOptics& optics, const FrameResult& fr, int b, int r,
-               std::size_t f, const LsConventionalConfig& cfg) {
-  const scene::RowTruth t = optics.truth(b, r);
-  const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
-  const double fraction = static_cast<double>(p.count) / cfg.multisampling.samplings;
-  const bool valid = centre_valid(p.count, cfg.multisampling.samplings, p.centre_px(), cfg.pixel.columns,
-                                  cfg.validity.min_detecting_fraction, cfg.validity.edge_margin_px);
-  out.map.confidence[static_cast<std::size_t>(r)][f] = fraction;
-  double range = NAN, err_px = NAN, err_m = NAN;
-  if (valid) {
-    range = optics.range_from_centre_m(b, p.centre_px());
-    out.map.range_m[static_cast<std::size_t>(r)][f] = range;
+// One row of one frame access: its truth, its centre and what follows: the range counts when enough
+// of the samplings found the spot and its centre lies inside the edge margin (cfg.validity).
+struct Point {
+  scene::RowTruth t;
+  CentreProcessorPins p;
+  double fraction = 0, range = NAN, err_px = NAN, err_m = NAN;
+  bool valid = false;
+  bool listed() const { return t.visible || p.valid; }  // has a points.csv line
+};
+
+Point point_of(const scene::SceneOptics& optics, const FrameResult& fr, int b, int r, const LsConventionalConfig& cfg) {
+  Point x;
+  x.t = optics.truth(b, r);
+  x.p = fr.rows[static_cast<std::size_t>(r)];
+  x.fraction = static_cast<double>(x.p.count) / cfg.multisampling.samplings;
+  x.valid = centre_valid(x.p.count, cfg.multisampling.samplings, x.p.centre_px(), cfg.pixel.columns,
+                         cfg.validity.min_detecting_fraction, cfg.validity.edge_margin_px);
+  if (x.valid) x.range = optics.range_from_centre_m(b, x.p.centre_px());
+  if (x.t.visible && x.valid) {
+    x.err_px = x.p.centre_px() - x.t.centre_px;
+    x.err_m = x.range - x.t.range_m;
   }
-  if (t.visible) {
+  return x;
+}
+
+// The map's cells and the counts of one point.
+void add_point(Reconstruction& out, const Point& x, int r, std::size_t f) {
+  const std::size_t row = static_cast<std::size_t>(r);
+  out.map.confidence[row][f] = x.fraction;
+  if (x.valid) out.map.range_m[row][f] = x.range;
+  if (x.t.visible) {
     ++out.visible;
-    out.map.truth_m[static_cast<std::size_t>(r)][f] = t.range_m;
-    if (valid) {
+    out.map.truth_m[row][f] = x.t.range_m;
+    if (x.valid) {
       ++out.detected;
-      err_px = p.centre_px() - t.centre_px;
-      err_m = range - t.range_m;
-      out.err.add(err_m, err_px);
+      out.err.add(x.err_m, x.err_px);
     } else {
       ++out.missed;
     }
-  } else if (valid) {
+  } else if (x.valid) {
     ++out.false_detections;
   }
-  if (t.visible || p.valid)
-    out.points.add_row({static_cast<double>(fr.frame), static_cast<double>(b), static_cast<double>(r),
-                        t.visible ? 1.0 : 0.0, t.hit ? t.centre_px : NAN, t.hit ? t.range_m : NAN, p.valid ? 1.0 : 0.0,
-                        p.valid ? p.centre_px() : NAN, range, err_px, err_m, valid ? 1.0 : 0.0, fraction});
 }
 
-Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics& optics,
-                           const LsConventionalConfig& cfg, const golden::FrameTiming& gt) {
+Table points_table() {
+  return Table({{"frame", true},
+                {"beam_position", true},
+                {"row", true},
+                {"truth_visible", true},
+                {"truth_centre_px"},
+                {"truth_range_m"},
+                {"detected", true},
+                {"centre_px"},
+                {"range_m"},
+                {"error_px"},
+                {"error_m"},
+                {"valid", true},
+                {"detecting_fraction"}});
+}
+
+// The points table's rows made when it is written, block by block (a full map's 137,000 points
+// are never held whole): the same points in the same order as reconstruct() counts them.
+void produce_points(const SensorRunResult& res, const scene::SceneOptics& optics, const LsConventionalConfig& cfg,
+                    const Table::BlockSink& sink) {
+  constexpr std::size_t kBlockRows = 2048, kColumns = 13;
+  std::vector<double> block;
+  block.reserve(kBlockRows * kColumns);
+  for (const FrameResult& fr : res.frames) {
+    const int b = optics.beam_position(fr.frame);
+    for (int r = 0; r < cfg.pixel.rows; ++r) {
+      const Point x = point_of(optics, fr, b, r, cfg);
+      if (!x.listed()) continue;
+      block.insert(block.end(), {static_cast<double>(fr.frame), static_cast<double>(b), static_cast<double>(r),
+                                 x.t.visible ? 1.0 : 0.0, x.t.hit ? x.t.centre_px : NAN, x.t.hit ? x.t.range_m : NAN,
+                                 x.p.valid ? 1.0 : 0.0, x.p.valid ? x.p.centre_px() : NAN, x.range, x.err_px, x.err_m,
+                                 x.valid ? 1.0 : 0.0, x.fraction});
+      if (block.size() == kBlockRows * kColumns) {
+        sink(block.data(), kBlockRows);
+        block.clear();
+      }
+    }
+  }
+  if (!block.empty()) sink(block.data(), block.size() / kColumns);
+}
+
+Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
+                           const std::shared_ptr<const scene::SceneOptics>& optics_ptr, const LsConventionalConfig& cfg,
+                           const golden::FrameTiming& gt) {
+  const SensorRunResult& res = *run;
+  const scene::SceneOptics& optics = *optics_ptr;
   Reconstruction out;
   const int rows = cfg.pixel.rows, samplings = cfg.multisampling.samplings;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
@@ -131,20 +184,8 @@ Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics&
       "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of its {} samplings (at "
       "least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
       cfg.validity.min_detecting_fraction, samplings, cfg.validity.edge_margin_px);
-  out.points = Table({{"frame", true},
-                      {"beam_position", true},
-                      {"row", true},
-                      {"truth_visible", true},
-                      {"truth_centre_px"},
-                      {"truth_range_m"},
-                      {"detected", true},
-                      {"centre_px"},
-                      {"range_m"},
-                      {"error_px"},
-                      {"error_m"},
-                      {"valid", true},
-                      {"detecting_fraction"}});
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
+  std::size_t listed = 0;
   for (std::size_t f = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
     const int b = optics.beam_position(fr.frame);
@@ -154,9 +195,18 @@ Reconstruction reconstruct(const SensorRunResult& res, const scene::SceneOptics&
       out.timing_matches = out.timing_matches && fr.phase_cycles[i] == gt.phases[i].cycles;
     }
     out.frames_csv += fmt::format(",{}\n", fr.rows_detected());
-    for (int r = 0; r < rows; ++r) add_point(out, optics, fr, b, r, f, cfg);
+    for (int r = 0; r < rows; ++r) {
+      const Point x = point_of(optics, fr, b, r, cfg);
+      add_point(out, x, r, f);
+      listed += x.listed() ? 1 : 0;
+    }
   }
   for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
+  out.points = points_table();
+  out.points.produced_rows = listed;
+  out.points.produce = [run, optics_ptr, cfg](const Table::BlockSink& sink) {
+    produce_points(*run, *optics_ptr, cfg, sink);
+  };
   return out;
 }
 
@@ -242,16 +292,18 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
         "--tick selects the kernel's cycle-by-cycle path; use it with --kernel-only (SystemC always ticks)");
   const scene::Scene sc = scene::ls_conventional_scene(scene::load_scene(req.scene, "ls-conventional"), params);
   fmt::print(stderr, "{}", scene::notes_text(sc.notes, "simulate"));
-  const scene::SceneOptics optics(c.cfg, sc);
+  const auto optics_ptr = std::make_shared<const scene::SceneOptics>(c.cfg, sc);
+  const scene::SceneOptics& optics = *optics_ptr;
   // Per frame access and row: the centre, its points.csv line and the map's cells.
   host.check_memory(static_cast<double>(c.frames) * c.cfg.pixel.rows * 256.0,
                     fmt::format("{} frame accesses x {} rows", c.frames, c.cfg.pixel.rows), "--frames");
   host.open_output(sc.name);
-  const SensorRunResult res = run_model(req, c.cfg, optics, c.frames, vcd_base, host);
+  const auto res_ptr = std::make_shared<const SensorRunResult>(run_model(req, c.cfg, optics, c.frames, vcd_base, host));
+  const SensorRunResult& res = *res_ptr;
 
   const golden::FrameTiming gt = golden::frame_timing(c.cfg.timing, c.cfg.multisampling.samplings);
   SimulationResult out;
-  Reconstruction rec = reconstruct(res, optics, c.cfg, gt);
+  Reconstruction rec = reconstruct(res_ptr, optics_ptr, c.cfg, gt);
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);

@@ -21,11 +21,10 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   const CommandResult r = run_command(rangesim("bench --quick --json --out '" + dir + "'"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);  // stdout is the JSON and nothing else
-  for (const char* key :
-       {"sparse_vs_dense", "model_vs_rtl", "floor_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
-        "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod",
-        "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor", "output_share", "numpy_peer_ls_conventional",
-        "numpy_peer_lockin_mc"}) {
+  for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "floor_ratio", "systemc_vs_kernel", "mc_vs_bare_rng",
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad",
+                          "aggregated_vs_per_clock_demod", "sparse_vs_dense_spad", "threads2_vs_1", "realtime_factor",
+                          "output_share", "numpy_peer_ls_conventional", "numpy_peer_lockin_mc"}) {
     ASSERT_TRUE(j.contains(key)) << key;
     EXPECT_TRUE(j[key].is_number() || j[key].is_null()) << key;
     EXPECT_TRUE(j["targets"].contains(key)) << key;
@@ -34,10 +33,9 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
     EXPECT_EQ(j["met"][key].is_boolean(), j[key].is_number()) << key;
     if (j[key].is_null()) EXPECT_TRUE(j["details"][key].contains("note")) << key << ": a missing figure says why";
   }
-  for (const char* key :
-       {"sparse_vs_dense", "model_vs_rtl", "floor_ratio", "systemc_vs_kernel", "aggregated_vs_per_clock_lockin",
-        "aggregated_vs_per_clock_spad", "aggregated_vs_per_clock_demod", "sparse_vs_dense_spad", "realtime_factor",
-        "output_share"}) {
+  for (const char* key : {"sparse_vs_dense", "model_vs_rtl", "floor_ratio", "systemc_vs_kernel",
+                          "aggregated_vs_per_clock_lockin", "aggregated_vs_per_clock_spad",
+                          "aggregated_vs_per_clock_demod", "sparse_vs_dense_spad", "realtime_factor", "output_share"}) {
     ASSERT_TRUE(j[key].is_number()) << key << " is measured by the bench itself";
     EXPECT_GT(j[key].get<double>(), 0.0) << key;
   }
@@ -45,10 +43,10 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
   EXPECT_TRUE(j["checks_passed"].get<bool>()) << j["checks"].dump();
   for (const char* check :
        {"sparse_equals_dense", "rtl_equals_model", "systemc_equals_kernel",
-        "ls_conventional_tick_equals_event_skipping", "lockin_aggregated_statistically_identical",
-        "spad_aggregated_statistically_identical", "spad_per_clock_equals_per_cycle", "spad_sparse_cycles_identical",
-        "spad_sparse_lit_pixels_identical", "spad_sparse_background_statistically_identical",
-        "demod_aggregated_statistically_identical"}) {
+        "ls_conventional_tick_equals_event_skipping", "ls_conventional_two_threads_equal_one",
+        "lockin_aggregated_statistically_identical", "spad_aggregated_statistically_identical",
+        "spad_per_clock_equals_per_cycle", "spad_sparse_cycles_identical", "spad_sparse_lit_pixels_identical",
+        "spad_sparse_background_statistically_identical", "demod_aggregated_statistically_identical"}) {
     ASSERT_TRUE(j["checks"].contains(check)) << check;
     EXPECT_TRUE(j["checks"][check].get<bool>()) << check;
   }
@@ -59,7 +57,8 @@ TEST(Bench, QuickJsonHasEveryFigureAndItsChecksPass) {
             j["details"]["floor_ratio"]["lit_pixel_samplings"].get<long long>());
   // The NumPy peer, where NumPy is installed, at equal error.
   if (j["numpy_peer_lockin_mc"].is_number())
-    EXPECT_TRUE(j["details"]["numpy_peer_lockin_mc"]["errors_agree"].get<bool>()) << j["details"]["numpy_peer_lockin_mc"];
+    EXPECT_TRUE(j["details"]["numpy_peer_lockin_mc"]["errors_agree"].get<bool>())
+        << j["details"]["numpy_peer_lockin_mc"];
   // The full readout RTL: quick = 15 frame accesses, every row's centre and thousands of streams.
   EXPECT_GT(j["details"]["model_vs_rtl"]["streams_compared"].get<long long>(), 1000);
   EXPECT_EQ(j["details"]["model_vs_rtl"]["centres_compared"].get<long long>(), 15 * 365);

@@ -257,6 +257,31 @@ TEST(LsConventionalSensorKernel, CycleBudgetIsEnforced) {
   EXPECT_THROW(rs::run_sensor_kernel(small_config(), options(true), RandomStimulus{}, run), std::runtime_error);
 }
 
+TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
+  // run_sensor_kernel splits the rows into bands, one thread each: the keyed streams make every
+  // row's bits the same in any band, so the merged frames equal the one-thread run's.
+  const LsConventionalConfig c = small_config(23, 96, 4);
+  RandomStimulus stim;
+  stim.sig_lo = 0.011;
+  stim.sig_hi = 0.05;  // near the threshold: noise decides
+  for (const bool noise : {true, false}) {
+    rs::SensorRunOptions run;
+    run.frames = 20;
+    const auto one = rs::run_sensor_kernel(c, options(true, noise), stim, run);
+    ASSERT_EQ(one.thread_cpu_s.size(), 1u);
+    for (const int threads : {2, 3}) {
+      run.threads = threads;
+      const auto many = rs::run_sensor_kernel(c, options(true, noise), stim, run);
+      ASSERT_EQ(many.thread_cpu_s.size(), static_cast<std::size_t>(threads));
+      ASSERT_EQ(many.frames.size(), one.frames.size());
+      for (std::size_t f = 0; f < one.frames.size(); ++f) EXPECT_TRUE(one.frames[f] == many.frames[f]) << f;
+      EXPECT_EQ(many.cycles, one.cycles);
+      EXPECT_EQ(many.pixels_simulated, one.pixels_simulated);
+      EXPECT_TRUE(many.errors.empty());
+    }
+  }
+}
+
 TEST(CentreProcessorKernel, BitSerialDecodeEqualsClosedFormAndRoundsToNearest) {
   const rangesim::AddressSearchConfig cfg{96, 7, 2};
   rs::AddressSearchKernel search(cfg, 2);

@@ -1,0 +1,42 @@
+#pragma once
+// The heat-map images of `rangesim simulate` (range_map.png, range_error.png), drawn in-process:
+// one map cell an s x s square (s from 1 to 8: the map at least 200 px across, a full
+// ls-conventional map one pixel a cell), NaN cells blank,
+// a frame with ticks and their values, the title, both axis labels and a colour bar with its
+// values and label, in a 5 x 7 bitmap font drawn at twice its size (app/simulate/bitmap_font.h),
+// written as an indexed-colour PNG (app/simulate/png_writer.h). Rows are drawn from the first at
+// the bottom, as gnuplot's `matrix with image` did. A map costs a few milliseconds, where gnuplot
+// took about a second of CPU for the two images of a full ls-conventional map (parsing the text
+// matrix and cairo drawing).
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace rangesim::app {
+
+enum class MapPalette { Viridis, Diverging };
+
+struct MapImageSpec {
+  std::string title, x_label, y_label, colour_label;
+  double lo = 0, hi = 1;  // colour range: values beyond it take the end colours
+  MapPalette palette = MapPalette::Viridis;
+  int first_row = 0;  // the y value of the map's row 0
+};
+
+// Draws maps into one image buffer, reused from map to map (a map's first-touched pages cost more
+// than drawing it).
+class MapImageWriter {
+ public:
+  MapImageWriter();
+  ~MapImageWriter();
+  // value(row, column) of a rows x columns map; throws std::runtime_error naming the path when it
+  // cannot be written.
+  void write(const std::string& path, int rows, int columns, const std::function<double(int, int)>& value,
+             const MapImageSpec& spec);
+
+ private:
+  struct Buffers;
+  std::unique_ptr<Buffers> b_;
+};
+
+}  // namespace rangesim::app
