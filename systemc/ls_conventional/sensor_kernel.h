@@ -47,8 +47,8 @@ struct FrameResult {
   // by it. The kernel's view of its pixel array, not an output pin: the sc_module and the RTL do not
   // fill it and == leaves it out.
   std::vector<ActivationExtent> extents;
-  long long end_cycle = 0;                // cycles since reset release at the end of this frame
-  long long cycles = 0;                   // cycles of this frame access
+  long long end_cycle = 0;                               // cycles since reset release at the end of this frame
+  long long cycles = 0;                                  // cycles of this frame access
   std::array<long long, kReadoutPhases> phase_cycles{};  // by ReadoutPhase
   int rows_detected() const;
   bool operator==(const FrameResult& o) const {
