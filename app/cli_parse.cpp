@@ -197,8 +197,9 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   ev->add_option("--trials", ev_opt.trials,
                  "Monte Carlo: run the clock-level kernels with noise N times at every detectable grid point\n"
                  "(2..10000000) and report every accuracy value with its 95% confidence interval (mc_points.csv,\n"
-                 "mc_*.csv maps, mc_accuracy.png, summary.json monte_carlo); every point where the golden accuracy\n"
-                 "falls outside the interval is printed and listed in mc_golden_outside_ci.csv")
+                 "mc_*.csv maps, mc_accuracy.png, summary.json monte_carlo); every quantity where golden (accuracy,\n"
+                 "without outliers where it splits them off, P(detect), P(outlier)) falls outside the interval is\n"
+                 "printed and listed in mc_golden_outside_ci.csv")
       ->transform(integer_in(2, 10000000));
   ev->add_option("--target-error", ev_opt.target_error,
                  "Monte Carlo: add trials per point until the 95% CI half-width of the accuracy is <= E metres\n"

@@ -139,7 +139,7 @@ py::object monte_carlo_fields(const app::mc::McGrid& g) {
         return st ? ((*st).*member.*end) * scale : golden::kNaN;
       });
     };
-    const std::string n = name, unit = n == "p_detect" ? "" : "_m";
+    const std::string n = name, unit = n.rfind("p_", 0) == 0 ? "" : "_m";
     f[py::str(n + unit)] = part(&app::mc::McInterval::value);
     f[py::str(n + "_lo" + unit)] = part(&app::mc::McInterval::lo);
     f[py::str(n + "_hi" + unit)] = part(&app::mc::McInterval::hi);
@@ -148,6 +148,8 @@ py::object monte_carlo_fields(const app::mc::McGrid& g) {
   interval("bias", &app::mc::McPointStats::bias, g.metres_per_unit);
   interval("std", &app::mc::McPointStats::std, g.metres_per_unit);
   interval("accuracy", &app::mc::McPointStats::rms, g.metres_per_unit);
+  interval("p_outlier", &app::mc::McPointStats::p_outlier, 1.0);
+  interval("accuracy_clean", &app::mc::McPointStats::rms_clean, g.metres_per_unit);
   return make_result(f);
 }
 

@@ -68,7 +68,7 @@ std::string resume_command(const EvaluateOptions& o, const std::string& dir) {
 
 // Everything that changes the sweep's results: the resolved preset and the Monte Carlo options.
 std::string fingerprint(const ParamSet& params, const mc::McSweepOptions& o) {
-  std::string f = fmt::format("rangesim evaluate --trials (Monte Carlo 1)\nsensor = {}\n", params.sensor_id());
+  std::string f = fmt::format("rangesim evaluate --trials (Monte Carlo 2)\nsensor = {}\n", params.sensor_id());
   for (const auto& [key, v] : params.values())
     f += v.kind == ParamKind::Text ? fmt::format("{} = {}\n", key, v.text)
                                    : fmt::format("{} = {:.17g}\n", key, v.number);

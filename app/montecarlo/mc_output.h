@@ -23,20 +23,31 @@ struct McGrid {
   unsigned long long seed = 1;
 };
 
-// A point where the golden accuracy falls outside the MC accuracy's 95% CI.
+// One quantity golden is compared on at a point (docs/evaluate-montecarlo.md, "Agreement"): the
+// accuracy (of the trials without an outlier where the model splits them off, else of all), and
+// where the model gives them, the detection and outlier probabilities.
+struct McComparison {
+  std::string quantity;               // "accuracy_clean_m", "accuracy_m", "p_detect" or "p_outlier"
+  double golden = 0;                  // golden's value (m or probability)
+  McInterval mc;                      // the MC's value and 95% CI (m or probability)
+  double gap_half_widths = 0;         // |golden - MC| in half-widths of the CI on golden's side
+  bool inside = false;                // golden inside the 95% CI
+  bool within_2_half_widths = false;  // the stated test (tests/montecarlo/test_mc_golden.cpp)
+};
+// Every quantity compared at grid point i (run there).
+std::vector<McComparison> mc_comparisons(const McGrid& g, std::size_t i);
+
+// A quantity at a point where golden falls outside the MC's 95% CI.
 struct McOutsidePoint {
   std::size_t index = 0;              // grid index (row-major)
   double signal = 0, background = 0;  // sensor units
-  double golden_m = 0;                // golden accuracy (m)
-  McInterval mc;                      // MC accuracy and its 95% CI (m)
-  double p_detect = 0;                // MC detection probability
-  double gap_rel = 0;                 // (golden - MC) / MC
-  double gap_half_widths = 0;         // |golden - MC| / CI half-width
-  bool within_2_half_widths = false;  // passes the stated test (tests/montecarlo/test_mc_golden.cpp) all the same
+  McComparison c;
+  double p_detect = 0;  // MC detection probability
+  double gap_rel = 0;   // (golden - MC) / MC
 };
-// Every point run where golden falls outside the CI, in grid order.
+// Every compared quantity outside the CI, in grid order.
 std::vector<McOutsidePoint> mc_golden_outside_ci(const McGrid& g);
-// mc_golden_outside_ci.csv: those points, one a line (a header only when there are none).
+// mc_golden_outside_ci.csv: those, one a line (a header only when there are none).
 std::string mc_outside_csv(const McGrid& g);
 
 // One line per point run: golden accuracy, trials, p_detect, bias, std and accuracy (m) with CIs.

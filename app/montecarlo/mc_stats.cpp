@@ -17,20 +17,20 @@ McInterval wilson_interval(long long k, long long n) {
   const double centre = (p + z2 / (2 * nn)) / (1 + z2 / nn);
   const double half = kZ95 * std::sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn)) / (1 + z2 / nn);
   r.value = p;
-  r.lo = std::max(0.0, centre - half);
-  r.hi = std::min(1.0, centre + half);
+  // At k = 0 (k = n) the interval ends at 0 (1) exactly; the formula leaves a rounding residue.
+  r.lo = k == 0 ? 0.0 : std::max(0.0, centre - half);
+  r.hi = k == n ? 1.0 : std::min(1.0, centre + half);
   return r;
 }
 
-McPointStats summarise_trials(long long trials, const std::vector<double>& errors) {
-  McPointStats s;
-  s.trials = trials;
-  s.detected = static_cast<long long>(errors.size());
-  s.p_detect = wilson_interval(s.detected, trials);
+namespace {
+
+// Mean error, std and rms with their intervals of the errors (two passes in trial order: mean,
+// then central moments, no cancellation of large sums).
+void error_intervals(const std::vector<double>& errors, McInterval* bias, McInterval* std_dev, McInterval& rms) {
   const size_t n = errors.size();
-  if (n < 2) return s;
+  if (n < 2) return;
   const double nn = static_cast<double>(n);
-  // Two passes in trial order: mean, then central moments (no cancellation of large sums).
   double sum = 0, sum_sq = 0;
   for (double e : errors) sum += e, sum_sq += e * e;
   const double mean = sum / nn, ms = sum_sq / nn;
@@ -41,17 +41,38 @@ McPointStats summarise_trials(long long trials, const std::vector<double>& error
   }
   const double var = m2 / (nn - 1);
   m4 /= nn;
-  s.bias = {mean, mean - kZ95 * std::sqrt(var / nn), mean + kZ95 * std::sqrt(var / nn)};
+  if (bias) *bias = {mean, mean - kZ95 * std::sqrt(var / nn), mean + kZ95 * std::sqrt(var / nn)};
   const double se_var = std::sqrt(std::max(0.0, m4 - (m2 / nn) * (m2 / nn)) / nn);
-  s.std = {std::sqrt(var), std::sqrt(std::max(0.0, var - kZ95 * se_var)), std::sqrt(var + kZ95 * se_var)};
+  if (std_dev)
+    *std_dev = {std::sqrt(var), std::sqrt(std::max(0.0, var - kZ95 * se_var)), std::sqrt(var + kZ95 * se_var)};
   const double se_ms = std::sqrt(v_sq / (nn - 1) / nn);
-  s.rms = {std::sqrt(ms), std::sqrt(std::max(0.0, ms - kZ95 * se_ms)), std::sqrt(ms + kZ95 * se_ms)};
+  rms = {std::sqrt(ms), std::sqrt(std::max(0.0, ms - kZ95 * se_ms)), std::sqrt(ms + kZ95 * se_ms)};
+}
+
+}  // namespace
+
+McPointStats summarise_trials(long long trials, const std::vector<double>& errors, const std::vector<char>& outlier) {
+  McPointStats s;
+  s.trials = trials;
+  s.detected = static_cast<long long>(errors.size());
+  s.p_detect = wilson_interval(s.detected, trials);
+  std::vector<double> clean;
+  clean.reserve(errors.size());
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    if (i < outlier.size() && outlier[i])
+      ++s.outliers;
+    else
+      clean.push_back(errors[i]);
+  }
+  s.p_outlier = wilson_interval(s.outliers, trials);
+  error_intervals(errors, &s.bias, &s.std, s.rms);
+  error_intervals(clean, nullptr, nullptr, s.rms_clean);
   return s;
 }
 
 std::string McPointStats::to_record() const {
-  std::string r = fmt::format("{} {}", trials, detected);
-  for (const McInterval* i : {&p_detect, &bias, &std, &rms})
+  std::string r = fmt::format("{} {} {}", trials, detected, outliers);
+  for (const McInterval* i : {&p_detect, &bias, &std, &rms, &p_outlier, &rms_clean})
     for (double v : {i->value, i->lo, i->hi}) {
       char buf[64];
       std::snprintf(buf, sizeof buf, " %a", v);
@@ -63,8 +84,9 @@ std::string McPointStats::to_record() const {
 McPointStats McPointStats::from_record(const std::string& record) {
   std::istringstream in(record);
   McPointStats s;
-  if (!(in >> s.trials >> s.detected)) throw std::runtime_error("malformed Monte Carlo record: " + record);
-  for (McInterval* i : {&s.p_detect, &s.bias, &s.std, &s.rms})
+  if (!(in >> s.trials >> s.detected >> s.outliers))
+    throw std::runtime_error("malformed Monte Carlo record: " + record);
+  for (McInterval* i : {&s.p_detect, &s.bias, &s.std, &s.rms, &s.p_outlier, &s.rms_clean})
     for (double* v : {&i->value, &i->lo, &i->hi}) {
       std::string tok;
       if (!(in >> tok)) throw std::runtime_error("malformed Monte Carlo record: " + record);

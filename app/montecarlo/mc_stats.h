@@ -11,7 +11,11 @@
 //   std       sqrt of var +- z sqrt((m4 - var^2) / n) (the variance's standard error from the
 //             fourth central moment, no normality assumed), lower end clamped at 0;
 //   rms       sqrt of mean(e^2) +- z sd(e^2) / sqrt(n): the accuracy (rms error), the same
-//             quantity as the golden `accuracy` (sqrt(bias^2 + variance)).
+//             quantity as the golden `accuracy` (sqrt(bias^2 + variance));
+//   p_outlier Wilson score interval of outliers / trials (McTrial::outlier);
+//   rms_clean rms as above over the detected trials without an outlier (the golden
+//             `accuracy_clean`): comparable with golden at any trial count, where the rms of all
+//             trials is not until the trials see the rare outliers (docs/evaluate-montecarlo.md).
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -35,6 +39,9 @@ struct McPointStats {
   McInterval bias;         // mean of (estimate - truth) over detected trials, model unit
   McInterval std;          // standard deviation of the error, model unit
   McInterval rms;          // rms error (accuracy), model unit
+  long long outliers = 0;  // trials with an outlier
+  McInterval p_outlier;    // outliers / trials
+  McInterval rms_clean;    // rms error of the detected trials without an outlier, model unit
 
   // Exact text form for the sweep journal (hex floats, one line).
   std::string to_record() const;
@@ -42,8 +49,10 @@ struct McPointStats {
   static McPointStats from_record(const std::string& record);
 };
 
-// Statistics of `trials` trials whose detected ones had errors `errors` (in trial order).
-McPointStats summarise_trials(long long trials, const std::vector<double>& errors);
+// Statistics of `trials` trials whose detected ones had errors `errors` (in trial order);
+// `outlier` (empty: none) flags the detected trials with an outlier, one per error.
+McPointStats summarise_trials(long long trials, const std::vector<double>& errors,
+                              const std::vector<char>& outlier = {});
 
 // Wilson score interval of k successes in n trials.
 McInterval wilson_interval(long long k, long long n);

@@ -38,14 +38,15 @@ PointOutcome run_point(const McModel& model, const McSweepPoint& p, const McSwee
   PointOutcome o;
   auto runner = model.point(p.signal, p.background, point_key(opt.seed, static_cast<std::uint64_t>(p.index)));
   std::vector<double> errors;
+  std::vector<char> outlier;  // per detected trial
   long long n = 0, target = std::min(opt.trials, opt.max_trials);
   for (;;) {
     for (; n < target; ++n) {
       if ((n & 15) == 0 && halt.load(std::memory_order_relaxed)) return o;
       const McTrial t = runner->trial(n);
-      if (t.detected) errors.push_back(t.error);
+      if (t.detected) errors.push_back(t.error), outlier.push_back(t.outlier);
     }
-    o.stats = summarise_trials(n, errors);
+    o.stats = summarise_trials(n, errors, outlier);
     if (opt.target_error_m <= 0 || meets_target(o.stats, model.metres_per_unit(), opt.target_error_m) ||
         n >= opt.max_trials)
       break;

@@ -80,8 +80,8 @@ struct EvaluationGridConfig {
   double background_min_V = 1e-3;
   double background_max_V = 1.0;
   int background_points = 61;
-  int subpixel_points = 16;          // spot positions of the first midpoint rule of the accuracy average
-  double subpixel_tolerance = 0.02;  // relative; 0: the fixed rule of subpixel_points positions
+  int subpixel_points = 16;           // spot positions of the fixed midpoint rule (subpixel_tolerance = 0)
+  double subpixel_tolerance = 0.001;  // estimated relative error of the adaptive average; 0: the fixed rule
 };
 
 // When a row's range counts in a range map (systemc/ls_conventional/simulate.cpp).

@@ -68,10 +68,11 @@ const ParamSchema& ls_conventional_schema() {
           {"evaluation.background_max_V", K::Real, "V", 0, 100, true, "highest background voltage of the grid"},
           {"evaluation.background_points", K::Integer, "", 1, 10000, false, "log-spaced background points"},
           {"evaluation.subpixel_points", K::Integer, "", 1, 4096, false,
-           "spot positions across one pixel averaged for accuracy (the first rule of the adaptive average)"},
+           "spot positions across one pixel of the fixed midpoint rule used when subpixel_tolerance = 0"},
           {"evaluation.subpixel_tolerance", K::Real, "", 0, 0.5, false,
-           "relative tolerance of the accuracy averaged over spot positions: the positions are tripled until the "
-           "accuracy moves by less than this, at most 4096 (0: subpixel_points, fixed)"},
+           "estimated relative error allowed in the accuracy, P(detect) and P(outlier) averaged over spot positions "
+           "(adaptive Gauss-Kronrod between the noise-free breakpoints, at most 4096 positions; 0: the fixed rule of "
+           "subpixel_points)"},
           // Range-map validity (rangesim simulate).
           {"validity.min_detecting_fraction", K::Real, "", 0, 1, false,
            "a row's range counts when at least this fraction of the samplings found the spot (0: any one, the "

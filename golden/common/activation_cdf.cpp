@@ -14,9 +14,18 @@ double log_chernoff(double n, double mu) { return n <= 0 ? -mu : n - mu - n * st
 
 double Phi(double z) { return 0.5 * std::erfc(-z * M_SQRT1_2); }
 
-}  // namespace
+// P(n + R >= t) and its complement for one electron count n inside the band |n - t| < 9 s: the
+// smaller tail from one erfc, the larger as its complement.
+ActivationProbability band_split(double n, double t, double s) {
+  const double z = (n - t) / s;
+  const double small = Phi(-std::fabs(z));
+  return z < 0 ? ActivationProbability{small, 1 - small} : ActivationProbability{1 - small, small};
+}
 
-ActivationProbability activation_probability(double mu, double t, double s) {
+// The sum of activation_probability with the band's split given by `split(n)` (computed, or looked
+// up in a table of the same values): both give the same bits.
+template <class Split>
+ActivationProbability activation_sum(double mu, double t, double s, const Split& split) {
   if (s < 0) s = 0;
   // A threshold beyond any electron count (e.g. theta / A_sf overflowing for a tiny gain) is
   // never or always reached; keep the arithmetic below finite.
@@ -52,10 +61,9 @@ ActivationProbability activation_probability(double mu, double t, double s) {
     } else if (n >= t + cut) {
       p += w;
     } else {
-      const double z = (n - t) / s;
-      const double small = Phi(-std::fabs(z));  // one erfc per term, for the smaller tail
-      p += w * (z < 0 ? small : 1 - small);
-      q += w * (z < 0 ? 1 - small : small);
+      const ActivationProbability b = split(n);
+      p += w * b.p;
+      q += w * b.q;
     }
   };
   const double pmf_mode = std::exp(mode * std::log(mu) - mu - std::lgamma(mode + 1));
@@ -73,6 +81,30 @@ ActivationProbability activation_probability(double mu, double t, double s) {
   // The window holds all but < 1e-25 of the mass; renormalise away the rounding of the start.
   const double tot = p + q;
   return {p / tot, q / tot};
+}
+
+}  // namespace
+
+ActivationProbability activation_probability(double mu, double t, double s) {
+  return activation_sum(mu, t, s, [&](double n) { return band_split(n, t, s); });
+}
+
+ActivationTable::ActivationTable(double threshold_e, double sigma_e) : t_(threshold_e), s_(std::max(sigma_e, 0.0)) {
+  if (!(s_ > 0) || !std::isfinite(t_)) return;
+  // Every integer n with t - cut < n < t + cut: the band of activation_sum.
+  const double cut = kZCut * s_;
+  first_ = std::floor(t_ - cut) + 1;
+  for (double n = first_; n < t_ + cut; ++n) split_.push_back(band_split(n, t_, s_));
+}
+
+ActivationProbability ActivationTable::operator()(double mean_e) const {
+  if (split_.empty()) return activation_probability(mean_e, t_, s_);
+  return activation_sum(mean_e, t_, s_, [&](double n) {
+    const double i = n - first_;
+    // n is inside the band here; the guard only keeps rounding of t +- cut from reading past it.
+    if (i < 0 || i >= static_cast<double>(split_.size())) return band_split(n, t_, s_);
+    return split_[static_cast<std::size_t>(i)];
+  });
 }
 
 }  // namespace rangesim::golden

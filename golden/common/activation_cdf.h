@@ -18,6 +18,8 @@
 // |z| < 9 (Phi(-9) = 1.1e-19) and is exactly 0 or 1 beyond. Both P and 1 - P are accumulated as
 // separate sums so either is accurate when tiny. Cheap Chernoff bounds return 0 or 1 directly when
 // the answer is within 1e-18 of it. Absolute error < 1e-15.
+#include <vector>
+
 namespace rangesim::golden {
 
 struct ActivationProbability {
@@ -28,5 +30,22 @@ struct ActivationProbability {
 // P(n + R_e >= threshold_e) with n ~ Poisson(mean_e), R_e ~ Normal(0, sigma_e^2); sigma_e = 0 gives
 // the Poisson upper tail P(n >= ceil(threshold_e)).
 ActivationProbability activation_probability(double mean_electrons, double threshold_electrons, double sigma_electrons);
+
+// The same for many means at one threshold and noise (an operating point's pixels and samplings):
+// the band's Phi((n - t) / s) depends on n - t only, so it is tabulated once at the integers of
+// the band and looked up, which removes the erfc per term (three quarters of the golden
+// evaluation's time). Bit for bit activation_probability (the same terms summed in the same order).
+class ActivationTable {
+ public:
+  ActivationTable(double threshold_electrons, double sigma_electrons);
+  ActivationProbability operator()(double mean_electrons) const;
+  double threshold() const { return t_; }
+  double sigma() const { return s_; }
+
+ private:
+  double t_ = 0, s_ = 0;
+  double first_ = 0;                          // first integer of the band t - 9 s < n < t + 9 s
+  std::vector<ActivationProbability> split_;  // P(n + R >= t) and its complement at n = first_ + i
+};
 
 }  // namespace rangesim::golden

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "golden/common/pixel.h"
+#include "golden/common/spot.h"
 
 namespace rangesim::golden {
 namespace {
@@ -95,7 +96,14 @@ ActivationProbability ActivationCache::get(double mean_e, double threshold_e, do
   const auto key = std::make_pair(mean_e, threshold_e);
   auto it = memo_.find(key);
   if (it != memo_.end()) return it->second;
-  const ActivationProbability p = activation_probability(mean_e, threshold_e, sigma_e);
+  const ActivationTable* table = nullptr;
+  for (const ActivationTable& t : tables_)
+    if (t.threshold() == threshold_e && t.sigma() == std::max(sigma_e, 0.0)) table = &t;
+  if (!table) {
+    if (tables_.size() >= 64) tables_.clear();
+    table = &tables_.emplace_back(threshold_e, sigma_e);
+  }
+  const ActivationProbability p = (*table)(mean_e);
   if (memo_.size() > 4096) memo_.clear();
   memo_.emplace(key, p);
   return p;
@@ -179,16 +187,9 @@ bool activation_window(const RowModel& row, double x0, ActivationCache& cache, i
   return true;
 }
 
-PositionMoments delta_moments(const RowModel& row, double x0, ActivationCache& cache, int first, int last);
-
-}  // namespace
-
-PositionMoments position_moments(const RowModel& row, double x0_px, ActivationCache* cache_in) {
-  ActivationCache local;
-  ActivationCache& cache = cache_in ? *cache_in : local;
-  int first, last;
-  if (!activation_window(row, x0_px, cache, first, last)) return {};
-  if (row.quantiser.bits > 1) return delta_moments(row, x0_px, cache, first, last);
+// 1 bit: the moments of every activation and, when `split`, of the spot's pixels alone with the
+// outlier probability.
+SplitMoments exact_moments(const RowModel& row, double x0_px, ActivationCache& cache, int first, int last, bool split) {
   const int N = row.samplings, W = last - first + 1;
   const double thr = level_threshold_electrons(row, 1), sig = static_noise_electrons(row);
   Vec x(W);
@@ -206,9 +207,66 @@ PositionMoments position_moments(const RowModel& row, double x0_px, ActivationCa
       S[j][k] = p.q;
     }
   }
-  PositionMoments r = edge_centre_moments(x, C, S, N);
-  r.mean_px += row.centre_pixel;
+  SplitMoments r;
+  r.all = edge_centre_moments(x, C, S, N);
+  r.all.mean_px += row.centre_pixel;
+  r.clean = r.all;
+  if (!split) return r;
+  const ColumnSpan spot = spot_window(row.cfg.spot, x0_px, row.columns);
+  const int a = std::max(first, spot.first) - first, b = std::min(last, spot.last) - first;  // spot in the window
+  double log_none = 0;  // log P(no pixel of the window outside the spot's pixels activates by t_N)
+  for (int j = 0; j < W; ++j)
+    if (j < a || j > b) log_none += std::log(S[j][N]);
+  r.p_outlier = -std::expm1(log_none);
+  if (a == 0 && b == W - 1) return r;
+  if (a > b) {  // no spot pixel may activate: without an outlier nothing is detected
+    r.clean = {};
+    return r;
+  }
+  // The pixels are independent: given that none outside activates, the spot's pixels are as if alone.
+  const Vec xs(x.begin() + a, x.begin() + b + 1);
+  const Mat Cs(C.begin() + a, C.begin() + b + 1), Ss(S.begin() + a, S.begin() + b + 1);
+  r.clean = edge_centre_moments(xs, Cs, Ss, N);
+  r.clean.mean_px += row.centre_pixel;
   return r;
+}
+
+// The outlier probability alone (adc_bits > 1: the code >= 1 activations).
+double outlier_probability(const RowModel& row, double x0_px, ActivationCache& cache, int first, int last) {
+  const double thr = level_threshold_electrons(row, 1), sig = static_noise_electrons(row);
+  const ColumnSpan spot = spot_window(row.cfg.spot, x0_px, row.columns);
+  double log_none = 0;
+  for (int i = first; i <= last; ++i)
+    if (!spot.contains(i))
+      log_none += std::log(cache.get(row_pixel_mean_electrons(row, i, x0_px, row.samplings), thr, sig).q);
+  return -std::expm1(log_none);
+}
+
+PositionMoments delta_moments(const RowModel& row, double x0, ActivationCache& cache, int first, int last);
+
+}  // namespace
+
+PositionMoments position_moments(const RowModel& row, double x0_px, ActivationCache* cache_in) {
+  ActivationCache local;
+  ActivationCache& cache = cache_in ? *cache_in : local;
+  int first, last;
+  if (!activation_window(row, x0_px, cache, first, last)) return {};
+  if (row.quantiser.bits > 1) return delta_moments(row, x0_px, cache, first, last);
+  return exact_moments(row, x0_px, cache, first, last, false).all;
+}
+
+SplitMoments position_moments_split(const RowModel& row, double x0_px, ActivationCache* cache_in) {
+  ActivationCache local;
+  ActivationCache& cache = cache_in ? *cache_in : local;
+  int first, last;
+  if (!activation_window(row, x0_px, cache, first, last)) return {};
+  if (row.quantiser.bits > 1) {
+    SplitMoments r;
+    r.all = r.clean = delta_moments(row, x0_px, cache, first, last);
+    r.p_outlier = outlier_probability(row, x0_px, cache, first, last);
+    return r;
+  }
+  return exact_moments(row, x0_px, cache, first, last, true);
 }
 
 namespace {

@@ -34,13 +34,14 @@ struct PositionMoments {
 };
 
 // Memoises activation probabilities within one operating point (background-only pixels share one
-// value; they are the many).
+// value; they are the many) and computes the others from an ActivationTable per threshold.
 class ActivationCache {
  public:
   ActivationProbability get(double mean_e, double threshold_e, double sigma_e);
 
  private:
   std::map<std::pair<double, double>, ActivationProbability> memo_;
+  std::vector<ActivationTable> tables_;  // one per (threshold, sigma) seen: a code level each
 };
 
 // Exact moments of the 1-bit edge-centre estimate. cdf[j][k] = P(F_j <= k) and surv[j][k] =
@@ -51,6 +52,16 @@ PositionMoments edge_centre_moments(const std::vector<double>& x, const std::vec
 
 // Moments at spot centre x0 for the row's operating point (exact for 1 bit, delta for more).
 PositionMoments position_moments(const RowModel& row, double x0_px, ActivationCache* cache = nullptr);
+
+// The same split at the spot's pixels (golden/common/spot.h, spot_window): an outlier is an
+// activation of a pixel outside them by t_N. The pixels are independent, so given no outlier the
+// estimate is that of the spot's pixels alone, exactly (1 bit; adc_bits > 1: clean = all, delta).
+struct SplitMoments {
+  PositionMoments all;    // every activation (position_moments)
+  PositionMoments clean;  // given no outlier; p_detect = P(detect | no outlier)
+  double p_outlier = 0;   // P(some pixel outside the spot's pixels activates by t_N)
+};
+SplitMoments position_moments_split(const RowModel& row, double x0_px, ActivationCache* cache = nullptr);
 
 // Pixel-input threshold of code level m, sigma of the static noise and the shot-noise mean, in
 // electrons: the quantities activation_probability() is called with (exposed for Monte Carlo).

@@ -29,6 +29,13 @@ struct EvalPoint {
   double sbr_ratio_dB = kNaN;   // SBR' by eq. 3.23 / 4.11 style, signal / background
   double accuracy_m = kNaN;     // rms range error at the sensor's reference distance (detectable points)
   std::vector<double> metrics;  // one per EvalResult::metric_names; NaN where not defined
+  // What `evaluate --trials` compares beside accuracy_m, NaN where the model gives none
+  // (docs/evaluate-montecarlo.md): the probability that a trial reports a range, the probability
+  // of an outlier (light-section: an activation outside the spot's pixels) and the rms error of
+  // the detecting trials without one.
+  double p_detect = kNaN;
+  double p_outlier = kNaN;
+  double accuracy_clean_m = kNaN;
 };
 
 // Detectable interval along one axis, at a fixed value of the other.

@@ -1,5 +1,6 @@
 #include "golden/common/spot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -16,6 +17,16 @@ double spot_half_width_px(const SpotConfig& spot, double level) {
   if (level <= 0) return std::numeric_limits<double>::infinity();
   if (level > 1) return -1.0;
   return spot_sigma_px(spot) * std::sqrt(-2.0 * std::log(level));
+}
+
+double spot_window_half_width_px(const SpotConfig& spot) { return spot_half_width_px(spot, kSpotWindowLevel); }
+
+ColumnSpan spot_window(const SpotConfig& spot, double x0_px, int columns) {
+  const double h = spot_window_half_width_px(spot);
+  ColumnSpan w;
+  w.first = static_cast<int>(std::max(0.0, std::ceil(x0_px - h)));
+  w.last = static_cast<int>(std::min(static_cast<double>(columns - 1), std::floor(x0_px + h)));
+  return w;
 }
 
 }  // namespace rangesim::golden

@@ -17,4 +17,21 @@ double spot_profile(const SpotConfig& spot, double distance_px);
 // (every pixel reaches it) and a negative value for level > 1 (no pixel reaches it).
 double spot_half_width_px(const SpotConfig& spot, double level);
 
+// The spot's pixels: those within spot_window_half_width_px of its centre, where the profile is at
+// least kSpotWindowLevel of its peak. Farther out a pixel's signal is below 1e-12 of the peak's (at
+// 1.5 V, 1.5 pV against millivolts of noise), so it behaves as a background-only pixel, and an
+// activation there is an outlier: a false activation of the background, which moves an edge by up
+// to the row's width. Golden and the Monte Carlo count outliers apart from the accuracy of the
+// frames without one (docs/evaluate-montecarlo.md, "Outliers").
+inline constexpr double kSpotWindowLevel = 1e-12;
+double spot_window_half_width_px(const SpotConfig& spot);
+
+// Columns [first, last] of the spot's pixels for a spot centred at x0 in a row of `columns`
+// pixels (pixel i at x = i); first > last when none is in the row.
+struct ColumnSpan {
+  int first = 0, last = -1;
+  bool contains(int column) const { return column >= first && column <= last; }
+};
+ColumnSpan spot_window(const SpotConfig& spot, double x0_px, int columns);
+
 }  // namespace rangesim::golden

@@ -59,8 +59,8 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
                {"below_threshold", "signal + background at the spot peak stays below V_cmp"},
                {"saturated", "V_sig + V_bg > V_sat: activated, accuracy not controlled"},
                {"background_activation", "background alone activates pixels of the row"}};
-  r.metric_names = {"accuracy_px",    "quantisation_rms_px", "resolution_px",
-                    "worst_error_px", "noise_std_px",        "p_detect"};
+  r.metric_names = {"accuracy_px", "quantisation_rms_px", "resolution_px", "worst_error_px", "noise_std_px",
+                    "p_detect",    "accuracy_clean_px",   "p_outlier"};
   const auto point = [&](size_t ib, size_t is) {
     const OperatingPoint p = evaluate_point(cfg, r.signal.values[is], r.background.values[ib]);
     EvalPoint q;
@@ -71,9 +71,12 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
     q.sbr_ratio_dB = p.sbr_ratio_dB;
     const bool ok = p.detect == Detect::Detectable;
     q.accuracy_m = ok ? p.accuracy_m : kNaN;
-    q.metrics = ok ? std::vector<double>{p.accuracy_px,    p.quantisation_rms_px, p.resolution_px,
-                                         p.worst_error_px, p.noise_std_px,        p.p_detect}
-                   : std::vector<double>(6, kNaN);
+    q.metrics = ok ? std::vector<double>{p.accuracy_px,       p.quantisation_rms_px,
+                                         p.resolution_px,     p.worst_error_px,
+                                         p.noise_std_px,      p.p_detect,
+                                         p.accuracy_clean_px, p.p_outlier}
+                   : std::vector<double>(r.metric_names.size(), kNaN);
+    if (ok) q.p_detect = p.p_detect, q.p_outlier = p.p_outlier, q.accuracy_clean_m = p.accuracy_clean_m;
     return q;
   };
   EvaluationSummary s;
@@ -171,8 +174,7 @@ std::vector<PublishedFigure> published_figures_ls_conventional(const ParamSet& p
   // What each agreement is worth (table --published): tuned, arithmetic or predicted.
   using B = FigureBasis;
   set_basis(f, "frame_access_rate", B::Calibrated, "timing.clock_Hz");
-  set_basis(f, "range_maps_per_s", B::Arithmetic, "", {},
-            "frame access rate / 375 sheet positions (one per column)");
+  set_basis(f, "range_maps_per_s", B::Arithmetic, "", {}, "frame access rate / 375 sheet positions (one per column)");
   set_basis(f, "resolution_1_sampling", B::Arithmetic, "", {},
             "structural: centre = (left + right) / 2 of a 1-bit edge moves in half-pixel steps");
   set_basis(f, "resolution_4_samplings", B::Predicted);

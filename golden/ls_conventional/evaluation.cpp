@@ -9,6 +9,7 @@
 
 #include "golden/ls_conventional/detect.h"
 #include "golden/ls_conventional/multisampling.h"
+#include "golden/ls_conventional/subpixel_average.h"
 #include "golden/common/pixel.h"
 #include "golden/common/position_noise.h"
 #include "golden/common/quantiser.h"
@@ -58,77 +59,23 @@ OperatingPoint evaluate_point(const LsConventionalConfig& cfg, double signal_V, 
   p.largest_step_px = q.largest_step_px;
   p.detected_fraction = q.detected_fraction;
 
-  // Noise part: midpoint quadrature over the spot positions. The noise-free mean square is known
-  // exactly, so the quadrature only carries the change noise makes to it (a control variate):
-  //   accuracy^2 = rms_q^2 + mean_x0[(E[xhat] - x0)^2 + Var - e_nf(x0)^2],
-  // which is exact in the noise-free limit and removes most of the quadrature error of the steps.
-  // At the detection edge the noise-free readout may detect at none of the positions while noise
-  // does (P(detect) between 0 and 1 there): then the accuracy is the rms error given detection with
-  // the spot uniform over the pixel, mean_x0[p (bias^2 + Var)] / mean_x0[p] (what a Monte Carlo
-  // measures).
-  //
-  // Adaptive: the integrand has near-jumps where the noise-free estimate steps (their width is the
-  // noise), so a fixed rule converges only as 1/P (16 positions were up to 15% off). The midpoint
-  // rule is refined by tripling P, which keeps every position already evaluated, until the
-  // accuracy moves by less than evaluation.subpixel_tolerance (relative), at most kMaxPositions.
+  // Noise part: the exact moments averaged over the spot positions across a pixel, adaptively to
+  // evaluation.subpixel_tolerance (subpixel_average.h).
   constexpr int kMaxPositions = 4096;
-  ActivationCache cache;
-  struct Sums {
-    double var = 0, delta = 0, pe = 0, p = 0, pvar = 0;
-    int n = 0, positions = 0;
-  } sum;
-  p.p_detect = 1;
-  // A row with as many pixels on each side of the centre pixel is symmetric: the spot at u and at
-  // 1 - u give mirrored estimates (bias and noise-free error change sign, the rest is equal), so
-  // only u <= 1/2 is evaluated and u < 1/2 counts twice. Halves the cost, exactly.
-  const bool mirror = 2 * row.centre_pixel + 1 == row.columns;
-  auto add = [&](double u) {
-    if (mirror && u > 0.5) return;
-    const int w = mirror && u < 0.5 ? 2 : 1;
-    const double x0 = row.centre_pixel - 0.5 + u;
-    const PositionMoments m = position_moments(row, x0, &cache);
-    sum.positions += w;
-    p.p_detect = std::min(p.p_detect, m.p_detect);
-    if (!(m.p_detect > 0)) return;
-    const double bias = m.mean_px - x0;
-    sum.pe += w * m.p_detect * (bias * bias + m.var_px2), sum.p += w * m.p_detect;
-    sum.pvar += w * m.p_detect * m.var_px2;
-    const CentreEstimate nf = noise_free_estimate(row, x0);
-    if (!nf.detected) return;
-    const double e_nf = nf.centre_px - x0;
-    sum.var += w * m.var_px2;
-    sum.delta += w * (bias * bias + m.var_px2 - e_nf * e_nf);
-    sum.n += w;
-  };
-  auto finish = [&] {
-    p.noise_only_detections = false;
-    if (sum.n > 0) {
-      p.noise_std_px = std::sqrt(sum.var / sum.n);
-      p.accuracy_px = std::sqrt(std::max(0.0, q.rms_px * q.rms_px + sum.delta / sum.n));
-    } else if (sum.p > 0) {
-      p.noise_only_detections = true;
-      p.noise_std_px = std::sqrt(sum.pvar / sum.p);
-      p.accuracy_px = std::sqrt(sum.pe / sum.p);
-    } else {
-      p.noise_std_px = 0;
-      p.accuracy_px = q.rms_px;
-    }
-  };
-  int P = std::clamp(cfg.grid.subpixel_points, 1, kMaxPositions);
-  for (int i = 0; i < P; ++i) add((i + 0.5) / P);
-  finish();
-  const double tol = cfg.grid.subpixel_tolerance;
-  while (tol > 0 && 3 * P <= kMaxPositions) {
-    const double before = p.accuracy_px;
-    // The 3P rule's positions (j + 0.5) / 3P with j = 3i + 1 are the P rule's; add the others.
-    for (int i = 0; i < P; ++i) add((3 * i + 0.5) / (3 * P)), add((3 * i + 2.5) / (3 * P));
-    P *= 3;
-    // Means over the positions: the sums count every position once.
-    finish();
-    if (std::fabs(p.accuracy_px - before) <= tol * p.accuracy_px) break;
-  }
-  p.subpixel_positions = P;
-  p.accuracy_m = p.accuracy_px * range_per_px_m(cfg.optics, cfg.pixel.pitch_m, cfg.optics.distance_m);
+  const SubpixelAverage a = subpixel_average(row, q, cfg.grid.subpixel_tolerance,
+                                             std::clamp(cfg.grid.subpixel_points, 1, kMaxPositions), kMaxPositions);
+  p.p_detect = a.p_detect;
+  p.accuracy_px = a.accuracy_px;
+  p.accuracy_clean_px = a.accuracy_clean_px;
+  p.p_outlier = a.p_outlier;
+  p.noise_std_px = a.noise_std_px;
+  p.noise_only_detections = a.noise_only_detections;
+  p.subpixel_positions = a.positions;
+  p.subpixel_error_estimate = a.error_estimate;
+  p.subpixel_converged = a.converged;
+  const double m_per_px = range_per_px_m(cfg.optics, cfg.pixel.pitch_m, cfg.optics.distance_m);
+  p.accuracy_m = p.accuracy_px * m_per_px;
+  p.accuracy_clean_m = p.accuracy_clean_px * m_per_px;
   return p;
 }
 
@@ -149,7 +96,8 @@ DynamicRange make_range(double lo, double hi, double lo_limit, double hi_limit) 
 
 bool background_activates(const LsConventionalConfig& cfg, double background_V) {
   const double A = cfg.pixel.source_follower_gain;
-  if (reaches_threshold(A * (background_V + dark_voltage_V(cfg.pixel)), comparator_threshold_V(cfg, background_V))) return true;
+  if (reaches_threshold(A * (background_V + dark_voltage_V(cfg.pixel)), comparator_threshold_V(cfg, background_V)))
+    return true;
   return row_false_activation_probability(cfg, background_V) > cfg.comparator.false_activation_max;
 }
 

@@ -28,19 +28,26 @@ struct OperatingPoint {
   double quantisation_rms_px = 0;  // rms of the noise-free estimate's error (exact)
   double resolution_px = 0;   // mean step of the estimate as the spot crosses one pixel (thesis "sub-pixel resolution")
   double worst_error_px = 0;  // largest noise-free error over the spot positions
-  double noise_std_px = 0;    // rms over positions of the estimate's std from noise (closed form)
-  double accuracy_px = 0;     // rms total error: sqrt(mean(bias^2 + variance))
+  double noise_std_px = 0;    // p-weighted rms over positions of the estimate's std from noise (closed form)
+  double accuracy_px = 0;     // rms total error given detection: sqrt(mean(p (bias^2 + variance)) / mean(p))
   double accuracy_m = 0;      // accuracy_px mapped to range by triangulation at optics.distance_m
-  double p_detect = 0;        // probability the row reports a centre (closed form, worst position)
-  // Added by the golden model (see ls_conventional_eval.cpp for how each is computed):
+  double p_detect = 0;        // probability that the row reports a centre, mean over spot positions (exact)
+  // Outliers (golden/common/spot.h): an activation outside the spot's pixels, a false activation of
+  // the background that moves an edge by up to the row's width.
+  double accuracy_clean_px = 0;  // rms error of the detecting frames without an outlier
+  double accuracy_clean_m = 0;   // the same in metres
+  double p_outlier = 0;          // probability of an outlier per frame, mean over spot positions
+  // Added by the golden model (see subpixel_average.h for how each is computed):
   double largest_step_px = 0;          // largest jump of the noise-free estimate (thesis "sub-pixel resolution")
   double detected_fraction = 0;        // part of the pixel where the noise-free readout detects the spot
   bool noise_exact = true;             // false: noise moments by the delta method (adc_bits > 1), approximate
   const char* noise_method = "exact";  // "exact" or "delta"
-  // The accuracy comes from noise-only detections: the noise-free readout detects at none of the
-  // spot positions averaged (the detection edge), so it is the P(detect)-weighted rms error.
+  // The noise-free readout detects at none of the spot positions (the detection edge): every
+  // detection comes from noise.
   bool noise_only_detections = false;
-  int subpixel_positions = 0;  // spot positions the adaptive average used (evaluation.subpixel_tolerance)
+  int subpixel_positions = 0;          // spot positions the average over a pixel used
+  double subpixel_error_estimate = 0;  // its estimated relative error (NaN: the fixed rule)
+  bool subpixel_converged = true;      // the estimate met evaluation.subpixel_tolerance
 };
 
 struct DynamicRange {

@@ -17,13 +17,69 @@ const char* to_string(DemodDetect d) {
   return "?";
 }
 
+namespace {
+
+// D of a pixel of this chip with gain G (PRNU) and dark-current offset d (DSNU), as the clock-level
+// model's fixed pattern applies them (systemc/ls_demodulation/nonideal_stimulus.cpp): the beam and
+// background scaled by G, the background moved by d, never below no dark current at all.
+CorrelatorOutput chip_pixel(const LsDemodulationConfig& cfg, double beam_A, double background_A, double G, double d) {
+  const double bg = std::max(-cfg.noise.dark_current_A, background_A * G + d);
+  return correlate_periodic(cfg, pixel_segments(cfg, beam_A * G, bg), cfg.correlator.cycles);
+}
+
+struct ChipSpread {
+  double mean_V = 0, var_V2 = 0;  // of D over chips
+  double shot_var_V2 = 0;         // E over chips of the shot-noise variance
+};
+
+// Gauss-Hermite rules for E[f(z)], z ~ N(0, 1): n points integrate polynomials of degree 2n - 1.
+struct Rule {
+  int n;
+  double z[5], w[5];
+};
+constexpr Rule kRule1 = {1, {0.0}, {1.0}};
+constexpr Rule kRule3 = {3, {0.0, -1.7320508075688772, 1.7320508075688772}, {2.0 / 3, 1.0 / 6, 1.0 / 6}};
+constexpr Rule kRule5 = {
+    5,
+    {0.0, -1.3556261799742657, 1.3556261799742657, -2.8569700138728056, 2.8569700138728056},
+    {0.53333333333333333, 0.22207592200561265, 0.22207592200561265, 0.011257411327720691, 0.011257411327720691}};
+
+// Mean and variance of D over the PRNU and DSNU draws z, z' ~ N(0, 1), by a product Gauss-Hermite
+// rule: 5 points in z (the log stage compresses a strong beam: E[D] exact for D up to degree 9 in
+// z, Var up to degree 4), 3 in z' (D moves little and smoothly with the dark current: up to degree
+// 5 and 2).
+ChipSpread chip_spread(const LsDemodulationConfig& cfg, double beam_A, double background_A,
+                       const CorrelatorOutput& nominal) {
+  const double p = cfg.fixed_pattern.prnu_fraction, sd = cfg.fixed_pattern.dsnu_rms;
+  if (!(p > 0) && !(sd > 0)) return {nominal.diff_V, 0.0, nominal.shot_var_V2};
+  const Rule& rg = p > 0 ? kRule5 : kRule1;
+  const Rule& rd = sd > 0 ? kRule3 : kRule1;
+  double m1 = 0, m2 = 0, shot = 0;
+  for (int i = 0; i < rg.n; ++i)
+    for (int j = 0; j < rd.n; ++j) {
+      const double wt = rg.w[i] * rd.w[j];
+      const CorrelatorOutput o =
+          i == 0 && j == 0 ? nominal
+                           : chip_pixel(cfg, beam_A, background_A, std::max(0.0, 1 + p * rg.z[i]), sd * rd.z[j]);
+      m1 += wt * o.diff_V, m2 += wt * o.diff_V * o.diff_V, shot += wt * o.shot_var_V2;
+    }
+  return {m1, std::max(0.0, m2 - m1 * m1), shot};
+}
+
+}  // namespace
+
 PixelDecision pixel_decision(const LsDemodulationConfig& cfg, double beam_A, double background_A) {
   PixelDecision d;
   d.out = correlate_periodic(cfg, pixel_segments(cfg, beam_A, background_A), cfg.correlator.cycles);
-  // Per-decision offset and the comparator's fixed offset: in one decision both are independent
-  // per pixel (the fixed one does not average over decisions and frames: fixed_pattern.h).
-  const double fpn = std::hypot(cfg.noise.fixed_pattern_rms_V, cfg.fixed_pattern.comparator_offset_rms_V);
-  d.sigma_independent_V = std::sqrt(d.out.shot_var_V2 + ktc_variance_V2(cfg) + fpn * fpn);
+  const ChipSpread chip = chip_spread(cfg, beam_A, background_A, d.out);
+  d.mean_V = chip.mean_V;
+  // The chip's part: the comparator's fixed offset and the spread of D from PRNU and DSNU. In one
+  // decision it is independent per pixel like the rest (it does not average over decisions and
+  // frames: fixed_pattern.h). noise.fixed_pattern_rms_V stays a per-decision offset.
+  const double cmp = cfg.fixed_pattern.comparator_offset_rms_V, fpn = cfg.noise.fixed_pattern_rms_V;
+  d.sigma_chip_V = std::sqrt(cmp * cmp + chip.var_V2);
+  d.sigma_independent_V =
+      std::sqrt(chip.shot_var_V2 + ktc_variance_V2(cfg) + fpn * fpn + d.sigma_chip_V * d.sigma_chip_V);
   d.sigma_common_V = cfg.noise.read_noise_V;
   return d;
 }
@@ -65,7 +121,7 @@ Classification classify(const LsDemodulationConfig& cfg, double signal_A, double
   const GaussNodes g = gauss_nodes(c.background.sigma_common_V);
   const double M = cfg.pixel.columns;
   for (int i = 0; i < g.n; ++i) {
-    const Tail t = activation(c.background.out.diff_V + g.offset_V[i], vcmp, c.background.sigma_independent_V);
+    const Tail t = activation(c.background.mean_V + g.offset_V[i], vcmp, c.background.sigma_independent_V);
     c.row_false_activation += g.weight[i] * -std::expm1(M * std::log1p(-std::min(t.p, 1 - 1e-300)));
   }
   // The Gauss-Hermite weights sum to 1 only to rounding: keep the probability in [0, 1].

@@ -6,6 +6,15 @@
 //  - independent per decision: shot noise through the chain (front_end.h), kTC of C1 and C2
 //    (both integrators are reset before each decision), fixed-pattern offset (see docs: taken as
 //    per-decision, an optimistic simplification; 0 in the preset);
+//  - the chip's fixed pattern (fixed_pattern.*): comparator offset, PRNU and DSNU. Over chips
+//    (the spot falls on other pixels in every frame access of a scene, and `evaluate --trials`
+//    draws a chip per trial) each pixel's pattern is an independent draw, so in one decision it
+//    is one more independent term: the comparator offset adds its variance; PRNU (gain G = 1 +
+//    p z on beam and background) and DSNU (dark current + sigma_d z') move D itself, and D is
+//    taken at the 5 x 3 Gauss-Hermite nodes of (z, z'): mean and variance of D over chips exact
+//    for D up to degree 4 in z and 2 in z' (the log stage's curvature: the second-order terms a
+//    linearisation misses), their distribution taken as Gaussian (exact where D is linear in the
+//    draws). fixed_pattern.h keeps the chip's part apart where frames are averaged;
 //  - common to all decisions of a frame: read noise of the source followers / comparator,
 //    1/f-dominated at microsecond scale (as in ls-conventional), so repeated decisions within a
 //    frame cannot average it away, frames can.
@@ -29,8 +38,10 @@ const char* to_string(DemodDetect d);
 
 // Mean and noise of D for one pixel.
 struct PixelDecision {
-  CorrelatorOutput out;            // noise-free chain output
-  double sigma_independent_V = 0;  // rms of the per-decision noise
+  CorrelatorOutput out;            // noise-free chain output of the nominal pixel (no fixed pattern)
+  double mean_V = 0;               // E[D] over chips (PRNU, DSNU); out.diff_V without them
+  double sigma_independent_V = 0;  // rms of the per-decision noise, the chip's part included
+  double sigma_chip_V = 0;         // rms of the chip's part alone (comparator offset, PRNU, DSNU)
   double sigma_common_V = 0;       // rms of the frame-common noise
 };
 PixelDecision pixel_decision(const LsDemodulationConfig& cfg, double beam_A, double background_A);

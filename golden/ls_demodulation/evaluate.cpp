@@ -35,6 +35,10 @@ EvalPoint to_eval_point(const DemodPoint& p, size_t n_metrics) {
     q.metrics[6] = a.worst_error_px;
     q.metrics[7] = a.p_detect_min;
     q.metrics[8] = a.detected_fraction;
+    q.metrics[9] = a.p_detect;
+    q.metrics[10] = a.accuracy_clean_px;
+    q.metrics[11] = a.p_outlier;
+    q.p_detect = a.p_detect, q.p_outlier = a.p_outlier, q.accuracy_clean_m = a.accuracy_clean_m;
   }
   return q;
 }
@@ -55,9 +59,10 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
                {"background_activation",
                 "background alone reaches V_cmp, or its noise activates more than "
                 "comparator.false_activation_max of the rows"}};
-  r.metric_names = {"peak_output_V",    "background_output_V", "row_false_activation", "accuracy_px",
-                    "bias_rms_px",      "noise_std_px",        "worst_error_px",       "p_detect",
-                    "detected_fraction"};
+  r.metric_names = {"peak_output_V",  "background_output_V", "row_false_activation",
+                    "accuracy_px",    "bias_rms_px",         "noise_std_px",
+                    "worst_error_px", "p_detect_min",        "detected_fraction",
+                    "p_detect",       "accuracy_clean_px",   "p_outlier"};
   const size_t n_metrics = r.metric_names.size();
   // Points are independent: the rows share the cores, the grid is the same for any thread count.
   scan_grid(

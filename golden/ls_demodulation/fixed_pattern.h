@@ -1,16 +1,27 @@
 #pragma once
-// ls-demodulation's comparator offsets fixed per pixel (fixed_pattern.comparator_offset_rms_V) in
-// the accuracy of golden (docs/model-limits.md).
+// ls-demodulation's fixed pattern in the accuracy of golden (docs/model-limits.md): the comparator
+// offsets (fixed_pattern.comparator_offset_rms_V), PRNU (prnu_fraction: a gain G = 1 + p z on the
+// pixel's beam and background photocurrents) and DSNU (dsnu_rms_A: sigma_d z' added to its dark
+// current), each drawn once per pixel and chip.
 //
-// In one decision the offsets of a row's pixels are independent draws, exactly like an offset
-// drawn anew at every decision, so pixel_decision adds their variance to the independent noise and
-// the one-frame accuracy is exact (one decision per frame, the preset's). Averaging is where they
-// differ: the offsets are the chip's, the same in every frame, so the part of the error they fix,
-// V_fp = Var over chips of E[centre | offsets], does not average. V_fp is linearised in each spot
-// pixel's offset (secants over +- sigma_f of the frame's mean centre):
-//   V_fp = sigma_f^2 sum_j (d E[centre] / d mu_j)^2,   accuracy^2 = b^2 + V_fp + (V_1 - V_fp) / N_p
+// One frame. Over chips a row's pixels have independent patterns, so in one decision the pattern
+// is one more independent term per pixel (decision.h, pixel_decision): the comparator offset adds
+// its variance sigma_c^2; PRNU and DSNU move D, whose mean and variance over the draws are taken
+// at the 5 x 3 Gauss-Hermite nodes of (z, z') (exact for D up to degree 4 in z and 2 in z': the
+// log stage's curvature in the gain is the second-order term a linearisation would miss), and D's
+// spread is taken as Gaussian, which is exact where D is linear in the draws. With one decision
+// per frame (the preset) the one-frame accuracy is then exact for the comparator offset and to
+// that Gaussian shape for PRNU and DSNU.
+//
+// Averaging. The pattern is the chip's, the same in every frame, so the part of the error it fixes,
+// V_fp = Var over chips of E[centre | pattern], does not average. V_fp is linearised in each spot
+// pixel's chip offset of D, of rms sigma_j = sqrt(sigma_c^2 + Var_chip D_j) (secants over +- sigma_j
+// of the frame's mean centre):
+//   V_fp = sum_j sigma_j^2 (d E[centre] / d mu_j)^2,   accuracy^2 = b^2 + V_fp + (V_1 - V_fp) / N_p
 // with b and V_1 the one-frame bias and variance; V_fp <= V_1. With several decisions per frame
-// the offsets are taken as independent within the frame (an approximation).
+// the pattern is taken as independent within the frame (an approximation). No closed form exists
+// for P(detect) of N_p > 1 frames of one chip (the frames' detections are correlated through it):
+// p_detect is NaN there.
 #include "core/ls_demodulation/config.h"
 #include "golden/ls_demodulation/position.h"
 

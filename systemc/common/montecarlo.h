@@ -22,6 +22,10 @@ namespace rangesim::mc {
 struct McTrial {
   bool detected = false;  // the sensor reported a range / position
   double error = 0;       // estimate - truth, in McModel::unit() (detected trials)
+  // The trial had an outlier (light-section: a pixel outside the spot's pixels, golden/common/spot.h,
+  // activated in some decision); the statistics count such trials apart (app/montecarlo/mc_stats.h).
+  // Sensors without the notion leave it false.
+  bool outlier = false;
 };
 
 // Trials of one operating point; owns its kernels, used by one thread. trial() must be called with

@@ -6,6 +6,7 @@
 
 #include "systemc/ls_conventional/montecarlo.h"
 #include "core/user_error.h"
+#include "golden/common/spot.h"
 #include "golden/common/triangulation.h"
 #include "systemc/ls_conventional/sensor_kernel.h"
 
@@ -35,8 +36,14 @@ class Runner : public McPointRunner {
     kernel_.clear_results();  // memory stays bounded however many trials a point takes
     McTrial out;
     const auto& row = r.rows.front();
+    const double x0_px = x0(static_cast<std::uint64_t>(t));
     out.detected = row.count > 0;
-    if (out.detected) out.error = row.exact_centre_px() - x0(static_cast<std::uint64_t>(t));
+    if (out.detected) out.error = row.exact_centre_px() - x0_px;
+    // An activation outside the spot's pixels: the extent of the last sampling holds every pixel
+    // that fired (activations are latched).
+    const systemc::ActivationExtent& e = r.extents.front();
+    const golden::ColumnSpan spot = golden::spot_window(cfg_.spot, x0_px, cfg_.pixel.columns);
+    out.outlier = e.first >= 0 && (e.first < spot.first || e.last > spot.last);
     return out;
   }
 

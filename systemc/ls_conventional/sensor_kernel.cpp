@@ -60,6 +60,11 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
   fr.frame = p.frame;
   fr.rows.reserve(centre_.size());
   for (const auto& c : centre_) fr.rows.push_back(c.pins());
+  fr.extents.reserve(centre_.size());
+  for (std::size_t r = 0; r < centre_.size(); ++r) {
+    const ActivationRow& a = pixels_.row(static_cast<int>(r));
+    fr.extents.push_back({a.first(), a.last()});
+  }
   fr.end_cycle = sequencer_.cycle() + 1;
   fr.phase_cycles = phase_cycles_;
   for (long long c : phase_cycles_) fr.cycles += c;

@@ -32,12 +32,23 @@ struct SensorKernelOptions {
   bool event_skipping = true;  // step() jumps to the next event instead of ticking every cycle
 };
 
+// Lowest and highest activated column of a row (-1: none).
+struct ActivationExtent {
+  int first = -1, last = -1;
+  bool operator==(const ActivationExtent& o) const { return first == o.first && last == o.last; }
+};
+
 // Outcome of one frame access.
 struct FrameResult {
   std::uint64_t frame = 0;                // frame-access counter (beam position index in a range map)
   std::vector<CentreProcessorPins> rows;  // centre per row (of the kernel's band), as output in the frame's last cycle
-  long long end_cycle = 0;                // cycles since reset release at the end of this frame
-  long long cycles = 0;                   // cycles of this frame access
+  // Per row (of the band), the extent of the activations latched by the last sampling (activations
+  // only grow, so it holds every pixel that fired in the frame): a Monte Carlo trial tells an outlier
+  // by it. The kernel's view of its pixel array, not an output pin: the sc_module and the RTL do not
+  // fill it and == leaves it out.
+  std::vector<ActivationExtent> extents;
+  long long end_cycle = 0;                               // cycles since reset release at the end of this frame
+  long long cycles = 0;                                  // cycles of this frame access
   std::array<long long, kReadoutPhases> phase_cycles{};  // by ReadoutPhase
   int rows_detected() const;
   bool operator==(const FrameResult& o) const {

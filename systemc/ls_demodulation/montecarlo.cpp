@@ -38,14 +38,19 @@ class Runner : public McPointRunner {
     }
     double sum = 0;
     int valid = 0;
+    bool outlier = false;
+    const golden::ColumnSpan spot = golden::spot_window(cfg_.spot, x0, cfg_.pixel.columns);
     for (int j = 0; j < frames; ++j) {
       // Frame index = trial x N_p + j: streams keyed (point key, frame, row, column).
       const auto r = kernel_.run_frame(static_cast<std::uint64_t>(t) * frames + j, stim_);
-      if (r.rows.front().valid()) sum += r.rows.front().centre_px(), ++valid;
+      const systemc::DemodRowResult& row = r.rows.front();
+      if (row.valid()) sum += row.centre_px(), ++valid;
+      outlier |= row.valid() && (row.min_left < spot.first || row.max_right > spot.last);
     }
     McTrial out;
     out.detected = valid > 0;
     if (out.detected) out.error = sum / valid - x0;
+    out.outlier = outlier;
     return out;
   }
 

@@ -1,5 +1,6 @@
 #include "systemc/ls_demodulation/sensor_kernel.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -126,6 +127,8 @@ void DemodSensorKernel::finish_row(const AddressSearchResult& r) {
     rr.centre_sum_px += 0.5 * (r.left + r.right);
     rr.left = r.left;
     rr.right = r.right;
+    rr.min_left = rr.min_left < 0 ? r.left : std::min(rr.min_left, r.left);
+    rr.max_right = std::max(rr.max_right, r.right);
   }
   last_row_ = rr;
 }

@@ -54,10 +54,14 @@ struct DemodRowResult {
   int detections = 0;        // decisions of the frame in which the row found an activated pixel
   double centre_sum_px = 0;  // sum of (left + right) / 2 over those decisions
   int left = 0, right = 0;   // addresses streamed by the last detecting decision
+  // Extent of the activations over all the frame's detecting decisions (-1: none): what a Monte
+  // Carlo trial needs to tell an outlier (an activation outside the spot's pixels) in any decision.
+  int min_left = -1, max_right = -1;
   bool valid() const { return detections > 0; }
   double centre_px() const { return detections ? centre_sum_px / detections : 0.0; }
   bool operator==(const DemodRowResult& o) const {
-    return detections == o.detections && centre_sum_px == o.centre_sum_px && left == o.left && right == o.right;
+    return detections == o.detections && centre_sum_px == o.centre_sum_px && left == o.left && right == o.right &&
+           min_left == o.min_left && max_right == o.max_right;
   }
 };
 

@@ -12,6 +12,7 @@
 #include "golden/common/pixel.h"
 #include "golden/common/position_noise.h"
 #include "golden/common/row_model.h"
+#include "golden/common/spot.h"
 #include "test_helpers.h"
 
 namespace rangesim::golden {
@@ -215,6 +216,53 @@ TEST(GoldenNoise, BackgroundFalseActivation) {
   EXPECT_LT(p, 3e-6);
   EXPECT_NEAR(row_false_activation_probability(cfg, 1.0), -std::expm1(375 * std::log1p(-p)), 1e-15);
   EXPECT_LT(row_false_activation_probability(cfg, 0.1), 1e-20);
+}
+
+// The tabulated band (ActivationTable, what the golden evaluation uses) gives activation_probability's
+// bits: the same terms in the same order, the band's Phi looked up instead of computed.
+TEST(GoldenNoise, ActivationTableIsActivationProbabilityBitForBit) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int i = 0; i < 300; ++i) {
+    const double s = i % 10 == 0 ? 0.0 : std::pow(10.0, 3 * u(rng) - 1);  // 0.1 .. 100 electrons, some 0
+    const double t = std::pow(10.0, 6 * u(rng));
+    const ActivationTable table(t, s);
+    for (double f : {0.5, 0.9, 0.99, 1.0, 1.01, 1.1, 2.0}) {
+      const double mu = t * f + (u(rng) - 0.5) * 30;
+      const ActivationProbability a = activation_probability(mu, t, s), b = table(mu);
+      EXPECT_EQ(a.p, b.p) << mu << " " << t << " " << s;
+      EXPECT_EQ(a.q, b.q) << mu << " " << t << " " << s;
+    }
+  }
+}
+
+// The outlier split (position_moments_split): an outlier is an activation outside the spot's pixels
+// (golden/common/spot.h). At 1 V background every background pixel fires with P = 5.6e-7, so the
+// outlier probability is that of the row's pixels outside the spot's; nothing is detected only if
+// neither the spot's pixels nor any other fires (independent pixels). At 0.01 V background no
+// pixel outside the spot's may fire: clean and all are the same.
+TEST(GoldenNoise, OutlierSplitAtTheSpotsPixels) {
+  const LsConventionalConfig cfg = test::preset_config();
+  const double p_bg = pixel_false_activation_probability(cfg, 1.0);
+  for (double x0 : {187.0, 187.3}) {
+    SCOPED_TRACE(x0);
+    const RowModel row = make_row_model(cfg, 0.05, 1.0);
+    const SplitMoments m = position_moments_split(row, x0);
+    const ColumnSpan spot = spot_window(cfg.spot, x0, row.columns);
+    const int outside = row.columns - (spot.last - spot.first + 1);
+    EXPECT_NEAR(m.p_outlier, -std::expm1(outside * std::log1p(-p_bg)), 1e-6 * m.p_outlier);
+    EXPECT_GT(m.p_outlier, 1e-4);
+    EXPECT_NEAR(1 - m.all.p_detect, (1 - m.clean.p_detect) * (1 - m.p_outlier), 1e-15);
+    EXPECT_EQ(position_moments(row, x0).mean_px, m.all.mean_px);
+    // The outliers move the mean and widen the spread of all frames; the clean ones stay at the spot.
+    EXPECT_GT(m.all.var_px2, 10 * m.clean.var_px2);
+    EXPECT_NEAR(m.clean.mean_px, x0, 0.5);
+  }
+  const RowModel low = make_row_model(cfg, 0.05, 0.01);
+  const SplitMoments m = position_moments_split(low, 187.3);
+  EXPECT_EQ(m.p_outlier, 0.0);
+  EXPECT_EQ(m.clean.mean_px, m.all.mean_px);
+  EXPECT_EQ(m.clean.var_px2, m.all.var_px2);
 }
 
 }  // namespace
