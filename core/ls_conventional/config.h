@@ -81,7 +81,7 @@ struct EvaluationGridConfig {
   double background_max_V = 1.0;
   int background_points = 61;
   int subpixel_points = 16;           // spot positions of the fixed midpoint rule (subpixel_tolerance = 0)
-  double subpixel_tolerance = 0.001;  // estimated relative error of the adaptive average; 0: the fixed rule
+  double subpixel_tolerance = 0.001;  // estimated relative error of the adaptive average (1-bit ADC); 0: the fixed rule
 };
 
 // When a row's range counts in a range map (systemc/ls_conventional/simulate.cpp).

@@ -18,6 +18,7 @@
 // |z| < 9 (Phi(-9) = 1.1e-19) and is exactly 0 or 1 beyond. Both P and 1 - P are accumulated as
 // separate sums so either is accurate when tiny. Cheap Chernoff bounds return 0 or 1 directly when
 // the answer is within 1e-18 of it. Absolute error < 1e-15.
+#include <cstddef>
 #include <vector>
 
 namespace rangesim::golden {
@@ -41,6 +42,7 @@ class ActivationTable {
   ActivationProbability operator()(double mean_electrons) const;
   double threshold() const { return t_; }
   double sigma() const { return s_; }
+  std::size_t entries() const { return split_.size(); }  // its memory, in band entries
 
  private:
   double t_ = 0, s_ = 0;

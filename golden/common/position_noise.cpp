@@ -96,13 +96,15 @@ ActivationProbability ActivationCache::get(double mean_e, double threshold_e, do
   const auto key = std::make_pair(mean_e, threshold_e);
   auto it = memo_.find(key);
   if (it != memo_.end()) return it->second;
-  const ActivationTable* table = nullptr;
-  for (const ActivationTable& t : tables_)
-    if (t.threshold() == threshold_e && t.sigma() == std::max(sigma_e, 0.0)) table = &t;
-  if (!table) {
-    if (tables_.size() >= 64) tables_.clear();
-    table = &tables_.emplace_back(threshold_e, sigma_e);
+  const auto table_key = std::make_pair(threshold_e, std::max(sigma_e, 0.0));
+  auto t = tables_.find(table_key);
+  if (t == tables_.end()) {
+    ActivationTable built(threshold_e, sigma_e);
+    if (table_entries_ + built.entries() > kMaxTableEntries) tables_.clear(), table_entries_ = 0;
+    table_entries_ += built.entries();
+    t = tables_.emplace(table_key, std::move(built)).first;
   }
+  const ActivationTable* table = &t->second;
   const ActivationProbability p = (*table)(mean_e);
   if (memo_.size() > 4096) memo_.clear();
   memo_.emplace(key, p);
@@ -271,6 +273,22 @@ SplitMoments position_moments_split(const RowModel& row, double x0_px, Activatio
 
 namespace {
 
+// The number of code levels a pixel of mean mu_e reaches with probability exactly 1 (a prefix:
+// P(c >= m) falls with m). A binary search, so a wide ADC (up to 16383 levels) costs the levels
+// near the mean only, not one activation probability per level below it.
+int certain_levels(const RowModel& row, double mu_e, double sig, ActivationCache& cache) {
+  auto certain = [&](int m) { return cache.get(mu_e, level_threshold_electrons(row, m), sig).p == 1.0; };
+  int lo = 0, hi = row.quantiser.max_code;  // levels <= lo certain, > hi not (invariant once tested)
+  if (hi <= 16 || !certain(1)) return 0;    // few levels: the plain loop is as cheap
+  lo = 1;
+  if (certain(hi)) return hi;
+  while (hi - lo > 1) {
+    const int mid = lo + (hi - lo) / 2;
+    (certain(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 PositionMoments delta_moments(const RowModel& row, double x0, ActivationCache& cache, int first, int last) {
   const int N = row.samplings, W = last - first + 1, M = row.quantiser.max_code;
   const double sig = static_noise_electrons(row), e_per_V = electrons_per_volt(row.cfg.pixel);
@@ -280,10 +298,13 @@ PositionMoments delta_moments(const RowModel& row, double x0, ActivationCache& c
   for (int j = 0; j < W; ++j)
     for (int k = 1; k <= N; ++k) {
       mu[j][k - 1] = row_pixel_mean_electrons(row, first + j, x0, k);
-      double e = 0, e2 = 0;
-      for (int m = 1; m <= M; ++m) {
+      const int sure = certain_levels(row, mu[j][k - 1], sig, cache);
+      // The certain levels (P = 1 exactly) add 1 each to E[c] and sum_{m <= sure} (2m - 1) = sure^2
+      // to E[c^2]: exact in doubles, so the same bits as adding them one by one.
+      double e = sure, e2 = static_cast<double>(sure) * sure;
+      pnone[k - 1] += std::log(cache.get(mu[j][k - 1], level_threshold_electrons(row, 1), sig).q);
+      for (int m = sure + 1; m <= M; ++m) {
         const ActivationProbability p = cache.get(mu[j][k - 1], level_threshold_electrons(row, m), sig);
-        if (m == 1) pnone[k - 1] += std::log(p.q);
         if (p.p == 0) break;  // higher levels are harder still
         e += p.p;
         e2 += (2.0 * m - 1) * p.p;  // E[c^2] = sum_m (2m - 1) P(c >= m)

@@ -41,7 +41,12 @@ class ActivationCache {
 
  private:
   std::map<std::pair<double, double>, ActivationProbability> memo_;
-  std::vector<ActivationTable> tables_;  // one per (threshold, sigma) seen: a code level each
+  // One table per (threshold, sigma) seen: a code level each. All are kept (a multi-bit ADC cycles
+  // through up to 255 levels per pixel, and evicting by count rebuilt a table on every call) up to
+  // kMaxTableEntries band entries (32 MB), then dropped together.
+  std::map<std::pair<double, double>, ActivationTable> tables_;
+  std::size_t table_entries_ = 0;
+  static constexpr std::size_t kMaxTableEntries = std::size_t{1} << 21;
 };
 
 // Exact moments of the 1-bit edge-centre estimate. cdf[j][k] = P(F_j <= k) and surv[j][k] =

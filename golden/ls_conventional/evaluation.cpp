@@ -60,10 +60,13 @@ OperatingPoint evaluate_point(const LsConventionalConfig& cfg, double signal_V, 
   p.detected_fraction = q.detected_fraction;
 
   // Noise part: the exact moments averaged over the spot positions across a pixel, adaptively to
-  // evaluation.subpixel_tolerance (subpixel_average.h).
+  // evaluation.subpixel_tolerance (subpixel_average.h). The multi-bit moments are first-order (the
+  // delta method) and cost every code level near a pixel's mean: refining an approximation to 1e-3
+  // buys nothing and a 14-bit row took minutes, so they take the fixed rule of subpixel_points.
   constexpr int kMaxPositions = 4096;
-  const SubpixelAverage a = subpixel_average(row, q, cfg.grid.subpixel_tolerance,
-                                             std::clamp(cfg.grid.subpixel_points, 1, kMaxPositions), kMaxPositions);
+  const double tolerance = cfg.comparator.adc_bits == 1 ? cfg.grid.subpixel_tolerance : 0.0;
+  const SubpixelAverage a =
+      subpixel_average(row, q, tolerance, std::clamp(cfg.grid.subpixel_points, 1, kMaxPositions), kMaxPositions);
   p.p_detect = a.p_detect;
   p.accuracy_px = a.accuracy_px;
   p.accuracy_clean_px = a.accuracy_clean_px;

@@ -16,11 +16,11 @@ enum Part { kP, kE, kPc, kEc, kOut, kVar, kParts };
 using Parts = std::array<double, kParts>;
 
 // What noise changes at spot position u: p - 1{nf}, p (b^2 + v) - 1{nf} e_nf^2 (all and clean),
-// the outlier probability and p v.
-Parts integrand(const RowModel& row, double u, ActivationCache& cache) {
+// the outlier probability and p v. control = false: p and p (b^2 + v) themselves.
+Parts integrand(const RowModel& row, double u, ActivationCache& cache, bool control = true) {
   const double x0 = row.centre_pixel - 0.5 + u;
   const SplitMoments m = position_moments_split(row, x0, &cache);
-  const CentreEstimate nf = noise_free_estimate(row, x0);
+  const CentreEstimate nf = control ? noise_free_estimate(row, x0) : CentreEstimate{};
   const double nf_p = nf.detected ? 1.0 : 0.0;
   const double nf_e2 = nf.detected ? (nf.centre_px - x0) * (nf.centre_px - x0) : 0.0;
   auto square_error = [&](const PositionMoments& pm) {
@@ -126,13 +126,16 @@ SubpixelAverage subpixel_average(const RowModel& row, const QuantisationError& q
   int positions = 0;
 
   if (!(tolerance > 0)) {  // the fixed midpoint rule
+    // Without the control variate: with a few positions, the exact noise-free integral minus the
+    // noise-free value at the positions can leave P(detect) < 0; the plain average stays a mean
+    // of probabilities and errors inside the row.
     const int P = std::max(1, static_cast<int>(std::lround(fixed_positions * length)));
     Parts sum{};
     for (int i = 0; i < P; ++i) {
-      const Parts f = integrand(row, length * (i + 0.5) / P, cache);
+      const Parts f = integrand(row, length * (i + 0.5) / P, cache, false);
       for (int c = 0; c < kParts; ++c) sum[c] += f[c] * length / P;
     }
-    SubpixelAverage r = finish(sum, NAN, totals(sum, nf_detected, nf_square, length));
+    SubpixelAverage r = finish(sum, NAN, totals(sum, 0, 0, length));
     r.positions = P;
     r.converged = false;
     r.noise_only_detections = q.detected_fraction == 0;

@@ -23,7 +23,8 @@
 // and of P(detect) (and of P(outlier), or 1e-9 absolute) is at most `tolerance`, or the positions
 // reach `max_positions` (then converged = false). A symmetric row (as many pixels each side of the
 // centre pixel) gives mirrored estimates at u and 1 - u: only u <= 1/2 is integrated.
-// tolerance = 0: a fixed midpoint rule of `fixed_positions` positions (fast, not converged).
+// tolerance = 0: a fixed midpoint rule of `fixed_positions` positions averaging p and p (b^2 + v)
+// themselves (fast, not converged; no control variate, which a few positions can push out of [0, 1]).
 #include "golden/common/row_model.h"
 #include "golden/ls_conventional/multisampling.h"
 

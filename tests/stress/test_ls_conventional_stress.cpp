@@ -87,10 +87,19 @@ rc::Gen<PointCase> detectable_biased_case(stress::Limits lim = {}) {
     if (*rc::gen::arbitrary<bool>()) c.cfg.comparator.false_activation_max = 1.0;
     // and a background below saturation.
     if (*rc::gen::arbitrary<bool>()) c.background_V = std::min(c.background_V, 0.5 * c.cfg.pixel.saturation_voltage_V);
+    // and the preset's adaptive average over spot positions (the finiteness and determinism
+    // properties; it is what users run).
+    if (lim.adaptive && *rc::gen::inRange(0, 4) == 0) c.cfg.grid.subpixel_tolerance = 1e-3;
     double lo, hi;
     c.signal_V = detectable_window(c.cfg, c.background_V, lo, hi) ? *log_uniform(lo, hi) : *volts_gen();
     return c;
   });
+}
+
+stress::Limits adaptive_limits() {
+  stress::Limits lim;
+  lim.adaptive = true;
+  return lim;
 }
 
 void expect_same_bits(const OperatingPoint& a, const OperatingPoint& b) {
@@ -117,7 +126,7 @@ RC_GTEST_PROP(LsConventionalStress, AnyLegalPointIsFiniteAndBounded, ()) {
 }
 
 RC_GTEST_PROP(LsConventionalStress, DetectablePointsAreFiniteAndBounded, ()) {
-  const PointCase c = *detectable_biased_case();
+  const PointCase c = *detectable_biased_case(adaptive_limits());
   const OperatingPoint p = evaluate_point(c.cfg, c.signal_V, c.background_V);
   RC_TAG(to_string(p.detect));
   check_point(p);
@@ -166,7 +175,7 @@ TEST(LsConventionalStress, MultiBitDeltaMethodCanExceedTheRow) {
 }
 
 RC_GTEST_PROP(LsConventionalStress, EvaluatePointIsDeterministic, ()) {
-  const PointCase c = *detectable_biased_case();
+  const PointCase c = *detectable_biased_case(adaptive_limits());
   const OperatingPoint a = evaluate_point(c.cfg, c.signal_V, c.background_V);
   const OperatingPoint b = evaluate_point(c.cfg, c.signal_V, c.background_V);
   OperatingPoint t;
@@ -270,6 +279,11 @@ RC_GTEST_PROP(LsConventionalStress, BackgroundTrackingSingleSamplingNeverImprove
       !p2.noise_only_detections) {
     // Same breakpoints (up to the rounding of near-peak half-widths, see level_of above).
     RC_ASSERT(std::fabs(p2.quantisation_rms_px - p1.quantisation_rms_px) <= 1e-6 * p1.quantisation_rms_px + 1e-9);
+    // The first-order (delta) moments of a multi-bit ADC are not monotone in the background:
+    // more background moves every level's P(code >= m) and so the gradients, and their
+    // p-weighted average over positions fell by 1.8e-6 relative (0.37806225 -> 0.37806158 px)
+    // for a 3-bit row; the property is the exact 1-bit moments'.
+    if (!p1.noise_exact) return;
     const double tol = 1e-6 * p1.accuracy_px + 1e-9;
     RC_ASSERT(p2.noise_std_px >= p1.noise_std_px - tol);
     RC_ASSERT(p2.accuracy_px >= p1.accuracy_px - tol);
