@@ -8,4 +8,5 @@ scripts/install-deps.sh
 build_dir=${RANGESIM_BUILD_DIR:-build}
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build_dir"
-ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" -LE heavy "$@"
+# A test that hangs fails after 15 minutes with its name, not the whole run at the CI limit.
+ctest --test-dir "$build_dir" --output-on-failure -j"$(nproc)" -LE heavy --timeout 900 "$@"
