@@ -28,6 +28,10 @@ struct LockinSimOptions {
   bool aggregate = false;      // with event_skipping: one event per accumulation phase (N_acc
                                // identical periods summed; Poisson of the total mean, exact)
   std::uint64_t seed = 1;      // key of the noise streams
+  // Merged draws of aggregated frames (config simulation.merged_draws): counts from alias tables
+  // of their means when the kernel has at most FrameLaws::kMaxTables of them (frame_draw.h), else
+  // by PTRS. Off where each kernel runs only a few frames (a table costs ~ a few hundred draws).
+  bool poisson_tables = true;
   // 0: pulse/gate overlaps in closed form (exact). > 0: the pulse shape integrated numerically
   // at this step (golden::pulse_area_between_s): error falls and cost rises as it shrinks.
   double time_step_s = 0;

@@ -1,4 +1,5 @@
-// Monte Carlo trials of tof-lockin on the sensor kernel (one pixel, one kernel run per trial).
+// Monte Carlo trials of tof-lockin on the kernels (one pixel): each trial the sensor kernel's
+// frames, or (simulation.direct_trials) the same pixel, ADC and range rule without the sequencer.
 #include <cmath>
 #include <optional>
 
@@ -11,40 +12,65 @@ namespace rangesim::mc {
 
 namespace {
 
+namespace lk = systemc::lockin;
+
 class Runner : public McPointRunner {
  public:
   Runner(const TofLockinConfig& cfg, bool aggregate, double signal_A, double background_A, std::uint64_t key)
       : cfg_(cfg),
         aggregate_(aggregate),
         key_(key),
-        stim_{signal_A, background_A, golden::round_trip_delay_s(cfg.eval.distance_m)} {
+        stim_{signal_A, background_A, golden::round_trip_delay_s(cfg.eval.distance_m)},
+        gates_(cfg),
+        adc_(cfg),
+        noise_(lk::LockinPixelKernel::ResetNoise::of(cfg)),
+        readout_(lk::LockinPixelKernel::Readout::of(cfg)),
+        range_m_(golden::max_range_m(cfg.source)) {
     cfg_.pixel.rows = 1;
+    // Every trial is a pixel of another chip when the fixed pattern is on (its stimulus keyed by
+    // the trial): then the laws change every trial and alias tables would not pay.
+    fixed_pattern_ = cfg_.nonideal.fixed_pattern.any();
+    opt_.event_skipping = true, opt_.aggregate = aggregate_, opt_.poisson_tables = !fixed_pattern_;
+    const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
+    frames_ = maps * (cfg_.readout.ambient_subtraction ? 2 : 1);
+    // The direct path needs the aggregated frame (one draw event per frame); noise is always on here.
+    direct_ = cfg_.simulation.direct_trials && aggregate_;
+    merged_ = cfg_.simulation.merged_draws && aggregate_;
   }
 
   McTrial trial(long long t) override {
-    using namespace systemc::lockin;
-    // One kernel for all the point's trials, restarted with the trial's streams: (trial key,
-    // frame, row 0, column 0), the same bits as a kernel built per trial.
+    // The trial's streams: (trial key, frame, row 0, column 0) in either path.
     const std::uint64_t seed = trial_key(key_, static_cast<std::uint64_t>(t));
-    // Every trial is a pixel of another chip (its fixed pattern keyed by the trial), so the
-    // trials' spread holds the spread over pixels that golden's fpn_m is; one pixel of a uniform
-    // plane: the point spread changes nothing there, the second return does.
-    const bool fixed_pattern = cfg_.nonideal.fixed_pattern.any();
-    if (fixed_pattern || !kernel_) {
-      std::vector<LockinPixelStimulus> st{stim_};
-      add_multipath(cfg_, st);
-      apply_fixed_pattern(cfg_, seed, st, 1, 1);
-      if (fixed_pattern) kernel_.reset();
-      stim_now_ = st;
+    // One pixel of a uniform plane: the point spread changes nothing there, the second return does.
+    if (fixed_pattern_ || stim_now_.empty()) {
+      stim_now_ = {stim_};
+      lk::add_multipath(cfg_, stim_now_);
+      lk::apply_fixed_pattern(cfg_, seed, stim_now_, 1, 1);
+      if (direct_) set_frame_laws();
+      kernel_.reset();
     }
-    if (!kernel_) {
-      const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
-      const long long per_map = cfg_.readout.ambient_subtraction ? 2 : 1;
-      kernel_.emplace(cfg_, LockinSimOptions{true, true, aggregate_, seed}, 1, 1, stim_now_, maps * per_map);
-    } else {
+    return direct_ ? direct_trial(seed) : kernel_trial(seed);
+  }
+
+ private:
+  // The frame means and merged laws of the pixel, as the sensor kernel computes them.
+  void set_frame_laws() {
+    for (int kind = 0; kind < 2; ++kind) {
+      means_[kind] = lk::TofLockinSensorKernel::aggregated_frame_means(cfg_, opt_, gates_, stim_now_, kind == 1);
+      if (merged_) laws_[kind].build(cfg_, means_[kind], noise_.offset_e, opt_.poisson_tables);
+    }
+  }
+
+  // The sensor kernel's frames: one kernel for all the point's trials, restarted with the trial's
+  // streams (the same bits as a kernel built per trial), rebuilt when the chip changes.
+  McTrial kernel_trial(std::uint64_t seed) {
+    lk::LockinSimOptions o = opt_;
+    o.seed = seed;
+    if (!kernel_)
+      kernel_.emplace(cfg_, o, 1, 1, stim_now_, frames_);
+    else
       kernel_->restart(seed);
-    }
-    TofLockinSensorKernel& k = *kernel_;
+    lk::TofLockinSensorKernel& k = *kernel_;
     k.run();  // bounded: the frames' schedule has a fixed number of events
     double sum = 0;
     McTrial out;
@@ -58,13 +84,59 @@ class Runner : public McPointRunner {
     return out;
   }
 
- private:
+  // The same frames without the sequencer: the pixel's reset and aggregated draw, the column ADC
+  // and the kernel's range rule, frame by frame (the schedule's cycles change no draw).
+  McTrial direct_trial(std::uint64_t seed) {
+    const bool ambient = cfg_.readout.ambient_subtraction;
+    const long long per_map = ambient ? 2 : 1;
+    lk::CounterStream stream;
+    if (merged_) stream = lk::LockinPixelKernel::merged_stream(seed, 0, 0);
+    opt_.seed = seed;
+    double sum = 0;
+    McTrial out;
+    for (long long f = 0; f < frames_; f += per_map) {
+      long long codes[2][2] = {{0, 0}, {0, 0}};  // [LED, ambient][tap]
+      for (long long j = 0; j < per_map; ++j) {
+        const int kind = j == 0 ? 1 : 0;  // the LED frame first
+        const auto frame = static_cast<std::uint64_t>(f + j);
+        if (merged_) {  // the pixel's reset and aggregate_merged, without its state
+          double fd[2], ktc[2], read[2];
+          stream.seek(frame << 32);
+          lk::LockinPixelKernel::draw_merged(stream, laws_[kind].pixel(0), fd, ktc, read);
+          for (int k = 0; k < 2; ++k)
+            codes[j][k] = adc_.code(lk::LockinPixelKernel::input_V(readout_, k, fd[k], 0.0, ktc[k], read[k]));
+        } else {
+          pixel_.reset(noise_, opt_, frame, 0, 0);
+          pixel_.aggregate(opt_, means_[kind].data());
+          for (int k = 0; k < 2; ++k) codes[j][k] = adc_.code(pixel_.adc_input_V(readout_, k));
+        }
+      }
+      const double L = lk::TofLockinSensorKernel::range_from_codes(cfg_, adc_, range_m_, codes[0], codes[1]);
+      if (!std::isfinite(L)) return out;
+      sum += L;
+    }
+    out.detected = true;
+    out.error = sum / static_cast<double>(frames_ / per_map) - cfg_.eval.distance_m;
+    return out;
+  }
+
   TofLockinConfig cfg_;
-  bool aggregate_;
+  bool aggregate_, fixed_pattern_ = false, direct_ = false, merged_ = false;
   std::uint64_t key_;
-  systemc::lockin::LockinPixelStimulus stim_;
-  std::vector<systemc::lockin::LockinPixelStimulus> stim_now_;    // stim_ with the trial's chip
-  std::optional<systemc::lockin::TofLockinSensorKernel> kernel_;  // built at the first trial
+  lk::LockinPixelStimulus stim_;
+  lk::LockinSimOptions opt_;
+  long long frames_ = 0;
+  std::vector<lk::LockinPixelStimulus> stim_now_;    // stim_ with the trial's chip
+  std::optional<lk::TofLockinSensorKernel> kernel_;  // built at the first trial
+  // Direct trials.
+  lk::LockinGateGeneratorKernel gates_;
+  lk::ColumnAdcKernel adc_;
+  lk::LockinPixelKernel::ResetNoise noise_;
+  lk::LockinPixelKernel::Readout readout_;
+  double range_m_;  // c T0 / 2
+  lk::LockinPixelKernel pixel_;
+  std::vector<double> means_[2];  // [ambient, LED] frame means per tap
+  lk::FrameLaws laws_[2];
 };
 
 }  // namespace
