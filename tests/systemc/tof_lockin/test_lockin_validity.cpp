@@ -84,10 +84,11 @@ TEST(LockinMapValidity, ValidValuesWithinTheBoundOnADimScene) {
   TofLockinConfig old_rule = cfg;
   old_rule.readout.max_range_noise_fraction = 1e6;
   const MapStats before = run_map(old_rule, dim, 6), after = run_map(cfg, dim, 6);
-  std::printf("dim wall %.4g A at %.1f m: SNR-3 rule %lld of %lld valid, rms %.3f m, max %.2f m; with the bound %lld "
-              "valid, rms %.3f m (bound %.3f m)\n",
-              dim, kDistance_m, before.valid, before.values, before.valid_rms_m(), before.all_max_m, after.valid,
-              after.valid_rms_m(), bound_m(cfg));
+  std::printf(
+      "dim wall %.4g A at %.1f m: SNR-3 rule %lld of %lld valid, rms %.3f m, max %.2f m; with the bound %lld "
+      "valid, rms %.3f m (bound %.3f m)\n",
+      dim, kDistance_m, before.valid, before.values, before.valid_rms_m(), before.all_max_m, after.valid,
+      after.valid_rms_m(), bound_m(cfg));
   EXPECT_GT(before.valid_fraction(), 0.99);
   EXPECT_GT(before.valid_rms_m(), bound_m(cfg));
   EXPECT_GT(before.all_max_m, 2.0);
