@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "golden/tof_lockin/tap_charge.h"
 #include "systemc/tof_lockin/normal_ziggurat.h"
@@ -29,30 +30,44 @@ bool swing_may_saturate(const TofLockinConfig& cfg, int tap, double count_mean_e
 }
 
 void FrameLaws::build(const TofLockinConfig& cfg, const std::vector<double>& frame_mean_e, const double offset_e[2],
-                      bool tables_allowed) {
+                      PoissonTables tables, long long frames) {
   const double a = cfg.pixel.source_follower_gain;
-  laws_.assign(frame_mean_e.size(), TapFrameLaw{});
-  tables_.clear();
-  std::map<double, int> means;
-  for (std::size_t i = 0; i < frame_mean_e.size(); ++i) {
-    TapFrameLaw& l = laws_[i];
-    const int tap = static_cast<int>(i % 2);
-    l.offset_e = offset_e[tap];
-    l.count_mean_e = std::max(0.0, frame_mean_e[i]) + l.offset_e;
-    l.ktc_fd_V = golden::ktc_noise_V(cfg, tap) / a;
-    l.read_V = cfg.noise.read_noise_V;
-    l.may_saturate = swing_may_saturate(cfg, tap, l.count_mean_e, l.offset_e);
-    l.sigma_V = std::sqrt(a * a * l.ktc_fd_V * l.ktc_fd_V + l.read_V * l.read_V);
-    if (l.count_mean_e <= PoissonAlias::kMaxMean) ++means[l.count_mean_e];
+  laws_.clear(), pair_.clear(), tables_.clear();
+  // Pixels with the same two means share their laws; each count mean's draws over the kernel's frames.
+  std::map<std::pair<double, double>, std::uint32_t> pairs;
+  std::map<double, long long> draws;
+  for (std::size_t p = 0; 2 * p + 1 < frame_mean_e.size(); ++p) {
+    double m[2];
+    for (int k = 0; k < 2; ++k) m[k] = std::max(0.0, frame_mean_e[2 * p + k]) + offset_e[k], draws[m[k]] += frames;
+    const auto [it, added] = pairs.emplace(std::make_pair(m[0], m[1]), static_cast<std::uint32_t>(laws_.size() / 2));
+    pair_.push_back(it->second);
+    if (!added) continue;
+    for (int k = 0; k < 2; ++k) {
+      TapFrameLaw l;
+      l.offset_e = offset_e[k];
+      l.count_mean_e = m[k];
+      l.ktc_fd_V = golden::ktc_noise_V(cfg, k) / a;
+      l.read_V = cfg.noise.read_noise_V;
+      l.may_saturate = swing_may_saturate(cfg, k, l.count_mean_e, l.offset_e);
+      l.sigma_V = std::sqrt(a * a * l.ktc_fd_V * l.ktc_fd_V + l.read_V * l.read_V);
+      laws_.push_back(l);
+    }
   }
-  const bool tables = tables_allowed && means.size() <= kMaxTables;
+  std::size_t entries = 0;
   for (TapFrameLaw& l : laws_) {
-    if (tables && l.count_mean_e <= PoissonAlias::kMaxMean) {
-      auto& t = tables_[l.count_mean_e];
-      if (!t) t = std::make_unique<PoissonAlias>(l.count_mean_e);
-      l.table = t.get();
-    } else if (l.count_mean_e <= 1e15) {
-      l.ptrs = PoissonSampler(l.count_mean_e);
+    const double m = l.count_mean_e;
+    const double size = 19.2 * std::sqrt(m) + 1;  // +-9.6 sigma
+    const bool pays = tables == PoissonTables::Always ||
+                      (tables == PoissonTables::WhenTheyPay && static_cast<double>(draws[m]) >= size / 2);
+    auto it = tables_.find(m);
+    if (it == tables_.end() && pays && m <= PoissonAlias::kMaxMean && entries + size <= kMaxTableEntries) {
+      it = tables_.emplace(m, std::make_unique<PoissonAlias>(m)).first;
+      entries += static_cast<std::size_t>(size);
+    }
+    if (it != tables_.end()) {
+      l.table = it->second.get();
+    } else if (m <= 1e15) {
+      l.ptrs = PoissonSampler(m);
     }
   }
 }

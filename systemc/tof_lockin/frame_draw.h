@@ -22,6 +22,7 @@
 #include "core/tof_lockin/config.h"
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/tof_lockin/counter_stream.h"
+#include "systemc/tof_lockin/kernel_types.h"
 #include "systemc/tof_lockin/poisson_alias.h"
 
 namespace rangesim::systemc::lockin {
@@ -48,19 +49,22 @@ bool swing_may_saturate(const TofLockinConfig& cfg, int tap, double count_mean_e
 // The laws of a kernel's taps, with the alias tables they share.
 class FrameLaws {
  public:
-  // Tables are used when allowed and the means number at most this many (each table is worth it
-  // only when its mean is drawn many times).
-  static constexpr std::size_t kMaxTables = 64;
+  // A table of ~19 sqrt(mean) entries costs about as much to build as PTRS draws a third of that
+  // many counts: WhenTheyPay builds one where its mean is drawn at least table entries / 2 times.
+  // All tables together hold at most this many entries (a few tens of MB).
+  static constexpr std::size_t kMaxTableEntries = std::size_t{1} << 22;
   // frame_mean_e: 2 per pixel (FD1, FD2, without the offset charge); offset_e: each FD's mean
-  // offset charge (0 without its shot noise).
+  // offset charge (0 without its shot noise); frames: how many frames draw these laws (each tap
+  // once per frame).
   void build(const TofLockinConfig& cfg, const std::vector<double>& frame_mean_e, const double offset_e[2],
-             bool tables_allowed);
-  const TapFrameLaw* pixel(std::size_t p) const { return &laws_[2 * p]; }
-  bool empty() const { return laws_.empty(); }
+             PoissonTables tables, long long frames);
+  // The two taps' laws of pixel p.
+  const TapFrameLaw* pixel(std::size_t p) const { return &laws_[2 * pair_[p]]; }
   bool uses_tables() const { return !tables_.empty(); }
 
  private:
-  std::vector<TapFrameLaw> laws_;
+  std::vector<TapFrameLaw> laws_;    // distinct (FD1, FD2) pairs, two laws each (uniform scenes: one)
+  std::vector<std::uint32_t> pair_;  // each pixel's pair
   std::map<double, std::unique_ptr<PoissonAlias>> tables_;
 };
 

@@ -16,6 +16,9 @@ namespace lk = systemc::lockin;
 
 class Runner : public McPointRunner {
  public:
+  // A point's alias tables cost about as much as this many trials drawn by PTRS.
+  static constexpr long long kTablesFromTrial = 1024;
+
   Runner(const TofLockinConfig& cfg, bool aggregate, double signal_A, double background_A, std::uint64_t key)
       : cfg_(cfg),
         aggregate_(aggregate),
@@ -30,7 +33,8 @@ class Runner : public McPointRunner {
     // Every trial is a pixel of another chip when the fixed pattern is on (its stimulus keyed by
     // the trial): then the laws change every trial and alias tables would not pay.
     fixed_pattern_ = cfg_.nonideal.fixed_pattern.any();
-    opt_.event_skipping = true, opt_.aggregate = aggregate_, opt_.poisson_tables = !fixed_pattern_;
+    opt_.event_skipping = true, opt_.aggregate = aggregate_;
+    opt_.poisson_tables = lk::PoissonTables::Never;
     const long long maps = std::max<long long>(1, cfg_.eval.frames_averaged);
     frames_ = maps * (cfg_.readout.ambient_subtraction ? 2 : 1);
     // The direct path needs the aggregated frame (one draw event per frame); noise is always on here.
@@ -41,6 +45,14 @@ class Runner : public McPointRunner {
   McTrial trial(long long t) override {
     // The trial's streams: (trial key, frame, row 0, column 0) in either path.
     const std::uint64_t seed = trial_key(key_, static_cast<std::uint64_t>(t));
+    // Without the fixed pattern every trial draws the same laws: from kTablesFromTrial on (the
+    // trials before pay for the alias tables, frame_draw.h) their counts come from tables. The
+    // switch is a function of the trial index, taken by both paths alike.
+    const bool tables = !fixed_pattern_ && t >= kTablesFromTrial;
+    if (tables != (opt_.poisson_tables == lk::PoissonTables::Always)) {
+      opt_.poisson_tables = tables ? lk::PoissonTables::Always : lk::PoissonTables::Never;
+      stim_now_.clear();  // laws and kernel made anew below
+    }
     // One pixel of a uniform plane: the point spread changes nothing there, the second return does.
     if (fixed_pattern_ || stim_now_.empty()) {
       stim_now_ = {stim_};
@@ -57,7 +69,7 @@ class Runner : public McPointRunner {
   void set_frame_laws() {
     for (int kind = 0; kind < 2; ++kind) {
       means_[kind] = lk::TofLockinSensorKernel::aggregated_frame_means(cfg_, opt_, gates_, stim_now_, kind == 1);
-      if (merged_) laws_[kind].build(cfg_, means_[kind], noise_.offset_e, opt_.poisson_tables);
+      if (merged_) laws_[kind].build(cfg_, means_[kind], noise_.offset_e, opt_.poisson_tables, frames_);
     }
   }
 

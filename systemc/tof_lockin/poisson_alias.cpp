@@ -9,7 +9,7 @@ namespace rangesim::systemc::lockin {
 
 namespace {
 
-constexpr long double kTailMass = 1.0L / 73786976294838206464.0L;  // 2^-66 on each side
+constexpr double kTailMass = 1.0 / 73786976294838206464.0;  // 2^-66 on each side
 constexpr long double kTwo64 = 18446744073709551616.0L;
 
 }  // namespace
@@ -20,61 +20,79 @@ PoissonAlias::PoissonAlias(double mean) : mean_(mean) {
     threshold_.assign(1, ~0ULL), alias_.assign(1, 0);
     return;
   }
-  const long double mu = mean;
-  // The mode's probability from the accurate log pmf, then outwards by the exact ratios.
+  // The mode's probability from the accurate log pmf, then outwards by the exact ratios, anchored
+  // on the log pmf again every 128 steps (so rounding builds up over 128 steps at most, ~1e-14).
+  // The table is filled from the middle of a buffer wide enough for both tails (+-9.6 sigma + slack).
+  const double mu = mean;
   const long long mode = static_cast<long long>(std::floor(mean));
-  const long double p_mode =
-      std::exp(static_cast<long double>(PoissonSampler::log_pmf(mean, static_cast<double>(mode))));
-  std::vector<long double> up{p_mode}, down;  // up: mode, mode+1, ...; down: mode-1, mode-2, ...
-  long double tail_hi = 0, tail_lo = 0;
+  const std::size_t half = static_cast<std::size_t>(12.0 * std::sqrt(mu) + 64.0);
+  std::vector<double> p(2 * half + 1);
+  std::size_t lo = half, hi = half;  // p[lo .. hi] holds counts mode - (half - lo) .. mode + (hi - half)
+  p[half] = std::exp(PoissonSampler::log_pmf(mean, static_cast<double>(mode)));
+  double tail_hi = 0, tail_lo = 0;
+  const auto anchored = [&](double ratio_step, long long k, long long steps) {
+    return steps % 128 == 0 ? std::exp(PoissonSampler::log_pmf(mean, static_cast<double>(k))) : ratio_step;
+  };
   for (long long k = mode;; ++k) {  // mass above k <= p(k+1) / (1 - mu / (k + 2))
-    const long double next = up.back() * mu / static_cast<long double>(k + 1);
-    tail_hi = next / (1 - mu / static_cast<long double>(k + 2));
-    if (tail_hi < kTailMass) break;
-    up.push_back(next);
+    const double next = anchored(p[hi] * mu / static_cast<double>(k + 1), k + 1, k + 1 - mode);
+    // The bound needs a division: only out where the tail can be that small.
+    tail_hi = next < 1e-17 ? next / (1 - mu / static_cast<double>(k + 2)) : 1.0;
+    if (tail_hi < kTailMass || hi + 1 == p.size()) break;
+    p[++hi] = next;
   }
-  for (long long k = mode; k > 0;) {  // mass below k <= p(k-1) / (1 - (k-1) / mu)
-    const long double prev = (down.empty() ? p_mode : down.back()) * static_cast<long double>(k) / mu;
-    tail_lo = prev / (1 - static_cast<long double>(k - 1) / mu);
+  for (long long k = mode; k > 0 && lo > 0; --k) {  // mass below k <= p(k-1) / (1 - (k-1) / mu)
+    const double prev = anchored(p[lo] * static_cast<double>(k) / mu, k - 1, mode - k + 1);
+    tail_lo = prev < 1e-17 ? prev / (1 - static_cast<double>(k - 1) / mu) : 1.0;
     if (tail_lo < kTailMass) break;
-    down.push_back(prev);
-    --k;
-    if (k == 0) tail_lo = 0;
+    p[--lo] = prev;
+    if (k == 1) tail_lo = 0;
   }
-  first_ = mode - static_cast<long long>(down.size());
-  std::vector<long double> p(down.rbegin(), down.rend());
-  p.insert(p.end(), up.begin(), up.end());
-  left_out_ = static_cast<double>(tail_hi + tail_lo);
-  size_ = static_cast<std::uint32_t>(p.size());
-  long double sum = 0;
-  for (long double x : p) sum += x;
+  first_ = mode - static_cast<long long>(half - lo);
+  left_out_ = tail_hi + tail_lo;
+  size_ = static_cast<std::uint32_t>(hi - lo + 1);
+  long double sum = 0;  // 64-bit mantissa: the running sum below stays within a unit
+  for (std::size_t i = lo; i <= hi; ++i) sum += p[i];
 
-  // Vose: buckets scaled to mean 1; each small bucket is topped up by a large one.
-  const long double n = static_cast<long double>(size_);
-  std::vector<long double> q(size_);
-  std::vector<std::uint32_t> small, large;
+  // Vose in integers, so nothing drifts: each bucket's share is a count of units 2^-shift of one
+  // bucket, and topping up a small bucket from a large one is exact. The counts are differences
+  // of the rounded cumulative sums, so they add up to exactly size x 2^shift and each is within a
+  // unit of its share. shift is as large as 63 bits allow: one unit is below 2^-62 of the total.
+  int bits = 0;
+  while ((std::uint64_t{1} << bits) < size_) ++bits;
+  const int shift = 63 - bits;
+  const std::uint64_t unit_sum = std::uint64_t{1} << shift;  // one full bucket
+  const long double scale = static_cast<long double>(size_) * static_cast<long double>(unit_sum) / sum;
+  std::vector<std::uint64_t> q(size_);
+  long double running = 0;
+  std::uint64_t before = 0;
   for (std::uint32_t i = 0; i < size_; ++i) {
-    q[i] = p[i] / sum * n;
-    (q[i] < 1 ? small : large).push_back(i);
+    running += p[lo + i];
+    const std::uint64_t upto = i + 1 == size_ ? static_cast<std::uint64_t>(size_) * unit_sum
+                                              : static_cast<std::uint64_t>(running * scale + 0.5L);
+    q[i] = upto - before;
+    before = upto;
   }
+  std::vector<std::uint32_t> small, large;
+  small.reserve(size_), large.reserve(size_);
+  for (std::uint32_t i = 0; i < size_; ++i) (q[i] < unit_sum ? small : large).push_back(i);
   threshold_.assign(size_, ~0ULL);
   alias_.resize(size_);
   for (std::uint32_t i = 0; i < size_; ++i) alias_[i] = i;
   while (!small.empty() && !large.empty()) {
-    const std::uint32_t s = small.back(), l = large.back();
+    const std::uint32_t sm = small.back(), l = large.back();
     small.pop_back();
-    threshold_[s] = static_cast<std::uint64_t>(q[s] * kTwo64);
-    alias_[s] = l;
-    q[l] -= 1 - q[s];
-    if (q[l] < 1) large.pop_back(), small.push_back(l);
+    threshold_[sm] = q[sm] << (64 - shift);  // the share of bucket sm kept, in 2^-64
+    alias_[sm] = l;
+    q[l] -= unit_sum - q[sm];
+    if (q[l] < unit_sum) large.pop_back(), small.push_back(l);
   }
-  // What is left is full to rounding: keep the bucket always (threshold ~0, alias itself).
+  // Exact arithmetic leaves only full buckets: kept always (threshold ~0, alias itself).
 }
 
 std::vector<long double> PoissonAlias::probabilities() const {
   std::vector<long double> p(size_, 0);
   for (std::uint32_t i = 0; i < size_; ++i) {
-    const long double keep = threshold_[i] == ~0ULL ? 1 : static_cast<long double>(threshold_[i]) / kTwo64;
+    const long double keep = threshold_[i] == ~0ULL ? 1 : static_cast<long double>(threshold_[i]) / kTwo64;  // exact
     p[i] += keep;
     if (alias_[i] != i) p[alias_[i]] += 1 - keep;
   }

@@ -130,7 +130,12 @@ bool TofLockinSensorKernel::step() {
       const int kind = on ? 1 : 0;
       if (frame_mean_e_[kind].empty()) {
         frame_mean_e_[kind] = aggregated_frame_means(cfg_, opt_, gates_, stim_, on);
-        if (merged_) laws_[kind].build(cfg_, frame_mean_e_[kind], reset_noise_.offset_e, opt_.poisson_tables);
+        if (merged_) {
+          // Frames of this kind over the run: LED and ambient frames alternate with ambient subtraction.
+          const long long led = cfg_.readout.ambient_subtraction ? (frames_ + 1) / 2 : frames_;
+          laws_[kind].build(cfg_, frame_mean_e_[kind], reset_noise_.offset_e, opt_.poisson_tables,
+                            on ? led : frames_ - led);
+        }
       }
       if (merged_) {
         for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate_merged(laws_[kind].pixel(p));

@@ -114,11 +114,17 @@ TEST(NormalZiggurat, TestRejectsThreePercentWider) {
   EXPECT_FALSE(normal_with_sigma(ziggurat_draws(1 << 20, 8, 1.03), 1.0));
 }
 
-// The Poisson pmf in long double, independently of the table (lgammal).
+// The Poisson pmf in long double, independently of the table: lgammal for small k; for k >= 16
+// Stirling's series for ln k! written so that the terms of size mu ln mu cancel analytically
+// (k ln(1 + d/k) - d - ln(2 pi k)/2 - 1/(12k) + 1/(360k^3) - ..., d = mu - k): the direct sum
+// loses ~1e-11 relative at mu = 1e6 even in long double.
 long double pmf(double mu, long long k) {
   if (mu == 0) return k == 0 ? 1 : 0;
-  return std::exp(-static_cast<long double>(mu) + k * std::log(static_cast<long double>(mu)) -
-                  std::lgamma(static_cast<long double>(k) + 1));
+  const long double m = mu, kk = static_cast<long double>(k);
+  if (k < 16) return std::exp(-m + kk * std::log(m) - std::lgamma(kk + 1));
+  const long double d = m - kk, ik = 1 / kk, ik2 = ik * ik;
+  const long double r = ik * (1.0L / 12 - ik2 * (1.0L / 360 - ik2 * (1.0L / 1260 - ik2 / 1680)));
+  return std::exp(kk * std::log1p(d / kk) - d - 0.5L * std::log(2 * std::acos(-1.0L) * kk) - r);
 }
 
 TEST(PoissonAlias, TableProbabilitiesAreThePmf) {

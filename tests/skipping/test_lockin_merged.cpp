@@ -34,7 +34,8 @@ Samples run(const Run& r) {
   TofLockinConfig cfg = test::edited_config({{"pixel", "rows", "1"}});
   cfg.simulation.merged_draws = r.merged;
   LockinSimOptions o;
-  o.aggregate = true, o.seed = r.seed, o.poisson_tables = r.tables;
+  o.aggregate = true, o.seed = r.seed;
+  o.poisson_tables = r.tables ? PoissonTables::Always : PoissonTables::Never;
   const int columns = 128;
   const long long frames = 80;  // 40 range maps: 5120 LED samples per tap
   TofLockinSensorKernel k(cfg, o, 1, columns, test::uniform(columns, r.signal_A, r.background_A, r.distance_m), frames);
