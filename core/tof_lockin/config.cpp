@@ -68,6 +68,7 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
 
   c.simulation.merged_draws = p.boolean("simulation.merged_draws");
   c.simulation.direct_trials = p.boolean("simulation.direct_trials");
+  c.simulation.code_tables = p.boolean("simulation.code_tables");
 
   c.eval.signal_min_A = p.real("evaluation.signal_min_A");
   c.eval.signal_max_A = p.real("evaluation.signal_max_A");

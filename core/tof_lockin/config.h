@@ -107,6 +107,8 @@ struct LockinSimulationConfig {
                               // normal (kTC + read) where V_sat cannot be reached (frame_draw.h)
   bool direct_trials = true;  // evaluate --trials: each trial's frames drawn without stepping the
                               // frame schedule (the same draws as the kernel, bit for bit)
+  bool code_tables = true;    // evaluate --trials, from a point's 65536th trial on: each tap's ADC code
+                              // drawn from its exact law where V_sat cannot be reached (code_law.h)
 };
 
 struct TofLockinConfig {

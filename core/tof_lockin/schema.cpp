@@ -111,7 +111,10 @@ const ParamSchema& tof_lockin_schema() {
          "cannot be reached, one normal (kTC and read noise); false: every noise term apart (same law)"},
         {"simulation.direct_trials", ParamKind::Boolean, "", 0, 0, false,
          "true: evaluate --trials draws each trial's frames without stepping the frame schedule (the kernel's "
-         "draws, bit for bit); false: every trial runs the sensor kernel"}}});
+         "draws, bit for bit); false: every trial runs the sensor kernel"},
+        {"simulation.code_tables", ParamKind::Boolean, "", 0, 0, false,
+         "true: from a point's 65536th trial on, evaluate --trials (with direct_trials) draws each tap's ADC code "
+         "from its exact law where V_sat cannot be reached (same law); false: the count and the noise apart"}}});
   return schema;
 }
 

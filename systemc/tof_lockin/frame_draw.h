@@ -9,7 +9,7 @@
 //     bound on kTC) the clip is the identity and the two are one normal of the summed variance at
 //     the ADC input. Otherwise they are drawn apart, as on the unmerged path.
 //   - The count comes from an alias table of its mean where the kernel shares few means among
-//     many draws (poisson_alias.h), else from PTRS with its constants set once
+//     many draws (alias_table.h), else from PTRS with its constants set once
 //     (systemc/common/poisson_sampler.h); the normals from the ziggurat (normal_ziggurat.h); all
 //     words from one counter-based stream per pixel (counter_stream.h), keyed (seed, row,
 //     column), each frame's words from word frame << 32 on.
@@ -23,7 +23,7 @@
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/tof_lockin/counter_stream.h"
 #include "systemc/tof_lockin/kernel_types.h"
-#include "systemc/tof_lockin/poisson_alias.h"
+#include "systemc/tof_lockin/alias_table.h"
 
 namespace rangesim::systemc::lockin {
 

@@ -5,6 +5,7 @@
 
 #include "systemc/tof_lockin/montecarlo.h"
 #include "golden/tof_lockin/pulse_timing.h"
+#include "systemc/tof_lockin/code_law.h"
 #include "systemc/tof_lockin/nonideal_stimulus.h"
 #include "systemc/tof_lockin/sensor_kernel.h"
 
@@ -19,9 +20,11 @@ class Runner : public McPointRunner {
   // A point's alias tables cost about as much as this many trials drawn by PTRS.
   static constexpr long long kTablesFromTrial = 1024;
 
-  Runner(const TofLockinConfig& cfg, bool aggregate, double signal_A, double background_A, std::uint64_t key)
+  Runner(const TofLockinConfig& cfg, bool aggregate, long long code_tables_from, double signal_A, double background_A,
+         std::uint64_t key)
       : cfg_(cfg),
         aggregate_(aggregate),
+        code_tables_from_(code_tables_from),
         key_(key),
         stim_{signal_A, background_A, golden::round_trip_delay_s(cfg.eval.distance_m)},
         gates_(cfg),
@@ -40,6 +43,8 @@ class Runner : public McPointRunner {
     // The direct path needs the aggregated frame (one draw event per frame); noise is always on here.
     direct_ = cfg_.simulation.direct_trials && aggregate_;
     merged_ = cfg_.simulation.merged_draws && aggregate_;
+    // The codes' own laws (code_law.h) need the merged draws' laws without the V_sat clip.
+    codes_ = cfg_.simulation.code_tables && direct_ && merged_ && !fixed_pattern_;
   }
 
   McTrial trial(long long t) override {
@@ -61,6 +66,8 @@ class Runner : public McPointRunner {
       if (direct_) set_frame_laws();
       kernel_.reset();
     }
+    if (codes_ && t >= code_tables_from_ && !code_laws_set_) set_code_laws();
+    if (code_laws_ready_ && t >= code_tables_from_) return code_trial(seed);
     return direct_ ? direct_trial(seed) : kernel_trial(seed);
   }
 
@@ -71,6 +78,47 @@ class Runner : public McPointRunner {
       means_[kind] = lk::TofLockinSensorKernel::aggregated_frame_means(cfg_, opt_, gates_, stim_now_, kind == 1);
       if (merged_) laws_[kind].build(cfg_, means_[kind], noise_.offset_e, opt_.poisson_tables, frames_);
     }
+  }
+
+  // Each tap's code law of the LED and the ambient frame (code_law.h), where none can saturate.
+  void set_code_laws() {
+    code_laws_set_ = true;
+    for (int kind = 0; kind < 2; ++kind)
+      for (int k = 0; k < 2; ++k)
+        if (laws_[kind].pixel(0)[k].may_saturate) return;  // drawn as the kernel draws them
+    for (int kind = 0; kind < 2; ++kind)
+      for (int k = 0; k < 2; ++k) {
+        const lk::TapFrameLaw& l = laws_[kind].pixel(0)[k];
+        const lk::TapFrameLaw& l0 = laws_[kind].pixel(0)[0];
+        // The ambient frame's taps usually share their law (same charge, same FD): one table.
+        const bool same = k == 1 && l.count_mean_e == l0.count_mean_e && l.offset_e == l0.offset_e &&
+                          l.sigma_V == l0.sigma_V && readout_.volts_per_e[1] == readout_.volts_per_e[0];
+        code_laws_[kind][k] = same ? code_laws_[kind][0] : lk::tap_code_table(l, readout_, adc_, k);
+      }
+    code_laws_ready_ = true;
+  }
+
+  // The codes drawn from their own laws: one word per code, from the trial's pixel stream.
+  McTrial code_trial(std::uint64_t seed) {
+    const bool ambient = cfg_.readout.ambient_subtraction;
+    const long long per_map = ambient ? 2 : 1;
+    lk::CounterStream stream = lk::LockinPixelKernel::merged_stream(seed, 0, 0);
+    double sum = 0;
+    McTrial out;
+    for (long long f = 0; f < frames_; f += per_map) {
+      long long codes[2][2] = {{0, 0}, {0, 0}};  // [LED, ambient][tap]
+      for (long long j = 0; j < per_map; ++j) {
+        stream.seek(static_cast<std::uint64_t>(f + j) << 32);
+        const auto& law = code_laws_[j == 0 ? 1 : 0];
+        codes[j][0] = law[0](stream), codes[j][1] = law[1](stream);
+      }
+      const double L = lk::TofLockinSensorKernel::range_from_codes(cfg_, adc_, range_m_, codes[0], codes[1]);
+      if (!std::isfinite(L)) return out;
+      sum += L;
+    }
+    out.detected = true;
+    out.error = sum / static_cast<double>(frames_ / per_map) - cfg_.eval.distance_m;
+    return out;
   }
 
   // The sensor kernel's frames: one kernel for all the point's trials, restarted with the trial's
@@ -133,7 +181,11 @@ class Runner : public McPointRunner {
   }
 
   TofLockinConfig cfg_;
-  bool aggregate_, fixed_pattern_ = false, direct_ = false, merged_ = false;
+  bool aggregate_;
+  long long code_tables_from_;
+  bool fixed_pattern_ = false, direct_ = false, merged_ = false, codes_ = false;
+  bool code_laws_set_ = false, code_laws_ready_ = false;
+  lk::AliasTable code_laws_[2][2];  // [ambient, LED][tap]
   std::uint64_t key_;
   lk::LockinPixelStimulus stim_;
   lk::LockinSimOptions opt_;
@@ -153,10 +205,11 @@ class Runner : public McPointRunner {
 
 }  // namespace
 
-TofLockinMc::TofLockinMc(TofLockinConfig cfg, bool aggregate) : cfg_(std::move(cfg)), aggregate_(aggregate) {}
+TofLockinMc::TofLockinMc(TofLockinConfig cfg, bool aggregate, long long code_tables_from_trial)
+    : cfg_(std::move(cfg)), aggregate_(aggregate), code_tables_from_(code_tables_from_trial) {}
 
 std::unique_ptr<McPointRunner> TofLockinMc::point(double signal_A, double background_A, std::uint64_t key) const {
-  return std::make_unique<Runner>(cfg_, aggregate_, signal_A, background_A, key);
+  return std::make_unique<Runner>(cfg_, aggregate_, code_tables_from_, signal_A, background_A, key);
 }
 
 std::unique_ptr<McModel> make_tof_lockin_mc(const ParamSet& params) {

@@ -15,7 +15,7 @@
 #include "systemc/common/poisson_sampler.h"
 #include "systemc/tof_lockin/counter_stream.h"
 #include "systemc/tof_lockin/normal_ziggurat.h"
-#include "systemc/tof_lockin/poisson_alias.h"
+#include "systemc/tof_lockin/alias_table.h"
 
 namespace rangesim::systemc::lockin {
 namespace {

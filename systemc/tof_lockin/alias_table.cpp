@@ -1,4 +1,4 @@
-#include "systemc/tof_lockin/poisson_alias.h"
+#include "systemc/tof_lockin/alias_table.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -14,15 +14,19 @@ constexpr long double kTwo64 = 18446744073709551616.0L;
 
 }  // namespace
 
-PoissonAlias::PoissonAlias(double mean) : mean_(mean) {
+double PoissonAlias::checked(double mean) {
   if (!(mean >= 0.0) || mean > kMaxMean) throw std::logic_error("PoissonAlias: mean outside 0 .. 1e8");
+  return mean;
+}
+
+PoissonWindow poisson_window(double mean) {
+  PoissonWindow w;
   if (mean == 0.0) {
-    threshold_.assign(1, ~0ULL), alias_.assign(1, 0);
-    return;
+    w.p.assign(1, 1.0);
+    return w;
   }
-  // The mode's probability from the accurate log pmf, then outwards by the exact ratios, anchored
-  // on the log pmf again every 128 steps (so rounding builds up over 128 steps at most, ~1e-14).
-  // The table is filled from the middle of a buffer wide enough for both tails (+-9.6 sigma + slack).
+  // The mode's probability from the accurate log pmf, then outwards by the exact ratios. The
+  // window is filled from the middle of a buffer wide enough for both tails (+-9.6 sigma + slack).
   const double mu = mean;
   const long long mode = static_cast<long long>(std::floor(mean));
   const std::size_t half = static_cast<std::size_t>(12.0 * std::sqrt(mu) + 64.0);
@@ -47,12 +51,16 @@ PoissonAlias::PoissonAlias(double mean) : mean_(mean) {
     p[--lo] = prev;
     if (k == 1) tail_lo = 0;
   }
-  first_ = mode - static_cast<long long>(half - lo);
-  left_out_ = tail_hi + tail_lo;
-  size_ = static_cast<std::uint32_t>(hi - lo + 1);
-  long double sum = 0;  // 64-bit mantissa: the running sum below stays within a unit
-  for (std::size_t i = lo; i <= hi; ++i) sum += p[i];
+  w.first = mode - static_cast<long long>(half - lo);
+  w.mass_left_out = tail_hi + tail_lo;
+  w.p.assign(p.begin() + static_cast<std::ptrdiff_t>(lo), p.begin() + static_cast<std::ptrdiff_t>(hi) + 1);
+  return w;
+}
 
+AliasTable::AliasTable(const std::vector<double>& pmf, long long first)
+    : first_(first), size_(static_cast<std::uint32_t>(pmf.size())) {
+  long double sum = 0;  // 64-bit mantissa: the running sum below stays within a unit
+  for (double x : pmf) sum += x;
   // Vose in integers, so nothing drifts: each bucket's share is a count of units 2^-shift of one
   // bucket, and topping up a small bucket from a large one is exact. The counts are differences
   // of the rounded cumulative sums, so they add up to exactly size x 2^shift and each is within a
@@ -66,7 +74,7 @@ PoissonAlias::PoissonAlias(double mean) : mean_(mean) {
   long double running = 0;
   std::uint64_t before = 0;
   for (std::uint32_t i = 0; i < size_; ++i) {
-    running += p[lo + i];
+    running += pmf[i];
     const std::uint64_t upto = i + 1 == size_ ? static_cast<std::uint64_t>(size_) * unit_sum
                                               : static_cast<std::uint64_t>(running * scale + 0.5L);
     q[i] = upto - before;
@@ -89,7 +97,7 @@ PoissonAlias::PoissonAlias(double mean) : mean_(mean) {
   // Exact arithmetic leaves only full buckets: kept always (threshold ~0, alias itself).
 }
 
-std::vector<long double> PoissonAlias::probabilities() const {
+std::vector<long double> AliasTable::probabilities() const {
   std::vector<long double> p(size_, 0);
   for (std::uint32_t i = 0; i < size_; ++i) {
     const long double keep = threshold_[i] == ~0ULL ? 1 : static_cast<long double>(threshold_[i]) / kTwo64;  // exact
