@@ -130,7 +130,7 @@ class LockinPixelKernel {
   double read_V_[2] = {0, 0};        // read noise of each tap's sample
   double offset_dev_e_[2] = {0, 0};  // offset charge of this frame minus its mean (its shot noise)
   pcg32 rng_;                        // the pixel's stream for this frame
-  // The merged draws' stream, kept while seed, row and column stay (its key costs three mixes).
+  // The merged draws' stream, kept while seed, row and column stay (keying it costs two mixes).
   CounterStream stream_;
   std::uint64_t stream_seed_ = 0;
   std::uint32_t stream_row_ = 0, stream_column_ = 0;
