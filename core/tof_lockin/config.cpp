@@ -48,6 +48,7 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
   c.readout.adc_full_scale_V = p.real("readout.adc_full_scale_V");
   c.readout.detection_threshold_V = p.real("readout.detection_threshold_V");
   c.readout.min_snr = p.real("readout.min_snr");
+  c.readout.max_range_noise_fraction = p.real("readout.max_range_noise_fraction");
   c.readout.cds_enabled = p.boolean("readout.cds_enabled");
   c.readout.ambient_subtraction = p.boolean("readout.ambient_subtraction");
   c.readout.offset_calibration_V = p.real("readout.offset_calibration_V");
@@ -64,6 +65,10 @@ TofLockinConfig tof_lockin_from_params(const ParamSet& p) {
   c.nonideal.offset_shot_noise = p.boolean("offset_charge.shot_noise");
   c.noise.read_noise_V = p.real("noise.read_noise_V");
   c.noise.fixed_pattern_rms_V = p.real("noise.fixed_pattern_rms_V");
+
+  c.simulation.merged_draws = p.boolean("simulation.merged_draws");
+  c.simulation.direct_trials = p.boolean("simulation.direct_trials");
+  c.simulation.code_tables = p.boolean("simulation.code_tables");
 
   c.eval.signal_min_A = p.real("evaluation.signal_min_A");
   c.eval.signal_max_A = p.real("evaluation.signal_max_A");

@@ -54,8 +54,11 @@ struct LockinReadoutConfig {
   double adc_full_scale_V = 1.5;        // LSB Delta V_ADC = full scale / 2^bits (eq. 4.9)
   double detection_threshold_V = 5e-3;  // smallest light-induced V1 + V2 accepted as a range value
   double min_snr = 3.0;                 // smallest mean / rms of the ratio's denominator accepted
-  bool cds_enabled = false;             // true: FD kTC reset noise cancelled
-  bool ambient_subtraction = true;      // true: a frame with the LED off is read and subtracted per tap
+  // Largest rms noise of one range value (one range map, delta method) as a fraction of c T0 / 2
+  // for which it counts as a range: golden's detectability and the range maps' validity.
+  double max_range_noise_fraction = 0.05;
+  bool cds_enabled = false;         // true: FD kTC reset noise cancelled
+  bool ambient_subtraction = true;  // true: a frame with the LED off is read and subtracted per tap
   double offset_calibration_V =
       0.0;                 // V_offset subtracted from each tap in eq. 2.25 after (optional) ambient subtraction
   double clock_Hz = 36e6;  // readout clock
@@ -97,6 +100,17 @@ struct LockinNonidealConfig {
   bool offset_shot_noise = true;  // the offset charge V_offset C / q on each FD is Poisson
 };
 
+// How the clock-level model draws its noise (docs/tof-lockin-clock.md, "Fidelity knobs"); both
+// switches change cost only, never the law of what is drawn.
+struct LockinSimulationConfig {
+  bool merged_draws = true;   // aggregated frames: one Poisson per tap (frame + offset charge), one
+                              // normal (kTC + read) where V_sat cannot be reached (frame_draw.h)
+  bool direct_trials = true;  // evaluate --trials: each trial's frames drawn without stepping the
+                              // frame schedule (the same draws as the kernel, bit for bit)
+  bool code_tables = true;    // evaluate --trials, from a point's 65536th trial on: each tap's ADC code
+                              // drawn from its exact law where V_sat cannot be reached (code_law.h)
+};
+
 struct TofLockinConfig {
   LockinPixelConfig pixel;
   LockinOpticsConfig optics;
@@ -106,6 +120,7 @@ struct TofLockinConfig {
   LockinNoiseConfig noise;
   LockinEvaluationConfig eval;
   LockinNonidealConfig nonideal;
+  LockinSimulationConfig simulation;
 };
 
 // Builds the config from a validated preset; throws UserError naming file and keys on cross-key

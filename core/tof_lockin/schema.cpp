@@ -59,6 +59,9 @@ const ParamSchema& tof_lockin_schema() {
           {"readout.min_snr", K::Real, "", 0, 1e6, false,
            "smallest SNR of V1 + V2 - 2 V_offset (mean over rms) for which a range is derived; below it the ratio's "
            "moments diverge"},
+          {"readout.max_range_noise_fraction", K::Real, "", 0, 1e6, true,
+           "largest rms noise of one range value (delta method, from the tap values) as a fraction of the "
+           "unambiguous range c T0 / 2 for which a range counts: golden's detectability, the range maps' validity"},
           {"readout.cds_enabled", K::Boolean, "", 0, 0, false,
            "true: FD reset level sampled and subtracted, cancelling kTC noise"},
           {"readout.ambient_subtraction", K::Boolean, "", 0, 0, false,
@@ -102,7 +105,16 @@ const ParamSchema& tof_lockin_schema() {
        multipath_specs(),
        {{"offset_charge.shot_noise", ParamKind::Boolean, "", 0, 0, false,
          "true: the offset charge on each FD (pixel.offset_voltage_V x C, deep electrons) is Poisson, drawn every "
-         "frame"}}});
+         "frame"},
+        {"simulation.merged_draws", ParamKind::Boolean, "", 0, 0, false,
+         "true: an aggregated frame draws one Poisson count per tap (frame and offset charge) and, where V_sat "
+         "cannot be reached, one normal (kTC and read noise); false: every noise term apart (same law)"},
+        {"simulation.direct_trials", ParamKind::Boolean, "", 0, 0, false,
+         "true: evaluate --trials draws each trial's frames without stepping the frame schedule (the kernel's "
+         "draws, bit for bit); false: every trial runs the sensor kernel"},
+        {"simulation.code_tables", ParamKind::Boolean, "", 0, 0, false,
+         "true: from a point's 65536th trial on, evaluate --trials (with direct_trials) draws each tap's ADC code "
+         "from its exact law where V_sat cannot be reached (same law); false: the count and the noise apart"}}});
   return schema;
 }
 

@@ -69,6 +69,8 @@ EvalResult evaluate_grid(const ParamSet& params, ProgressFn progress, EvalSink* 
   r.reasons = {{"detectable", "range can be derived"},
                {"below_threshold", "light-induced V1 + V2 below readout.detection_threshold_V (V_sig_min of eq. 4.11)"},
                {"noise_limited", "SNR of V1 + V2 below readout.min_snr: the ratio of eq. 2.25 has no usable moments"},
+               {"range_error_unbounded",
+                "rms noise of one range value above readout.max_range_noise_fraction x c T0 / 2 (delta method)"},
                {"saturated", "a tap's FD swing exceeds V_sat or its ADC input the full scale"},
                {"out_of_range", "delay 2L/c outside [0, T0]: distance beyond c T0 / 2"}};
   r.metric_names = {"std_m", "bias_m", "v1_V", "v2_V", "signal_V", "n1_e", "n2_e", "snr", "std_first_order_m"};

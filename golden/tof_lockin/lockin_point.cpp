@@ -1,5 +1,6 @@
 #include "golden/tof_lockin/lockin_point.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "golden/common/threshold.h"
@@ -19,6 +20,20 @@ double light_voltage_V(const TofLockinConfig& cfg, const FrameCharge& c) {
          volts_per_electron(cfg, 1) * (c.signal_e[1] + c.light_common_e);
 }
 
+// Below this SNR of a + b the ratio's moments are integrated (range_moments_given_range) instead of
+// expanded: there the expansion's next terms, O(SNR^-4), reach 1e-6 relative.
+constexpr double kIntegrateBelowSnr = 30;
+
+// The smallest a + b the reconstruction accepts (the kernel's rule: a + b > 0 and >=
+// detection_threshold_V, systemc/tof_lockin/sensor_kernel.h) as a continuous edge: a + b lies on
+// the lattice j lsb - 2 V_cal of the codes, so the edge is half a step below the first value taken.
+double range_threshold_V(const TofLockinConfig& cfg, double lsb) {
+  const double off = 2.0 * cfg.readout.offset_calibration_V;
+  const double j_thr = std::ceil((cfg.readout.detection_threshold_V * (1.0 - 1e-9) + off) / lsb);
+  const double j_pos = std::floor(off / lsb) + 1.0;
+  return std::max(j_thr, j_pos) * lsb - off - lsb / 2.0;
+}
+
 }  // namespace
 
 const char* to_string(LockinDetect d) {
@@ -26,6 +41,7 @@ const char* to_string(LockinDetect d) {
     case LockinDetect::Detectable: return "detectable";
     case LockinDetect::BelowThreshold: return "below_threshold";
     case LockinDetect::NoiseLimited: return "noise_limited";
+    case LockinDetect::RangeErrorUnbounded: return "range_error_unbounded";
     case LockinDetect::Saturated: return "saturated";
     case LockinDetect::OutOfRange: return "out_of_range";
   }
@@ -86,7 +102,9 @@ LockinPoint evaluate_point(const TofLockinConfig& cfg, double signal_A, double b
     return pt;
   }
   const double K = max_range_m(cfg.source);
-  const RangeMoments m = range_moments(K, mu[0], var[0], mu[1], var[1]);
+  RangeMoments m = range_moments(K, mu[0], var[0], mu[1], var[1]);
+  if (m.snr < kIntegrateBelowSnr)
+    m = range_moments_given_range(K, mu[0], var[0], mu[1], var[1], range_threshold_V(cfg, lsb));
   pt.mean_m = m.mean_m;
   pt.bias_m = m.mean_m - distance_m;
   pt.std_m = std::sqrt(m.var_m2);
@@ -94,6 +112,12 @@ LockinPoint evaluate_point(const TofLockinConfig& cfg, double signal_A, double b
   pt.snr = m.snr;
   if (m.snr < cfg.readout.min_snr) {
     pt.detect = LockinDetect::NoiseLimited;
+    return pt;
+  }
+  // The criterion a range map's pixel applies to its own taps (validity.h): one range value's rms
+  // noise, to first order, against a fraction of the unambiguous range.
+  if (pt.std_first_m > cfg.readout.max_range_noise_fraction * K) {
+    pt.detect = LockinDetect::RangeErrorUnbounded;
     return pt;
   }
   // The chip's fixed pattern (golden/tof_lockin/nonideal.h): the same every frame, so not divided by N_p.

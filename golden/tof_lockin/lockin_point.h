@@ -13,9 +13,17 @@
 //   noise_limited    the SNR of the ratio's denominator (mean of V1 + V2 - 2 V_cal over its rms)
 //                    is below readout.min_snr: the denominator reaches 0 in some frames, the
 //                    ratio has no usable moments and the delta method no meaning
+//   range_error_unbounded
+//                    the rms noise of one range value (one range map, first-order delta method,
+//                    std_first_m) exceeds readout.max_range_noise_fraction x c T0 / 2: a range
+//                    is derived but says little; the same criterion a range map's pixel applies
+//                    to its own measured taps (validity.h)
 //   detectable       otherwise
 // Range error (rms over frames and, for fixed-pattern noise, over pixels), N_p frames averaged:
 //   accuracy = sqrt(bias^2 + fpn_m^2 + Var_1frame / N_p)
+// Mean and variance of one range value by the second-order delta method, or where the SNR of the
+// denominator is below 30 integrated exactly for Gaussian taps over the frames that give a range
+// (range_estimate.h: the moments a Monte Carlo of the kernels measures).
 // bias = E[L] - L_true collects the deterministic parts: quantisation (truncating ADC), offset
 // mis-calibration (V_cal != remaining offset), deep electrons / PHASE3 leakage (common-mode light
 // charge compresses the ratio towards 1/2), the pulse's rise time and the ratio's second-order
@@ -26,7 +34,7 @@
 
 namespace rangesim::golden {
 
-enum class LockinDetect { Detectable, BelowThreshold, NoiseLimited, Saturated, OutOfRange };
+enum class LockinDetect { Detectable, BelowThreshold, NoiseLimited, RangeErrorUnbounded, Saturated, OutOfRange };
 const char* to_string(LockinDetect d);
 
 struct LockinPoint {
@@ -39,7 +47,7 @@ struct LockinPoint {
   double mean_m = 0;          // E[L]
   double bias_m = 0;          // E[L] - distance
   double std_m = 0;           // rms noise of one frame
-  double std_first_m = 0;     // first-order part of std_m
+  double std_first_m = 0;     // first-order part of std_m (the detectability criterion's noise)
   double fpn_m = 0;           // rms over pixels of the chip's fixed pattern (golden/tof_lockin/nonideal.h)
   double accuracy_m = 0;      // sqrt(bias^2 + fpn^2 + std^2 / N_p)
   double snr = 0;             // SNR of the ratio's denominator (validity of the delta method)

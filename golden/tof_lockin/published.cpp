@@ -104,11 +104,13 @@ std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet& params
       {id, "table51_signal_dB", "signal light range 43.5 dB (Table 5.1 [12], thesis 4.1.3)", 43.5, "dB",
        ev.signal_range.range_dB, 0.01,
        fmt::format(
-           "not reproduced (-1.3 dB): detectable {:.4g}-{:.3g} A at background {:.3g} A. The upper edge is the "
-           "grid's 1.5 nA (no tap saturates there); the lower edge is readout.min_snr = 3 of V1 + V2 against the "
-           "kTC + read noise of two frames (~120 e-), just above the 5 mV threshold that Table 4.1's 0.01 nA gives. "
-           "Without the SNR rule (min_snr = 0) it is 43.52 dB, the thesis's noise-free 0.01-1.5 nA",
-           ev.signal_range.lo, ev.signal_range.hi, ev.signal_range.at)});
+           "not reproduced (-14.1 dB): detectable {:.4g}-{:.3g} A at background {:.3g} A. The upper edge is the "
+           "grid's 1.5 nA (no tap saturates there); the lower edge is where one range value's rms noise reaches "
+           "readout.max_range_noise_fraction x c T0 / 2 = {:.3g} m (SNR ~13 of V1 + V2 at 1 m). With that bound off "
+           "the SNR-3 rule (readout.min_snr) gives 42.21 dB (0.0116 nA, metres of range noise), and with neither it "
+           "is 43.52 dB, the thesis's noise-free 0.01-1.5 nA",
+           ev.signal_range.lo, ev.signal_range.hi, ev.signal_range.at,
+           cfg.readout.max_range_noise_fraction * max_range_m(cfg.source))});
   f.push_back(
       {id, "table51_background_dB", "background light range 83.5 dB (Table 5.1 [12], thesis 4.1.3)", 83.5, "dB",
        ev.background_range.range_dB, 0.01,
@@ -138,8 +140,9 @@ std::vector<PublishedFigure> published_figures_tof_lockin(const ParamSet& params
   f.push_back(
       {id, "table51_accuracy_worst", "range accuracy 40.7 mm, worst over the grid (Table 5.1 [12] 'min')", 0.0407, "m",
        ev.accuracy_max_m, 0.25,
-       "not reproduced: at the lower signal edge (SNR 3 of V1 + V2, ~360 e-) the range noise is metres; 40.7 mm is "
-       "pure shot noise of 0.135 V at 1 m, a level the thesis does not name"});
+       "not reproduced: at the lower signal edge the range noise is the bound readout.max_range_noise_fraction x "
+       "c T0 / 2 (0.75 m; under the SNR-3 rule alone it was 4.19 m); 40.7 mm is pure shot noise of 0.135 V at 1 m, "
+       "a level the thesis does not name"});
 
   // Frame rate: one readout of the array after the accumulation (core test pins the schedule).
   const double frame_s =

@@ -30,6 +30,20 @@ struct RangeMoments {
 // K_m = c T0 / 2; a, b: mean and variance of V1 - V_cal and V2 - V_cal. Requires mu_a + mu_b > 0.
 RangeMoments range_moments(double K_m, double mu_a, double var_a, double mu_b, double var_b);
 
+// The same moments without the expansion, for Gaussian a and b, given that the reconstruction
+// gives a range at all: s = a + b >= s_min (> 0; the detection threshold). E[L | s] and E[L^2 | s]
+// are closed forms (b given s is Gaussian: mean mu_b + (v_b / v_s)(s - mu_s), variance
+// v_a v_b / v_s), so the moments are one-dimensional integrals over s, done by Gauss-Legendre
+// quadrature to ~1e-10. Where the delta method fails (SNR of s below ~30: 1 / SNR^2 terms of
+// percents, and the threshold cutting the tail of s) these are the moments a Monte Carlo of
+// the kernels measures over its detected frames. var_first_m2 and snr as range_moments; p_range
+// is P(s >= s_min).
+struct ConditionalRangeMoments : RangeMoments {
+  double p_range = 1;
+};
+ConditionalRangeMoments range_moments_given_range(double K_m, double mu_a, double var_a, double mu_b, double var_b,
+                                                  double s_min);
+
 // Rms range spread over pixels from a pixel-to-pixel offset of rms `fpn_V` on each tap (fixed
 // pattern, not cancelled without the ambient frame): K sqrt(f_a^2 + f_b^2) fpn.
 double fixed_pattern_range_rms_m(double K_m, double mu_a, double mu_b, double fpn_V);

@@ -24,8 +24,9 @@ const ThesisColumn& tof_lockin_table_column() {
         "numbers fit only its own value"},
        {"adc_tdc", "a 1-bit ADC cannot form the ratio of eq. 4.9; the converter is assumed 12-bit"},
        {"signal_light",
-        "the SNR >= 3 rule (readout.min_snr) lifts the lower edge; with min_snr = 0 it is 43.52 dB, the thesis's "
-        "noise-free 0.01-1.5 nA"},
+        "the range-noise bound (readout.max_range_noise_fraction: one range value's rms noise at most 5 % of c T0 / 2) "
+        "lifts the lower edge to 0.051 nA; the SNR >= 3 rule alone gives 42.2 dB, and with neither it is 43.52 dB, "
+        "the thesis's noise-free 0.01-1.5 nA"},
        {"background_light",
         "lower edge is the grid, upper edge is tap saturation at 10 fF; 83.5 dB = 20 log(15 nA / 1 pA) fits 40 fF "
         "(Table 5.1), not Table 4.1's 10 fF"},
@@ -33,7 +34,8 @@ const ThesisColumn& tof_lockin_table_column() {
        {"sbr_min", "eq. 4.11: weakest detectable signal under the strongest unsaturated background"},
        {"accuracy_max",
         "the thesis's 'max' (12.6 mm) is smaller than its 'min' (40.7 mm): the two are swapped. Our worst is at the "
-        "SNR-3 signal edge (metres); 40.7 mm is pure shot noise at 0.135 V, a level the thesis does not name"},
+        "range-noise bound (0.76 m, 5 % of c T0 / 2); 40.7 mm is pure shot noise at 0.135 V, a level the thesis does "
+        "not name"},
        {"accuracy_min",
         "ours includes kTC and read noise and the ambient frame; 12.6 mm is pure signal shot noise at 1.4 V, 1 m, "
         "10 fF, which rangesim gives as 12.65 mm"}}};

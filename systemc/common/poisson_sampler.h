@@ -34,7 +34,9 @@ class PoissonSampler {
 
   double mean() const { return mu_; }
 
-  long long operator()(pcg32& rng) const {
+  // Any stream with a uniform_open01(rng) overload (pcg32 here; the tof-lockin counter-based stream).
+  template <class Rng>
+  long long operator()(Rng& rng) const {
     if (mu_ <= 0) return 0;
     if (mu_ < kInversionBelow) {
       const double u = uniform_open01(rng);

@@ -20,11 +20,8 @@ namespace rangesim::systemc::lockin {
 
 ColumnAdcKernel::ColumnAdcKernel(const TofLockinConfig& cfg)
     : lsb_(cfg.readout.adc_full_scale_V / std::ldexp(1.0, cfg.readout.adc_bits)),
+      top_(static_cast<double>((1LL << cfg.readout.adc_bits) - 1)),
       codes_(1LL << cfg.readout.adc_bits),
       conv_(cfg.readout.adc_conversion_cycles) {}
-
-long long ColumnAdcKernel::code(double v) const {
-  return static_cast<long long>(std::clamp(std::floor(v / lsb_), 0.0, static_cast<double>(codes_ - 1)));
-}
 
 }  // namespace rangesim::systemc::lockin

@@ -8,7 +8,11 @@ namespace rangesim::systemc::lockin {
 class ColumnAdcKernel {
  public:
   explicit ColumnAdcKernel(const TofLockinConfig& cfg);
-  long long code(double v) const;  // floor(v / LSB) clipped to 0 .. 2^bits - 1
+  // floor(v / LSB) clipped to 0 .. 2^bits - 1 (the clip first, so the truncation is the floor).
+  long long code(double v) const {
+    const double q = v / lsb_;
+    return q >= top_ ? codes_ - 1 : q < 1.0 ? 0 : static_cast<long long>(q);
+  }
   double value_V(long long c) const { return static_cast<double>(c) * lsb_; }
   double lsb_V() const { return lsb_; }
   long long top_code() const { return codes_ - 1; }
@@ -16,6 +20,7 @@ class ColumnAdcKernel {
 
  private:
   double lsb_;       // full scale / 2^bits
+  double top_;       // 2^bits - 1
   long long codes_;  // 2^bits
   long long conv_;   // cycles of one conversion
 };

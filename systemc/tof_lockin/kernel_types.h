@@ -20,6 +20,8 @@ enum class LockinPhase : int { Idle = 0, Phase1 = 1, Phase2 = 2, Phase3 = 3, Adc
 const char* phase_name(LockinPhase p);
 inline constexpr int kPhaseCount = 5;  // Phase1 .. Output
 
+enum class PoissonTables { Never, WhenTheyPay, Always };
+
 // Fidelity knobs.
 struct LockinSimOptions {
   bool noise = true;           // shot, kTC, read noise on (dark charge is always present
@@ -28,6 +30,10 @@ struct LockinSimOptions {
   bool aggregate = false;      // with event_skipping: one event per accumulation phase (N_acc
                                // identical periods summed; Poisson of the total mean, exact)
   std::uint64_t seed = 1;      // key of the noise streams
+  // Merged draws of aggregated frames (config simulation.merged_draws): counts of a mean from its
+  // alias table where the kernel draws that mean often enough to pay for the table (frame_draw.h),
+  // else by PTRS; or always (a Monte Carlo point's trials), or never.
+  PoissonTables poisson_tables = PoissonTables::WhenTheyPay;
   // 0: pulse/gate overlaps in closed form (exact). > 0: the pulse shape integrated numerically
   // at this step (golden::pulse_area_between_s): error falls and cost rises as it shrinks.
   double time_step_s = 0;

@@ -54,6 +54,15 @@ double LockinPixelKernel::frame_generated_e(const TofLockinConfig& cfg, const Lo
   return e / q;
 }
 
+LockinPixelKernel::Readout LockinPixelKernel::Readout::of(const TofLockinConfig& cfg) {
+  Readout r;
+  r.a_sf = cfg.pixel.source_follower_gain;
+  for (int k = 0; k < 2; ++k) r.volts_per_e[k] = golden::volts_per_electron(cfg, k);
+  r.offset_V = cfg.pixel.offset_voltage_V;
+  r.sat_V = cfg.pixel.saturation_voltage_V;
+  return r;
+}
+
 LockinPixelKernel::ResetNoise LockinPixelKernel::ResetNoise::of(const TofLockinConfig& cfg) {
   ResetNoise n;
   for (int k = 0; k < 2; ++k) n.ktc_fd_V[k] = golden::ktc_noise_V(cfg, k) / cfg.pixel.source_follower_gain;
@@ -66,11 +75,10 @@ LockinPixelKernel::ResetNoise LockinPixelKernel::ResetNoise::of(const TofLockinC
 }
 
 void LockinPixelKernel::reset(const ResetNoise& n, const LockinSimOptions& o, std::uint64_t frame, std::uint32_t row,
-                              std::uint32_t column) {
-  fd_e_[0] = fd_e_[1] = 0, pg_e_ = 0;
-  ktc_V_[0] = ktc_V_[1] = read_V_[0] = read_V_[1] = 0;
-  offset_dev_e_[0] = offset_dev_e_[1] = 0;
+                              std::uint32_t column, bool merged) {
+  clear();
   if (!o.noise) return;
+  if (merged) return place_stream(o.seed, frame, row, column);
   rng_ = pixel_stream(pixel_stream_key(o.seed, frame, row, column));
   // Draw order: the pair (kTC FD1, kTC FD2), the pair (read FD1, read FD2)
   // (always consumed), then the Poisson counts.

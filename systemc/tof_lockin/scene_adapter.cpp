@@ -17,7 +17,8 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& scene_in, const TofLoc
   };
   const bool native_step = scene_in.shape != TargetShape::Step ||
                            (!scene_in.has("target.step_y_m") && !scene_in.has("target.step_distance_m"));
-  const bool rasterise = scene_in.shape == TargetShape::Tilted || scene_in.shape == TargetShape::Objects || !native_step;
+  const bool rasterise =
+      scene_in.shape == TargetShape::Tilted || scene_in.shape == TargetShape::Objects || !native_step;
   const Scene s = rasterise ? rasterised(scene_in, need_radiometry()) : scene_in;
   LockinScene l;
   l.notes = s.notes;
@@ -44,9 +45,10 @@ systemc::lockin::LockinScene to_lockin_scene(const Scene& scene_in, const TofLoc
     }
     if (!s.has("light.background_photocurrent_A")) l.background_photocurrent_A = n.background;
     if (s.light.beam == BeamShape::Spot)
-      l.notes.push_back(fmt::format("{}: source.beam = \"spot\": tof-lockin's scene lights every pixel; each gets the "
-                                    "spot's irradiance",
-                                    s.file));
+      l.notes.push_back(
+          fmt::format("{}: source.beam = \"spot\": tof-lockin's scene lights every pixel; each gets the "
+                      "spot's irradiance",
+                      s.file));
   }
   // The window is never clamped to the array: a scene asking for more than the preset's pixels is
   // refused, as tof-spad's is.

@@ -30,7 +30,9 @@ TofLockinSensorKernel::TofLockinSensorKernel(const TofLockinConfig& cfg, const L
       frames_(frames),
       gates_(cfg),
       adc_(cfg),
-      reset_noise_(LockinPixelKernel::ResetNoise::of(cfg)) {
+      reset_noise_(LockinPixelKernel::ResetNoise::of(cfg)),
+      readout_(LockinPixelKernel::Readout::of(cfg)),
+      merged_(cfg.simulation.merged_draws && opt.noise && opt.event_skipping && opt.aggregate) {
   assert(rows_ >= 0 && rows_ <= cfg.pixel.rows && cols_ >= 0 && cols_ <= cfg.pixel.columns);
   assert(stim_.size() == static_cast<std::size_t>(rows_) * cols_);
   assert(frames_ >= 0);
@@ -67,7 +69,7 @@ void TofLockinSensorKernel::begin_frame() {
     for (int c = 0; c < cols_; ++c)
       pixels_[static_cast<std::size_t>(r) * cols_ + c].reset(reset_noise_, opt_, static_cast<std::uint64_t>(frame_),
                                                              static_cast<std::uint32_t>(r),
-                                                             static_cast<std::uint32_t>(c));
+                                                             static_cast<std::uint32_t>(c), merged_);
   gates_.start();
   phase_ = gates_.phase();
   row_ = 0, in_phase_ = 0;
@@ -79,10 +81,37 @@ void TofLockinSensorKernel::convert_row(int r) {
     const std::size_t p = static_cast<std::size_t>(r) * cols_ + c;
     for (int k = 0; k < 2; ++k) {
       const std::size_t i = (static_cast<std::size_t>(frame_) * stim_.size() + p) * 2 + k;
-      inputs_[i] = pixels_[p].adc_input_V(cfg_, k);
+      inputs_[i] = pixels_[p].adc_input_V(readout_, k);
       codes_[i] = adc_.code(inputs_[i]);
     }
   }
+}
+
+std::vector<double> TofLockinSensorKernel::aggregated_frame_means(const TofLockinConfig& cfg,
+                                                                  const LockinSimOptions& opt,
+                                                                  const LockinGateGeneratorKernel& gates,
+                                                                  const std::vector<LockinPixelStimulus>& stim,
+                                                                  bool on) {
+  const double fg = cfg.gates.clock_Hz;
+  const long long n = gates.accumulations();
+  const double leak = (1.0 - cfg.pixel.drain_efficiency) / 2.0;
+  const double period_s = static_cast<double>(gates.period_cycles()) / fg;
+  const double dark_per_A = static_cast<double>(n) * period_s / phys::kElementaryCharge_C;
+  double t[3][2];
+  for (int w = 0; w < 3; ++w)
+    t[w][0] = static_cast<double>(gates.window_open(w)) / fg, t[w][1] = static_cast<double>(gates.window_close(w)) / fg;
+  std::vector<double> mean(2 * stim.size());
+  for (std::size_t p = 0; p < stim.size(); ++p) {
+    double g[3];
+    for (int w = 0; w < 3; ++w)
+      g[w] = LockinPixelKernel::frame_generated_e(cfg, stim[p], on, t[w][0], t[w][1], n, opt.time_step_s);
+    // The pixel's fixed pattern: each tap's gain on its photo charge, its own dark current.
+    const LockinPixelStimulus& sp = stim[p];
+    for (int k = 0; k < 2; ++k)
+      mean[2 * p + k] =
+          sp.tap_gain[k] * (g[k] + leak * g[2]) + (cfg.noise.dark_current_A + sp.dark_extra_A[k]) * dark_per_A;
+  }
+  return mean;
 }
 
 bool TofLockinSensorKernel::step() {
@@ -98,28 +127,22 @@ bool TofLockinSensorKernel::step() {
       // over the frame, Poisson of the total (a sum of independent Poisson
       // counts). Periods differ only by the tail of the previous pulse.
       const long long n = gates_.accumulations();
-      std::vector<double>& mean = frame_mean_e_[on ? 1 : 0];
-      if (mean.empty()) {
-        const double leak = (1.0 - cfg_.pixel.drain_efficiency) / 2.0;
-        const double period_s = static_cast<double>(gates_.period_cycles()) / fg;
-        const double dark_per_A = static_cast<double>(n) * period_s / phys::kElementaryCharge_C;
-        double t[3][2];
-        for (int w = 0; w < 3; ++w)
-          t[w][0] = static_cast<double>(gates_.window_open(w)) / fg,
-          t[w][1] = static_cast<double>(gates_.window_close(w)) / fg;
-        mean.resize(2 * pixels_.size());
-        for (std::size_t p = 0; p < pixels_.size(); ++p) {
-          double g[3];
-          for (int w = 0; w < 3; ++w)
-            g[w] = LockinPixelKernel::frame_generated_e(cfg_, stim_[p], on, t[w][0], t[w][1], n, opt_.time_step_s);
-          // The pixel's fixed pattern: each tap's gain on its photo charge, its own dark current.
-          const LockinPixelStimulus& sp = stim_[p];
-          for (int k = 0; k < 2; ++k)
-            mean[2 * p + k] =
-                sp.tap_gain[k] * (g[k] + leak * g[2]) + (cfg_.noise.dark_current_A + sp.dark_extra_A[k]) * dark_per_A;
+      const int kind = on ? 1 : 0;
+      if (frame_mean_e_[kind].empty()) {
+        frame_mean_e_[kind] = aggregated_frame_means(cfg_, opt_, gates_, stim_, on);
+        if (merged_) {
+          // Frames of this kind over the run: LED and ambient frames alternate with ambient subtraction.
+          const long long led = cfg_.readout.ambient_subtraction ? (frames_ + 1) / 2 : frames_;
+          laws_[kind].build(cfg_, frame_mean_e_[kind], reset_noise_.offset_e, opt_.poisson_tables,
+                            on ? led : frames_ - led);
         }
       }
-      for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate(opt_, &mean[2 * p]);
+      if (merged_) {
+        for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate_merged(laws_[kind].pixel(p));
+      } else {
+        const std::vector<double>& mean = frame_mean_e_[kind];
+        for (std::size_t p = 0; p < pixels_.size(); ++p) pixels_[p].aggregate(opt_, &mean[2 * p]);
+      }
       rec.cycles[0] += n * gates_.t0_cycles();
       rec.cycles[1] += n * gates_.t0_cycles();
       rec.cycles[2] += n * (gates_.period_cycles() - 2 * gates_.t0_cycles());
@@ -187,26 +210,34 @@ void TofLockinSensorKernel::tap_values(long long m, int r, int c, double* a, dou
   *a = v[0], *b = v[1];
 }
 
-double TofLockinSensorKernel::snr(long long m, int r, int c) const {
+golden::MeasuredTaps TofLockinSensorKernel::measured_taps(long long m, int r, int c) const {
   const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
   golden::MeasuredTaps t;
   for (int k = 0; k < 2; ++k) {
     t.led_V[k] = adc_.value_V(code(f, r, c, k));
     if (cfg_.readout.ambient_subtraction) t.ambient_V[k] = adc_.value_V(code(f + 1, r, c, k));
   }
-  return golden::measured_snr(cfg_, t);
+  return t;
+}
+
+double TofLockinSensorKernel::snr(long long m, int r, int c) const {
+  return golden::measured_snr(cfg_, measured_taps(m, r, c));
+}
+
+double TofLockinSensorKernel::range_noise_m(long long m, int r, int c) const {
+  return golden::measured_range_noise_m(cfg_, measured_taps(m, r, c));
+}
+
+bool TofLockinSensorKernel::range_valid(long long m, int r, int c) const {
+  return std::isfinite(range_m(m, r, c)) && golden::measured_range_valid(cfg_, measured_taps(m, r, c));
 }
 
 double TofLockinSensorKernel::range_m(long long m, int r, int c) const {
   const long long f = cfg_.readout.ambient_subtraction ? 2 * m : m;
-  if (code(f, r, c, 0) == adc_.top_code() || code(f, r, c, 1) == adc_.top_code())
-    return std::numeric_limits<double>::quiet_NaN();  // saturated (clipped code)
-  double a, b;
-  tap_values(m, r, c, &a, &b);
-  const double s = a + b;
-  if (!(s > 0.0) || s < cfg_.readout.detection_threshold_V * (1.0 - 1e-9))
-    return std::numeric_limits<double>::quiet_NaN();
-  return golden::max_range_m(cfg_.source) * b / s;
+  const long long led[2] = {code(f, r, c, 0), code(f, r, c, 1)};
+  long long ambient[2] = {0, 0};
+  if (cfg_.readout.ambient_subtraction) ambient[0] = code(f + 1, r, c, 0), ambient[1] = code(f + 1, r, c, 1);
+  return range_from_codes(cfg_, adc_, led, ambient);
 }
 
 }  // namespace rangesim::systemc::lockin

@@ -14,6 +14,7 @@
 #include "golden/common/frame_timing.h"
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_lockin/model.h"
+#include "golden/tof_lockin/pulse_timing.h"
 #include "scene/scene.h"
 #include "systemc/tof_lockin/lockin_scene.h"
 #include "systemc/tof_lockin/scene_adapter.h"
@@ -104,8 +105,10 @@ ModelRun run_model(const SimulationRequest& req, const TofLockinConfig& cfg, con
 }
 
 // The range map averaged over the range maps run, and every value's error against the scene. A
-// value counts where the kernel gives one (above readout.detection_threshold_V, not clipped) and
-// the SNR of its a + b, from its own taps, reaches readout.min_snr (golden/tof_lockin/validity.h).
+// value counts where the kernel gives one (above readout.detection_threshold_V, not clipped), the
+// SNR of its a + b, from its own taps, reaches readout.min_snr and its rms noise from those taps
+// is at most readout.max_range_noise_fraction x c T0 / 2 (golden/tof_lockin/validity.h): golden's
+// detectability, so a uniform scene's map is valid where evaluate calls the point detectable.
 struct Reconstruction {
   RangeMap map;
   long long visible = 0, detected = 0, missed = 0;
@@ -114,7 +117,7 @@ struct Reconstruction {
 
 Reconstruction reconstruct(const lk::TofLockinSensorKernel& k, const lk::LockinScene& sc, int R, int C) {
   Reconstruction out;
-  const double min_snr = k.config().readout.min_snr;
+  const TofLockinConfig& cfg = k.config();
   out.map.range_m.assign(static_cast<std::size_t>(R), std::vector<double>(static_cast<std::size_t>(C), NAN));
   out.map.truth_m = out.map.range_m;
   out.map.confidence = out.map.range_m;
@@ -127,9 +130,9 @@ Reconstruction reconstruct(const lk::TofLockinSensorKernel& k, const lk::LockinS
       double acc = 0, snr_sum = 0;
       int n = 0;
       for (long long m = 0; m < k.range_maps(); ++m) {
-        const double L = k.range_m(m, r, c), snr = k.snr(m, r, c);
-        ++out.visible, snr_sum += snr;
-        if (!std::isfinite(L) || snr < min_snr) {
+        const double L = k.range_m(m, r, c);
+        ++out.visible, snr_sum += k.snr(m, r, c);
+        if (!k.range_valid(m, r, c)) {
           ++out.missed;
           continue;
         }
@@ -141,9 +144,10 @@ Reconstruction reconstruct(const lk::TofLockinSensorKernel& k, const lk::LockinS
     }
   out.map.confidence_label = "SNR of V1 + V2 from the pixel's own taps, mean over range maps";
   out.map.validity_rule = fmt::format(
-      "valid where V1 + V2 >= readout.detection_threshold_V = {:g} V, no tap clipped, and its SNR >= readout.min_snr = "
-      "{:g}",
-      k.config().readout.detection_threshold_V, min_snr);
+      "valid where V1 + V2 >= readout.detection_threshold_V = {:g} V, no tap clipped, its SNR >= readout.min_snr = "
+      "{:g} and the range's rms noise from its own taps <= readout.max_range_noise_fraction = {:g} x c T0 / 2 = {:g} m",
+      cfg.readout.detection_threshold_V, cfg.readout.min_snr, cfg.readout.max_range_noise_fraction,
+      cfg.readout.max_range_noise_fraction * golden::max_range_m(cfg.source));
   return out;
 }
 

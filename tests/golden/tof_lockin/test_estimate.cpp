@@ -71,6 +71,32 @@ TEST(LockinPoint, DetectReasons) {
   EXPECT_EQ(evaluate_point(c, 1.05e-11, 1e-14, 1.0, 1).detect, LockinDetect::NoiseLimited);
   EXPECT_EQ(evaluate_point(c, 1e-9, 1e-12, 1.0, 1).detect, LockinDetect::Detectable);
   EXPECT_STREQ(to_string(LockinDetect::NoiseLimited), "noise_limited");
+  // SNR 3-13 at 1 m: a range, but with more noise than the bound (5 % of c T0 / 2 = 0.75 m).
+  EXPECT_EQ(evaluate_point(c, 3e-11, 1e-14, 1.0, 1).detect, LockinDetect::RangeErrorUnbounded);
+  EXPECT_STREQ(to_string(LockinDetect::RangeErrorUnbounded), "range_error_unbounded");
+}
+
+// The verdict on both sides of the range-noise bound: the signal where one range value's rms noise
+// (first order) is readout.max_range_noise_fraction x c T0 / 2, found by bisection; 1e-6 above it
+// the point is detectable, 1e-6 below it range_error_unbounded. The bound follows the key.
+TEST(LockinPoint, RangeNoiseBoundOnBothSides) {
+  for (double fraction : {0.05, 0.02}) {
+    TofLockinConfig c = lockin_config();
+    c.readout.max_range_noise_fraction = fraction;
+    const double bound_m = fraction * max_range_m(c.source);
+    double lo = 1.05e-11, hi = 1.5e-9;  // noise above the bound at lo, below at hi
+    ASSERT_GT(evaluate_point(c, lo, 1e-12, 3.0, 1).std_first_m, bound_m);
+    for (int i = 0; i < 100; ++i) {
+      const double mid = std::sqrt(lo * hi);
+      (evaluate_point(c, mid, 1e-12, 3.0, 1).std_first_m > bound_m ? lo : hi) = mid;
+    }
+    const LockinPoint above = evaluate_point(c, hi * (1 + 1e-6), 1e-12, 3.0, 1);
+    const LockinPoint below = evaluate_point(c, hi * (1 - 1e-6), 1e-12, 3.0, 1);
+    EXPECT_EQ(above.detect, LockinDetect::Detectable) << fraction;
+    EXPECT_EQ(below.detect, LockinDetect::RangeErrorUnbounded) << fraction;
+    EXPECT_NEAR(above.std_first_m / bound_m, 1.0, 1e-4);
+    EXPECT_GT(below.snr, c.readout.min_snr);  // not the SNR rule
+  }
 }
 
 TEST(LockinPoint, AveragingDividesOnlyTheVariance) {

@@ -7,6 +7,7 @@
 
 #include "golden/common/evaluate_sensor.h"
 #include "golden/tof_lockin/lockin_point.h"
+#include "golden/tof_lockin/pulse_timing.h"
 #include "golden/tof_lockin/tap_charge.h"
 #include "lockin_test_util.h"
 #include "golden/tof_lockin/model.h"
@@ -37,7 +38,7 @@ TEST(LockinEvaluation, AxesReasonsAndMetrics) {
   EXPECT_EQ(r.background.unit, "A");
   EXPECT_DOUBLE_EQ(r.signal.values.front(), 1e-11);
   EXPECT_DOUBLE_EQ(r.signal.values.back(), 1.5e-9);
-  ASSERT_EQ(r.reasons.size(), 5u);
+  ASSERT_EQ(r.reasons.size(), 6u);
   EXPECT_EQ(r.reasons.front().first, "detectable");
   for (const auto& p : r.points) {
     bool known = false;
@@ -71,15 +72,17 @@ TEST(LockinEvaluation, DetectableSetIsAnIntervalAlongEachAxis) {
 TEST(LockinEvaluation, RangeEdgesAreExact) {
   const EvalResult& r = result();
   const TofLockinConfig cfg = test::lockin_config();
-  // Signal range at 10 fA background: from SNR = min_snr (noise, not the 5 mV threshold) to the grid top.
+  // Signal range at 10 fA background: from one range value's noise = 5 % of c T0 / 2
+  // (readout.max_range_noise_fraction; not the 5 mV threshold nor SNR 3) to the grid top.
   const EvalRange& s = r.signal_range;
   EXPECT_FALSE(s.lo_limited_by_grid);
   EXPECT_TRUE(s.hi_limited_by_grid);
   const LockinPoint lo = evaluate_point(cfg, s.lo, s.at, 1.0, 1);
   EXPECT_EQ(lo.detect, LockinDetect::Detectable);
-  EXPECT_NEAR(lo.snr, cfg.readout.min_snr, 1e-9);
-  EXPECT_EQ(evaluate_point(cfg, s.lo * (1 - 1e-9), s.at, 1.0, 1).detect, LockinDetect::NoiseLimited);
-  EXPECT_NEAR(s.range_dB, 42.21, 0.01);
+  EXPECT_NEAR(lo.std_first_m, cfg.readout.max_range_noise_fraction * max_range_m(cfg.source), 1e-9);
+  EXPECT_EQ(evaluate_point(cfg, s.lo * (1 - 1e-9), s.at, 1.0, 1).detect, LockinDetect::RangeErrorUnbounded);
+  EXPECT_NEAR(s.lo, 5.105e-11, 0.001e-11);
+  EXPECT_NEAR(s.range_dB, 29.36, 0.01);
   // Background range at 1.5 nA: from the grid's 10 fA to saturation of FD1.
   const EvalRange& b = r.background_range;
   EXPECT_TRUE(b.lo_limited_by_grid);
@@ -94,12 +97,13 @@ TEST(LockinEvaluation, SbrBothWaysAndAccuracySummary) {
   const EvalResult& r = result();
   // Ratio style (eq. 3.23 / 4.11) goes negative: signal below background is still detectable.
   EXPECT_NEAR(r.sbr_ratio_max_dB, 20 * std::log10(1.5e-9 / 1e-14), 1e-9);
-  EXPECT_NEAR(r.sbr_ratio_min_dB, -33.17, 0.01);
+  EXPECT_NEAR(r.sbr_ratio_min_dB, -19.32, 0.01);
   EXPECT_NEAR(r.sbr_max_dB, 103.52, 0.01);
-  EXPECT_NEAR(r.sbr_min_dB, 0.189, 0.001);
+  EXPECT_NEAR(r.sbr_min_dB, 0.892, 0.001);
   EXPECT_NEAR(r.accuracy_min_m, 0.0306, 0.0001);  // 0.75 V at 1 m, lowest background
-  EXPECT_NEAR(r.accuracy_max_m, 4.19, 0.01);      // at SNR 3 of the denominator
-  EXPECT_EQ(r.points_detectable, 4434);
+  // At the range-noise bound (0.75 m of noise) with the bias of the low-SNR ratio.
+  EXPECT_NEAR(r.accuracy_max_m, 0.757, 0.001);
+  EXPECT_EQ(r.points_detectable, 3008);
 }
 
 TEST(LockinEvaluation, SweepsOfThesisFigures) {

@@ -9,6 +9,7 @@
 
 #include "golden/tof_lockin/lockin_point.h"
 #include "golden/tof_lockin/pulse_timing.h"
+#include "golden/tof_lockin/range_estimate.h"
 #include "golden/tof_lockin/tap_charge.h"
 #include "lockin_test_util.h"
 
@@ -20,7 +21,10 @@ struct McResult {
   double mean = 0, var = 0, se_mean = 0, se_var = 0;
 };
 
-McResult monte_carlo(const TofLockinConfig& cfg, double is, double ib, double L, int frames, unsigned seed) {
+// Frames that give no range (the kernel's rule: a + b > 0 and >= detection_threshold_V) are left
+// out when `only_ranges`, as a range map or a Monte Carlo of the kernels does; `kept` counts the rest.
+McResult monte_carlo(const TofLockinConfig& cfg, double is, double ib, double L, int frames, unsigned seed,
+                     bool only_ranges = false, int* kept = nullptr) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   const FrameCharge c = frame_charge(cfg, is, ib, round_trip_delay_s(L));
@@ -40,22 +44,26 @@ McResult monte_carlo(const TofLockinConfig& cfg, double is, double ib, double L,
     return std::clamp(std::floor(v / lsb), 0.0, top) * lsb;
   };
   double s1 = 0, s2 = 0, s4 = 0;
-  std::vector<double> ls(frames);
+  std::vector<double> ls;
   for (int f = 0; f < frames; ++f) {
     double t[2];
     for (int k = 0; k < 2; ++k) {
       t[k] = read(k, c.total_e(k)) - cfg.readout.offset_calibration_V;
       if (cfg.readout.ambient_subtraction) t[k] -= read(k, c.ambient_e());
     }
-    ls[f] = K * t[1] / (t[0] + t[1]);
-    s1 += ls[f];
+    const double s = t[0] + t[1];
+    if (only_ranges && (!(s > 0) || s < cfg.readout.detection_threshold_V * (1 - 1e-9))) continue;
+    ls.push_back(K * t[1] / s);
+    s1 += ls.back();
   }
+  const double n = static_cast<double>(ls.size());
+  if (kept) *kept = static_cast<int>(ls.size());
   McResult r;
-  r.mean = s1 / frames;
+  r.mean = s1 / n;
   for (double l : ls) s2 += (l - r.mean) * (l - r.mean), s4 += std::pow(l - r.mean, 4);
-  r.var = s2 / (frames - 1);
-  r.se_mean = std::sqrt(r.var / frames);
-  r.se_var = std::sqrt((s4 / frames - r.var * r.var) / frames);  // no normality assumed
+  r.var = s2 / (n - 1);
+  r.se_mean = std::sqrt(r.var / n);
+  r.se_var = std::sqrt((s4 / n - r.var * r.var) / n);  // no normality assumed
   return r;
 }
 
@@ -74,9 +82,45 @@ TEST(LockinMonteCarlo, PresetMidSignalWithBackground) {
   expect_matches(test::lockin_config(), 3e-10, 1e-10, 2.0, 12345u);
 }
 
+// The range-noise bound off (readout.max_range_noise_fraction), so that golden's moments can be
+// checked where the ratio is far from linear.
+TofLockinConfig unbounded_config() {
+  TofLockinConfig cfg = test::lockin_config();
+  cfg.readout.max_range_noise_fraction = 1e6;
+  return cfg;
+}
+
 TEST(LockinMonteCarlo, PresetWeakSignalFarTarget) {
   // 0.03 nA (15 mV, ~940 e-): SNR ~ 7, where the second-order terms of the delta method count.
-  expect_matches(test::lockin_config(), 3e-11, 1e-12, 9.0, 777u);
+  expect_matches(unbounded_config(), 3e-11, 1e-12, 9.0, 777u);
+}
+
+// SNR ~ 3.6 of a + b at 0.012 nA, 1 m: the detection threshold (5 mV) cuts into the frames and the
+// ratio is far from linear. Golden integrates the moments over the frames that give a range; the
+// Monte Carlo keeps the same frames. The delta method's variance, which golden used before, is
+// outside the same test: the check has the power to see the difference.
+TEST(LockinMonteCarlo, LowSnrMomentsOverTheFramesThatGiveARange) {
+  const TofLockinConfig cfg = unbounded_config();
+  const double is = 1.2e-11, ib = 1e-14, L = 1.0;
+  const LockinPoint p = evaluate_point(cfg, is, ib, L, 1);
+  ASSERT_EQ(p.detect, LockinDetect::Detectable);
+  EXPECT_LT(p.snr, 4.0);
+  int kept = 0;
+  const McResult mc = monte_carlo(cfg, is, ib, L, 40000, 4711u, true, &kept);
+  EXPECT_LT(kept, 39000);  // the threshold removes a visible share of the frames
+  EXPECT_NEAR(p.mean_m, mc.mean, 5 * mc.se_mean);
+  EXPECT_NEAR(p.std_m * p.std_m, mc.var, 5 * mc.se_var) << "std " << p.std_m << " mc " << std::sqrt(mc.var);
+  // What the second-order delta method gives at the same point (range_moments), 5 SE away or more.
+  const double lsb = adc_lsb_V(cfg);
+  const FrameCharge c = frame_charge(cfg, is, ib, round_trip_delay_s(L));
+  double mu[2], var[2];
+  for (int k = 0; k < 2; ++k) {
+    const TapSample on = tap_sample(cfg, k, c.total_e(k)), off = tap_sample(cfg, k, c.ambient_e());
+    mu[k] = on.mean_V - off.mean_V;
+    var[k] = on.sigma_V * on.sigma_V + off.sigma_V * off.sigma_V + lsb * lsb / 6;
+  }
+  const RangeMoments delta = range_moments(max_range_m(cfg.source), mu[0], var[0], mu[1], var[1]);
+  EXPECT_GT(std::fabs(delta.var_m2 - mc.var), 5 * mc.se_var) << "delta " << std::sqrt(delta.var_m2);
 }
 
 TEST(LockinMonteCarlo, NonIdealPixelWithoutAmbientFrame) {
