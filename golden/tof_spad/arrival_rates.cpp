@@ -22,16 +22,21 @@ Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double backgr
   return a;
 }
 
-std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
+BinArrivals bin_arrivals(const TdcBins& bins, const Arrivals& a) {
   const int np = bins.phase_bins;
-  std::vector<double> r(static_cast<size_t>(np));
-  for (int i = 0; i < np; ++i) r[static_cast<size_t>(i)] = a.live_fraction * a.uniform_rate_Hz * bins.width_s(i);
+  BinArrivals r;
+  r.total.resize(static_cast<size_t>(np));
+  r.signal.assign(static_cast<size_t>(np), 0.0);
+  for (int i = 0; i < np; ++i) r.total[static_cast<size_t>(i)] = a.uniform_rate_Hz * bins.width_s(i);
   if (a.signal_per_cycle <= 0) return r;
-  const double signal = a.live_fraction * a.signal_per_cycle;
+  const auto add = [&](int i, double mass) {
+    r.signal[static_cast<size_t>(i)] += mass;
+    r.total[static_cast<size_t>(i)] += mass;
+  };
   if (a.irf_sigma_s <= 0) {  // a delta echo lands whole in one bin
     const auto it = std::upper_bound(bins.edges_s.begin(), bins.edges_s.end(), a.round_trip_s);
     const long i = std::distance(bins.edges_s.begin(), it) - 1;
-    if (i >= 0 && i < np) r[static_cast<size_t>(i)] += signal;
+    if (i >= 0 && i < np) add(static_cast<int>(i), a.signal_per_cycle);
     return r;
   }
   // Upper tail Q(x) = erfc(x / sqrt 2) / 2 keeps precision far out on both sides.
@@ -40,9 +45,14 @@ std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
   for (int i = 0; i < np; ++i) {
     const double e0 = bins.edges_s[static_cast<size_t>(i)], e1 = bins.edges_s[static_cast<size_t>(i) + 1];
     if (e1 < lo || e0 > hi) continue;
-    const double p = 0.5 * (std::erfc((e0 - a.round_trip_s) * k) - std::erfc((e1 - a.round_trip_s) * k));
-    r[static_cast<size_t>(i)] += signal * p;
+    add(i, a.signal_per_cycle * 0.5 * (std::erfc((e0 - a.round_trip_s) * k) - std::erfc((e1 - a.round_trip_s) * k)));
   }
+  return r;
+}
+
+std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
+  std::vector<double> r = bin_arrivals(bins, a).total;
+  for (double& x : r) x *= a.live_fraction;
   return r;
 }
 

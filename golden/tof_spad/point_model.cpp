@@ -37,9 +37,51 @@ PileUpInput SpadModel::pile_up_input(std::vector<double> r) const {
   return in;
 }
 
+int SpadModel::dead_bins() const { return static_cast<int>(std::lround(cfg_.spad.dead_time_s / bins_.lsb_s)); }
+
+DeadTimeChainInput SpadModel::chain_input(const BinArrivals& ours) const {
+  DeadTimeChainInput in;
+  const PileUpInput blocks = pile_up_input({});
+  in.codes = bins_.codes;
+  in.dead_bins = dead_bins();
+  in.block_event_bins = blocks.block_event_bins;
+  in.block_overflow_bins = blocks.block_overflow_bins;
+  in.share = share_;
+  const int m = cfg_.tdc.columns_per_tdc;
+  const double f = cfg_.tdc.neighbour_rate_fraction;
+  if (f == 1.0 || m == 1 || f == 0.0) {
+    in.classes.push_back({f == 1.0 ? m : 1, ours.total, ours.signal});
+    return in;
+  }
+  in.classes.push_back({1, ours.total, ours.signal});
+  SpadClassArrivals nb{m - 1, ours.total, ours.signal};
+  for (double& x : nb.arrivals) x *= f;
+  for (double& x : nb.signal_arrivals) x *= f;
+  in.classes.push_back(std::move(nb));
+  return in;
+}
+
+PileUpHistogram SpadModel::histogram(const Arrivals& a) const {
+  const BinArrivals arrivals = bin_arrivals(bins_, a);
+  if (dead_bins() >= 1) {
+    const DeadTimeChainInput in = chain_input(arrivals);
+    if (dead_time_chain_work(in) <= kDeadTimeChainMaxWork) return dead_time_histogram(in);
+  }
+  std::vector<double> r = arrivals.total;
+  for (double& x : r) x *= a.live_fraction;
+  PileUpHistogram h = expected_histogram(pile_up_input(std::move(r)));
+  if (dead_bins() >= 1)
+    h.model = "mean field: SPAD live fraction 1 / (1 + m tau) (dead or busy time too long for the chain)";
+  h.background_event_prob.resize(h.event_prob.size());
+  for (size_t i = 0; i < h.event_prob.size(); ++i) {
+    const double t = arrivals.total[i];
+    h.background_event_prob[i] = t > 0 ? h.event_prob[i] * (1 - arrivals.signal[i] / t) : h.event_prob[i];
+  }
+  return h;
+}
+
 PileUpHistogram SpadModel::histogram(double signal_Hz, double background_Hz, double distance_m) const {
-  const Arrivals a = make_arrivals(cfg_, signal_Hz, background_Hz, distance_m);
-  return expected_histogram(pile_up_input(photons_per_bin(bins_, a)));
+  return histogram(make_arrivals(cfg_, signal_Hz, background_Hz, distance_m));
 }
 
 PointResult SpadModel::evaluate(double signal_Hz, double background_Hz, double distance_m) const {
@@ -51,7 +93,7 @@ PointResult SpadModel::evaluate(double signal_Hz, double background_Hz, double d
   PointResult p;
   p.cycles = cycles_;
   const Arrivals a = make_arrivals(cfg_, signal_Hz, background_Hz, distance_m);
-  const PileUpHistogram h = expected_histogram(pile_up_input(photons_per_bin(bins_, a)));
+  const PileUpHistogram h = histogram(a);
   p.chain_converged = h.converged;
   p.detections_per_cycle = h.our_events_per_cycle;
   const int codes = bins_.codes;
@@ -74,15 +116,13 @@ PointResult SpadModel::evaluate(double signal_Hz, double background_Hz, double d
     if (expected_y(i) > expected_y(peak)) peak = i;
   p.moments = estimator_moments(h, bins_, cycles_, peak, est);
 
-  // Window counts: background events = armed x background hazard (our share of it).
+  // Window counts: our events split by the arrivals' source in each bin.
   const Window w = p.moments.window;
-  const double s = share_;
   double window_events = 0, window_background = 0;
   for (int i = w.lo; i <= w.hi; ++i) {
     const auto ui = static_cast<size_t>(i);
     window_events += cycles_ * h.event_prob[ui];
-    window_background +=
-        cycles_ * h.armed_prob[ui] * -std::expm1(-s * a.live_fraction * a.uniform_rate_Hz * bins_.width_s(i)) / s;
+    window_background += cycles_ * h.background_event_prob[ui];
   }
   p.signal_counts = std::max(0.0, window_events - window_background);
   p.background_counts = window_background;

@@ -7,6 +7,7 @@
 
 #include "core/tof_spad/config.h"
 #include "golden/tof_spad/arrival_rates.h"
+#include "golden/tof_spad/dead_time_chain.h"
 #include "golden/tof_spad/estimator.h"
 #include "golden/tof_spad/pile_up.h"
 #include "golden/tof_spad/tdc_bins.h"
@@ -36,9 +37,17 @@ class SpadModel {
   PointResult evaluate(double signal_Hz, double background_Hz, double distance_m) const;
   PointResult evaluate(double signal_Hz, double background_Hz, double distance_m, const EstimatorConfig& est) const;
 
-  // Expected per-cycle histogram of an operating point.
+  // Expected per-cycle histogram of an operating point: the renewal chain of the SPADs' dead
+  // time (dead_time_chain.h); without dead time, or with dead and busy times too long for the
+  // chain, the TDC's chain alone on the mean-field rates (PileUpHistogram::model says which).
   PileUpHistogram histogram(double signal_Hz, double background_Hz, double distance_m) const;
+  PileUpHistogram histogram(const Arrivals& a) const;
+  // The TDC's blocking in bins (and the mean-field input of its chain).
   PileUpInput pile_up_input(std::vector<double> photons_per_bin) const;
+  // The group of the renewal chain: our pixel, and the sharing neighbours at
+  // tdc.neighbour_rate_fraction of our arrivals (one class with ours when they are equal).
+  DeadTimeChainInput chain_input(const BinArrivals& ours) const;
+  int dead_bins() const;  // SPAD dead time in phase bins (rounded)
 
   const TofSpadConfig& config() const { return cfg_; }
   const TdcBins& bins() const { return bins_; }
