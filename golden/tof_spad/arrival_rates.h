@@ -9,9 +9,16 @@
 
 namespace rangesim::golden::spad {
 
+// A further return of the pulse (multipath; a neighbour's surface through the point spread).
+struct Return {
+  double signal_per_cycle = 0;
+  double round_trip_s = 0;
+};
+
 struct Arrivals {
   double signal_per_cycle = 0;  // mean signal detections per laser cycle (signal rate / repetition rate)
   double round_trip_s = 0;      // echo centre 2 L / c
+  std::vector<Return> returns;  // further echoes, the same pulse shape
   double irf_sigma_s = 0;       // laser pulse sigma and SPAD jitter in quadrature
   double uniform_rate_Hz = 0;   // background + dark count rate, uniform over the cycle
   double live_fraction = 1;     // free-running SPAD live fraction 1 / (1 + m tau_dead), m = S + B + D (mean field only)
@@ -20,7 +27,8 @@ struct Arrivals {
 // IRF sigma: sigma_per_fwhm x FWHM of the pulse, combined with the jitter in quadrature.
 double irf_sigma_s(const TofSpadConfig& cfg);
 
-// Operating point -> arrivals. Rates are PDE-weighted count rates (preset header).
+// Operating point -> arrivals. Rates are PDE-weighted count rates (preset header). With
+// multipath.* on, every echo has its second return.
 Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double background_Hz, double distance_m);
 
 // Mean arrivals per phase bin and laser cycle before any dead time: all of them (echo,

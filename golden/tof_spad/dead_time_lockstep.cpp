@@ -8,11 +8,17 @@ namespace {
 
 size_t u(long long i) { return static_cast<size_t>(i); }
 
-// x^n, n the losers' count less one: unrolled for the usual small groups (N < 0: any n).
+// x^n, n the losers' count less one: unrolled for the usual small groups (N < 0: any n, by
+// squaring; a TDC may serve thousands of columns).
 template <int N>
 inline double pow_n(double x, int n) {
   double r = 1;
-  for (int i = 0; i < (N >= 0 ? N : n); ++i) r *= x;
+  if constexpr (N >= 0) {
+    for (int i = 0; i < N; ++i) r *= x;
+  } else {
+    for (; n > 0; n >>= 1, x *= x)
+      if (n & 1) r *= x;
+  }
   return r;
 }
 
