@@ -32,6 +32,8 @@ TofSpadConfig tof_spad_from_params(const ParamSet& p) {
   c.dark = read_dark_temperature(p);
   c.spad.dark_count_rate_Hz = p.real("spad.dark_count_rate_Hz") * c.dark.scale(c.temperature_K);
   c.fixed_pattern = read_fixed_pattern(p, "Hz", false, false);
+  c.blur = read_blur(p, p.real("laser.wavelength_m"), p.real("optics.f_number"), p.real("array.pitch_m"));
+  c.multipath = read_multipath(p);
   c.spad.dead_time_s = p.real("spad.dead_time_s");
   c.spad.afterpulse_probability = p.real("spad.afterpulse_probability");
   c.spad.afterpulse_time_constant_s = p.real("spad.afterpulse_time_constant_s");

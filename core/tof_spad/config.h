@@ -83,6 +83,8 @@ struct TofSpadConfig {
   SpadEvaluationConfig evaluation;
   FixedPatternConfig fixed_pattern;  // PRNU (the PDE's spread), DSNU (the dark count rate's, Hz): core/nonideal.h
   DarkTemperatureConfig dark;        // spad.dark_count_rate_Hz is already scaled to temperature_K
+  BlurConfig blur;                   // the lens's point spread and the pixels' crosstalk (scenes)
+  MultipathConfig multipath;         // a second return of every echo
   double temperature_K = 300;        // the sensor's
 };
 

@@ -96,6 +96,8 @@ const ParamSchema& tof_spad_schema() {
   // The non-idealities' keys (core/nonideal.h).
   static const ParamSchema schema =
       with_specs(base, {fixed_pattern_specs("Hz", 1e9, false, false),
+                        blur_specs(false),
+                        multipath_specs(),
                         dark_temperature_specs(),
                         {{"spad.temperature_K", ParamKind::Real, "K", 0, 500, true,
                           "sensor temperature: the dark count rate follows it (dark.*)"}}});

@@ -18,31 +18,52 @@ Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double backgr
   a.round_trip_s = 2.0 * distance_m / phys::kSpeedOfLight_m_per_s;
   a.irf_sigma_s = irf_sigma_s(cfg);
   a.uniform_rate_Hz = background_Hz + cfg.spad.dark_count_rate_Hz;
-  a.live_fraction = 1.0 / (1.0 + (signal_Hz + a.uniform_rate_Hz) * cfg.spad.dead_time_s);
+  double signal_Hz_all = signal_Hz;
+  if (cfg.multipath.on()) {
+    a.returns.push_back({cfg.multipath.relative_amplitude * a.signal_per_cycle,
+                         a.round_trip_s + cfg.multipath.extra_path_m / phys::kSpeedOfLight_m_per_s});
+    signal_Hz_all *= 1 + cfg.multipath.relative_amplitude;
+  }
+  a.live_fraction = 1.0 / (1.0 + (signal_Hz_all + a.uniform_rate_Hz) * cfg.spad.dead_time_s);
   return a;
 }
 
-std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
+BinArrivals bin_arrivals(const TdcBins& bins, const Arrivals& a) {
   const int np = bins.phase_bins;
-  std::vector<double> r(static_cast<size_t>(np));
-  for (int i = 0; i < np; ++i) r[static_cast<size_t>(i)] = a.live_fraction * a.uniform_rate_Hz * bins.width_s(i);
-  if (a.signal_per_cycle <= 0) return r;
-  const double signal = a.live_fraction * a.signal_per_cycle;
-  if (a.irf_sigma_s <= 0) {  // a delta echo lands whole in one bin
-    const auto it = std::upper_bound(bins.edges_s.begin(), bins.edges_s.end(), a.round_trip_s);
-    const long i = std::distance(bins.edges_s.begin(), it) - 1;
-    if (i >= 0 && i < np) r[static_cast<size_t>(i)] += signal;
-    return r;
-  }
-  // Upper tail Q(x) = erfc(x / sqrt 2) / 2 keeps precision far out on both sides.
-  const double k = 1.0 / (std::sqrt(2.0) * a.irf_sigma_s);
-  const double lo = a.round_trip_s - 12 * a.irf_sigma_s, hi = a.round_trip_s + 12 * a.irf_sigma_s;
-  for (int i = 0; i < np; ++i) {
-    const double e0 = bins.edges_s[static_cast<size_t>(i)], e1 = bins.edges_s[static_cast<size_t>(i) + 1];
-    if (e1 < lo || e0 > hi) continue;
-    const double p = 0.5 * (std::erfc((e0 - a.round_trip_s) * k) - std::erfc((e1 - a.round_trip_s) * k));
-    r[static_cast<size_t>(i)] += signal * p;
-  }
+  BinArrivals r;
+  r.total.resize(static_cast<size_t>(np));
+  r.signal.assign(static_cast<size_t>(np), 0.0);
+  for (int i = 0; i < np; ++i) r.total[static_cast<size_t>(i)] = a.uniform_rate_Hz * bins.width_s(i);
+  const auto add = [&](int i, double mass) {
+    r.signal[static_cast<size_t>(i)] += mass;
+    r.total[static_cast<size_t>(i)] += mass;
+  };
+  // One echo of `mass` photons per cycle centred at `centre`.
+  const auto echo = [&](double mass, double centre) {
+    if (!(mass > 0)) return;
+    if (a.irf_sigma_s <= 0) {  // a delta echo lands whole in one bin
+      const auto it = std::upper_bound(bins.edges_s.begin(), bins.edges_s.end(), centre);
+      const long i = std::distance(bins.edges_s.begin(), it) - 1;
+      if (i >= 0 && i < np) add(static_cast<int>(i), mass);
+      return;
+    }
+    // Upper tail Q(x) = erfc(x / sqrt 2) / 2 keeps precision far out on both sides.
+    const double k = 1.0 / (std::sqrt(2.0) * a.irf_sigma_s);
+    const double lo = centre - 12 * a.irf_sigma_s, hi = centre + 12 * a.irf_sigma_s;
+    for (int i = 0; i < np; ++i) {
+      const double e0 = bins.edges_s[static_cast<size_t>(i)], e1 = bins.edges_s[static_cast<size_t>(i) + 1];
+      if (e1 < lo || e0 > hi) continue;
+      add(i, mass * 0.5 * (std::erfc((e0 - centre) * k) - std::erfc((e1 - centre) * k)));
+    }
+  };
+  echo(a.signal_per_cycle, a.round_trip_s);
+  for (const Return& e : a.returns) echo(e.signal_per_cycle, e.round_trip_s);
+  return r;
+}
+
+std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a) {
+  std::vector<double> r = bin_arrivals(bins, a).total;
+  for (double& x : r) x *= a.live_fraction;
   return r;
 }
 

@@ -9,27 +9,41 @@
 
 namespace rangesim::golden::spad {
 
+// A further return of the pulse (multipath; a neighbour's surface through the point spread).
+struct Return {
+  double signal_per_cycle = 0;
+  double round_trip_s = 0;
+};
+
 struct Arrivals {
   double signal_per_cycle = 0;  // mean signal detections per laser cycle (signal rate / repetition rate)
   double round_trip_s = 0;      // echo centre 2 L / c
+  std::vector<Return> returns;  // further echoes, the same pulse shape
   double irf_sigma_s = 0;       // laser pulse sigma and SPAD jitter in quadrature
   double uniform_rate_Hz = 0;   // background + dark count rate, uniform over the cycle
-  double live_fraction = 1;     // free-running SPAD live fraction 1 / (1 + m tau_dead), m = S + B + D
+  double live_fraction = 1;     // free-running SPAD live fraction 1 / (1 + m tau_dead), m = S + B + D (mean field only)
 };
 
 // IRF sigma: sigma_per_fwhm x FWHM of the pulse, combined with the jitter in quadrature.
 double irf_sigma_s(const TofSpadConfig& cfg);
 
-// Operating point -> arrivals. Rates are PDE-weighted count rates (preset header).
+// Operating point -> arrivals. Rates are PDE-weighted count rates (preset header). With
+// multipath.* on, every echo has its second return.
 Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double background_Hz, double distance_m);
 
-// r_i for the Np phase bins of one period, times the live fraction: the SPAD keeps firing (and
-// going dead) while the TDC is stopped or busy, so at a random time it is live with the
-// non-paralysable probability 1 / (1 + m tau_dead) (the non-paralysable dead-time model, n = m / (1 + m tau)). This
-// stationary factor is the thesis's eq. 2.29-2.30 limit (detections <= 1 / t_dead) done properly;
-// its time correlation with the TDC's blocking is neglected (docs/tof-spad.md). The echo is integrated with erfc only
-// within
+// Mean arrivals per phase bin and laser cycle before any dead time: all of them (echo,
+// background and dark counts) and the echo's part. The echo is integrated with erfc only within
 // +-12 sigma of its centre (beyond, < 1e-32 of it); echoes are assumed inside the period.
+struct BinArrivals {
+  std::vector<double> total, signal;
+};
+BinArrivals bin_arrivals(const TdcBins& bins, const Arrivals& a);
+
+// The mean-field input of the chain without SPAD dead time (pile_up.h): r_i = total_i times the
+// stationary live fraction 1 / (1 + m tau_dead) of a free-running non-paralysable SPAD (thesis
+// eq. 2.29-2.30 done properly). Its time correlation with the TDC's blocking is neglected; the
+// golden model uses it only where the renewal chain (dead_time_chain.h) does not run: no dead
+// time (where it is exact) or dead and busy times too long for the chain.
 std::vector<double> photons_per_bin(const TdcBins& bins, const Arrivals& a);
 
 }  // namespace rangesim::golden::spad

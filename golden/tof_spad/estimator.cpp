@@ -99,7 +99,10 @@ EstimateMoments estimator_moments(const PileUpHistogram& h, const TdcBins& bins,
     const double a = k.alpha[ui], g = k.gamma[ui];
     double mean = 0, var = 0;
     if (cfg.coates) {
-      const double armed = cycles * h.armed_prob[ui], q = h.hazard[ui];
+      // What Coates reads from our counts: s x our events per armed cycle (the group's hazard
+      // when every column sees our rates; the estimator assumes that, PileUpHistogram need not).
+      const double armed = cycles * h.armed_prob[ui];
+      const double q = h.armed_prob[ui] > 0 ? std::min(1.0, s * h.event_prob[ui] / h.armed_prob[ui]) : 0.0;
       // coates_rates caps q at 1 - 1/(2A): a bin that stops (nearly) every armed cycle reads
       // ln(2A)/s whatever the rate. Without the cap here a hazard that rounds to 1 (s r > 37,
       // count rates far above 1/dead time) read as an empty bin and lost the echo.

@@ -11,9 +11,10 @@
 // After a recorded hit the TDC group is blind for max(dead time, busy time); if that reaches past
 // the end of the period the next cycles are blind and the first live cycle is armed only from
 // phase bin v = (i + block) mod Np on. The arming phase is a Markov chain over cycles; its
-// stationary law gives the histogram per physical cycle. See docs/tof-spad.md for the derivation
-// and the approximations (SPAD hits after the TDC stopped and during the busy time are not
-// followed; afterpulses are bounded, not modelled).
+// stationary law gives the histogram per physical cycle. See docs/tof-spad.md for the derivation.
+// This chain has no memory in the SPADs: it is exact without SPAD dead time; with dead time the
+// golden model uses the renewal chain (dead_time_chain.h, which this chain starts) and falls back
+// to this one on the mean-field rates only where that chain does not run.
 #include <vector>
 
 namespace rangesim::golden::spad {
@@ -27,15 +28,17 @@ struct PileUpInput {
 };
 
 struct PileUpHistogram {
-  std::vector<double> event_prob;     // our pixel's P(event in code i) per physical cycle, i < codes
-  std::vector<double> armed_prob;     // P(TDC group armed at the start of phase bin i) per physical cycle
-  std::vector<double> hazard;         // q_i = 1 - exp(-s r_i): group detection probability when armed
-  double share = 1;                   // s
-  double cycles_per_live_cycle = 1;   // mean cycles from one armed cycle start to the next (>= 1)
-  double group_events_per_cycle = 0;  // recorded TDC events per physical cycle (all sharing columns)
-  double our_events_per_cycle = 0;    // of which ours
-  int iterations = 0;                 // power iterations of the arming-phase chain
+  std::vector<double> event_prob;             // our pixel's P(event in code i) per physical cycle, i < codes
+  std::vector<double> background_event_prob;  // the part of event_prob from background and dark counts (may be empty)
+  std::vector<double> armed_prob;             // P(TDC group armed at the start of phase bin i) per physical cycle
+  std::vector<double> hazard;                 // q_i = 1 - exp(-s r_i): group detection probability when armed
+  double share = 1;                           // s
+  double cycles_per_live_cycle = 1;           // mean cycles from one armed cycle start to the next (>= 1)
+  double group_events_per_cycle = 0;          // recorded TDC events per physical cycle (all sharing columns)
+  double our_events_per_cycle = 0;            // of which ours
+  int iterations = 0;                         // power iterations of the arming-phase chain
   bool converged = false;
+  const char* model = "TDC blocking, no SPAD dead time";  // which model made it (dead_time_chain.h)
 };
 
 // The stationary arming-phase chain by power iteration, O(Np) per iteration: the probability of

@@ -7,6 +7,7 @@
 
 #include "core/tof_spad/config.h"
 #include "golden/tof_spad/arrival_rates.h"
+#include "golden/tof_spad/dead_time_chain.h"
 #include "golden/tof_spad/estimator.h"
 #include "golden/tof_spad/pile_up.h"
 #include "golden/tof_spad/tdc_bins.h"
@@ -33,12 +34,46 @@ class SpadModel {
   explicit SpadModel(const TofSpadConfig& cfg);
 
   // With the preset's estimator (histogram.coates_correction, histogram.subtract_background).
+  // With a fixed pattern (fixed_pattern.prnu_fraction, fixed_pattern.dsnu_rms_Hz) the accuracy is
+  // the rms over the chip's pixels (evaluate_chip); the rest is the mean pixel's.
   PointResult evaluate(double signal_Hz, double background_Hz, double distance_m) const;
   PointResult evaluate(double signal_Hz, double background_Hz, double distance_m, const EstimatorConfig& est) const;
 
-  // Expected per-cycle histogram of an operating point.
+  // One pixel of a chip: its photon detection efficiency relative to the mean (PRNU: scales its
+  // signal and background rates) and its dark count rate's offset (DSNU); the columns sharing its
+  // TDC at the mean.
+  struct PixelDraw {
+    double gain = 1, dark_extra_Hz = 0;
+  };
+  PointResult evaluate_pixel(double signal_Hz, double background_Hz, double distance_m, const EstimatorConfig& est,
+                             const PixelDraw& draw) const;
+
+  // A pixel that receives several returns (a depth step inside the lens's point spread or the
+  // pixels' crosstalk; multipath): their histograms add, the estimate is that of the sum (a flying
+  // pixel: between the returns' ranges, weighted by their counts). Every column of the group sees
+  // the same; the bias is against `truth_m`, the first return's TDC code is the echo's.
+  struct SignalReturn {
+    double signal_Hz = 0, distance_m = 0;
+  };
+  PointResult evaluate_returns(const std::vector<SignalReturn>& returns, double background_Hz, double truth_m) const;
+
+  // Expected per-cycle histogram of an operating point: the renewal chain of the SPADs' dead
+  // time (dead_time_chain.h); without dead time, or with dead and busy times too long for the
+  // chain, the TDC's chain alone on the mean-field rates (PileUpHistogram::model says which).
   PileUpHistogram histogram(double signal_Hz, double background_Hz, double distance_m) const;
+  PileUpHistogram histogram(const Arrivals& a) const;
+  // Our pixel with arrivals `ours`, the sharing columns with `others` (times the neighbour fraction).
+  PileUpHistogram histogram(const Arrivals& ours, const Arrivals& others) const;
+  // The TDC's blocking in bins (and the mean-field input of its chain).
   PileUpInput pile_up_input(std::vector<double> photons_per_bin) const;
+  // The group of the renewal chain: our pixel, and the sharing neighbours at
+  // tdc.neighbour_rate_fraction of `others` (one class with ours when they are equal).
+  DeadTimeChainInput chain_input(const BinArrivals& ours, const BinArrivals& others) const;
+  int dead_bins() const;  // SPAD dead time in phase bins (rounded)
+
+  // The point's model on given arrivals (ours and the sharing columns'), bias against the round trip.
+  PointResult evaluate_arrivals(const Arrivals& ours, const Arrivals& others, const EstimatorConfig& est,
+                                double truth_round_trip_s) const;
 
   const TofSpadConfig& config() const { return cfg_; }
   const TdcBins& bins() const { return bins_; }

@@ -25,7 +25,9 @@ class Runner : public McPointRunner {
     // Frame = trial: the group's streams are keyed (point key, trial, row 0, column).
     // Every trial is a group of another chip (its fixed pattern keyed by the trial).
     const std::uint64_t chip = trial_key(key_, static_cast<std::uint64_t>(t));
-    const auto rates = [this, chip](int, int c) { return systemc::spad::with_fixed_pattern(cfg_, chip, rates_, 0, c); };
+    // A uniform scene: the point spread changes nothing; multipath adds its second return.
+    const systemc::spad::RateSource rates = systemc::spad::chip_rates(
+        cfg_, chip, [this](int, int) { return rates_; }, 1, cfg_.tdc.columns_per_tdc);
     const systemc::spad::GroupHistogram g = kernel_.simulate_group(static_cast<std::uint64_t>(t), 0, 0, rates);
     const std::optional<double> tof = kernel_.estimate(g.events[0], g.armed);
     McTrial out;

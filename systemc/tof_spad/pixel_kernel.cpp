@@ -8,6 +8,11 @@ namespace rangesim::systemc::spad {
 namespace {
 constexpr std::uint64_t kSignalSalt = 0x5349474e414cULL, kUniformSalt = 0x554e49464fULL, kSpadSalt = 0x53504144ULL;
 double exp_gap(pcg32& rng) { return -std::log(uniform_open01(rng)); }
+double echo_sum(const PixelRates& r) {
+  double s = 0;
+  for (const SpadEcho& e : r.echoes) s += e.signal_Hz;
+  return s;
+}
 // Largest mean drawn by one inversion: exp(-mean) stays far from underflow.
 constexpr double kInversionMaxMean = 64.0;
 // Poisson(mu) as the sum of ceil(mu / 64) independent Poisson(mu / pieces), each by inversion.
@@ -31,7 +36,7 @@ SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, 
                                  std::uint32_t column)
     : period_s_(1.0 / cfg.laser.repetition_rate_Hz),
       laser_cycles_(laser_cycles),
-      signal_per_cycle_(r.signal_Hz / cfg.laser.repetition_rate_Hz),
+      signal_per_cycle_((r.signal_Hz + echo_sum(r)) / cfg.laser.repetition_rate_Hz),
       uniform_rate_Hz_((n.background ? r.background_Hz : 0.0) +
                        (n.dark ? cfg.spad.dark_count_rate_Hz + r.dark_extra_Hz : 0.0)),
       round_trip_s_(r.round_trip_s),
@@ -45,6 +50,16 @@ SpadPixelKernel::SpadPixelKernel(const TofSpadConfig& cfg, const PixelRates& r, 
       signal_rng_(pixel_stream(pixel_stream_key(seed ^ kSignalSalt, frame, row, column))),
       uniform_rng_(pixel_stream(pixel_stream_key(seed ^ kUniformSalt, frame, row, column))),
       spad_rng_(pixel_stream(pixel_stream_key(seed ^ kSpadSalt, frame, row, column))) {
+  // A photon is of each echo with its share of the rate (thinning a Poisson process): the main
+  // echo below the first cumulative share, further echo k below the (k+1)-th.
+  double cum = r.signal_Hz;
+  const double total = r.signal_Hz + echo_sum(r);
+  for (const SpadEcho& e : r.echoes) {
+    if (!(total > 0)) break;
+    echo_share_.push_back(cum / total);
+    echo_delay_s_.push_back(e.round_trip_s);
+    cum += e.signal_Hz;
+  }
   next_signal_cycle();
   next_uniform();
   advance();
@@ -91,8 +106,18 @@ void SpadPixelKernel::next_signal_cycle() {
   }
   // Offsets within the photon's own cycle: the echo (possibly beyond a period) around the round trip.
   const SpadTime t0{signal_cycle_, 0.0};
-  for (long long i = 0; i < k; ++i)
-    signal_buf_.push_back(shifted(t0, round_trip_s_ + pulse_sigma_s_ * standard_normal(signal_rng_)));
+  for (long long i = 0; i < k; ++i) {
+    double centre = round_trip_s_;
+    if (!echo_share_.empty()) {  // which echo: one more draw only when there are several
+      const double u = uniform_open01(signal_rng_);
+      for (size_t e = echo_share_.size(); e-- > 0;)
+        if (u >= echo_share_[e]) {
+          centre = echo_delay_s_[e];
+          break;
+        }
+    }
+    signal_buf_.push_back(shifted(t0, centre + pulse_sigma_s_ * standard_normal(signal_rng_)));
+  }
   std::sort(signal_buf_.begin(), signal_buf_.end(), std::greater<SpadTime>());
 }
 

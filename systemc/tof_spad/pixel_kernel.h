@@ -22,12 +22,20 @@
 
 namespace rangesim::systemc::spad {
 
+// A further return of the pulse on a pixel: a second path (multipath) or, through the point
+// spread and crosstalk, a neighbour's surface.
+struct SpadEcho {
+  double signal_Hz = 0;     // its detections per second before dead-time losses
+  double round_trip_s = 0;  // its centre
+};
+
 // What the scene puts on one pixel: PDE-weighted count rates (as in the preset) and the echo.
 struct PixelRates {
-  double signal_Hz = 0;      // signal detections per second before dead-time losses
-  double background_Hz = 0;  // ambient detections per second before dead-time losses
-  double round_trip_s = 0;   // echo centre 2 L / c
-  double dark_extra_Hz = 0;  // fixed pattern: this pixel's dark count rate minus the preset's
+  double signal_Hz = 0;               // signal detections per second before dead-time losses
+  double background_Hz = 0;           // ambient detections per second before dead-time losses
+  double round_trip_s = 0;            // echo centre 2 L / c
+  double dark_extra_Hz = 0;           // fixed pattern: this pixel's dark count rate minus the preset's
+  std::vector<SpadEcho> echoes = {};  // further returns (usually none)
 };
 
 // Noise sources; none() leaves a delta echo with Poisson-many photons and nothing else.
@@ -81,7 +89,8 @@ class SpadPixelKernel {
 
   double period_s_;                                       // laser period
   long long laser_cycles_;                                // end of the integration (cycle index past the last)
-  double signal_per_cycle_;                               // mean signal photons per laser cycle
+  double signal_per_cycle_;                               // mean signal photons per laser cycle (all echoes)
+  std::vector<double> echo_share_, echo_delay_s_;         // further echoes: cumulative share of the photons, centre
   double uniform_rate_Hz_;                                // background + dark (switched)
   double round_trip_s_, pulse_sigma_s_, jitter_sigma_s_;  // echo centre, pulse sigma, jitter rms
   double dead_time_s_, afterpulse_p_, afterpulse_tau_s_;  // SPAD recharge and afterpulsing

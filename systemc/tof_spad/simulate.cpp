@@ -72,11 +72,10 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
   for (int r = sc.first_row; r < sc.first_row + sc.rows; ++r) sel.rows.push_back(r);
   sel.first_group = sc.first_column / columns_per_tdc;
   sel.groups = sc.columns / columns_per_tdc;
-  // The scene's rates on the chip (its fixed pattern: systemc/tof_spad/nonideal_rates.h).
+  // The scene's rates through multipath, the optics and the chip (systemc/tof_spad/nonideal_rates.h).
   const TofSpadConfig& cfg = kernel.config();
-  const sp::RateSource rates = [&sc, &cfg](int r, int c) {
-    return sp::with_fixed_pattern(cfg, cfg.fixed_pattern.seed, sc.rates(r, c), r, c);
-  };
+  const sp::RateSource rates = sp::chip_rates(
+      cfg, cfg.fixed_pattern.seed, [&sc](int r, int c) { return sc.rates(r, c); }, kernel.rows(), kernel.columns());
   const auto t_sim = Clock::now();
   sp::SystemcRun res = req.kernel_only
                            ? sp::run_tof_spad_kernel(kernel, sel, rates, frames, host.progress("frame", frames))

@@ -163,7 +163,7 @@ std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& 
 
 bool spad_group_aggregatable(const std::vector<PixelRates>& px) {
   for (const auto& p : px)
-    if (p.signal_Hz != px.front().signal_Hz || p.background_Hz != px.front().background_Hz ||
+    if (!p.echoes.empty() || p.signal_Hz != px.front().signal_Hz || p.background_Hz != px.front().background_Hz ||
         p.round_trip_s != px.front().round_trip_s || p.dark_extra_Hz != px.front().dark_extra_Hz)
       return false;
   return true;
@@ -262,9 +262,12 @@ std::string spad_background_blocker(const TofSpadConfig& cfg, const SpadNoise& n
 }
 
 bool spad_group_background_only(const std::vector<PixelRates>& px) {
-  for (const auto& p : px)
+  for (const auto& p : px) {
     if (p.signal_Hz != 0 || p.background_Hz != px.front().background_Hz || p.dark_extra_Hz != px.front().dark_extra_Hz)
       return false;
+    for (const SpadEcho& e : p.echoes)
+      if (e.signal_Hz != 0) return false;
+  }
   return true;
 }
 

@@ -30,7 +30,8 @@ struct GroupHistogram;
 // the configuration goes; the pixel rates are checked by spad_group_aggregatable).
 std::string spad_aggregation_blocker(const TofSpadConfig& cfg, const SpadNoise& noise, int phase_bins, int codes,
                                      int block_event_bins, int block_overflow_bins);
-// The group's pixels allow the equal share of a bin among them (identical rates, or one pixel).
+// The group's pixels allow the equal share of a bin among them (identical rates, or one pixel;
+// one echo each: further returns run per cycle).
 bool spad_group_aggregatable(const std::vector<PixelRates>& pixels);
 
 // The aggregated histogram of one group (same GroupHistogram fields as the per-cycle path;

@@ -194,6 +194,29 @@ TEST(McGolden, TofSpadMeanAndVariance) {
   expect_agrees(squared(s.std), g.std_m * g.std_m, 0.10, "variance (m^2)");
 }
 
+// A chip with a fixed pattern (every trial another chip: TofSpadMc): the dark count rates spread
+// by 3e5 counts/s rms (clipped at none, as the kernels draw them) around 100 counts/s under 1e5
+// counts/s of background. Golden's accuracy is the rms over the chip's pixels (SpadModel::evaluate:
+// Gauss-Hermite over the draw, the sharing columns at the draws' mean: a clipped spread raises
+// the mean rate); it must lie within the stated test of the MC's, and the chip without the spread
+// (what golden gave before) must not.
+TEST(McGolden, TofSpadDarkCountSpreadOverTheChip) {
+  TofSpadConfig cfg = tof_spad_from_params(load_preset("tof-spad"));
+  cfg.histogram.integration_time_s = 5e-3;
+  cfg.tdc.inl_rms_lsb = cfg.tdc.dnl_rms_lsb = 0;  // the noise, not the TDC's bow, sets the accuracy
+  cfg.fixed_pattern.dsnu_rms = 3e5;
+  const double sig = 3e4, bg = 1e5;
+  const golden::spad::SpadModel model(cfg);
+  const golden::spad::PointResult g = model.evaluate(sig, bg, cfg.evaluation.distance_m);
+  TofSpadConfig uniform = cfg;
+  uniform.fixed_pattern.dsnu_rms = 0;
+  const golden::spad::PointResult plain = golden::spad::SpadModel(uniform).evaluate(sig, bg, cfg.evaluation.distance_m);
+  ASSERT_EQ(g.detect, "detectable");
+  const McPointStats s = run(TofSpadMc(cfg, false), sig, bg, 1000);
+  expect_agrees(s.rms, g.accuracy_m, 0.0, "accuracy over the chip (m)");
+  EXPECT_GT(std::fabs(s.rms.value - plain.accuracy_m), 2 * s.rms.half_width());
+}
+
 TEST(McGolden, LsDemodulationAccuracy) {
   const LsDemodulationConfig cfg = ls_demodulation_from_params(load_preset("ls-demodulation"));
   const double sig = cfg.grid.signal_min_A * 30, bg = cfg.grid.background_min_A * 10;

@@ -106,28 +106,35 @@ TEST(SpadEstimator, CoatesEqualsRawWithoutPileUp) {
 }
 
 // Without carry-over (10 ns dead and busy time) a strong echo piles up: the first photon comes
-// early in the pulse and the raw centroid moves early by mm; the Coates-corrected one does not.
+// early in the pulse and the raw centroid moves early by mm; the Coates-corrected one does not
+// (the dead time is no whole number of periods: no SPAD recharges onto a later echo).
 TEST(SpadEstimator, CoatesRemovesThePileUpSkewOfTheEcho) {
   TofSpadConfig cfg = ideal_config();
   cfg.tdc.busy_time_s = cfg.spad.dead_time_s = 10e-9;
   const SpadModel m(cfg);
   const PointResult c = m.evaluate(1e7, 1e3, 3.0, {7, true, true});
   const PointResult r = m.evaluate(1e7, 1e3, 3.0, {7, false, true});
+  std::printf("10 ns dead and busy time, 1e7/s echo: bias Coates %.4f mm, raw %.4f mm\n", c.bias_m * 1e3,
+              r.bias_m * 1e3);
   EXPECT_LT(std::fabs(c.bias_m), 0.01e-3);
-  EXPECT_NEAR(r.bias_m, -2.79e-3, 0.02e-3);
+  EXPECT_NEAR(r.bias_m, -3.065e-3, 0.02e-3);
   EXPECT_LT(c.accuracy_m, r.accuracy_m / 50);
 }
 
 // With the preset the TDC group is blind for 100 ns = 4 periods after a hit and re-arms at the
 // phase of that hit: cycles after an early-echo hit miss the early echo, which skews late and all
-// but cancels the pile-up skew of the raw histogram (pinned). Coates with the armed counts stays
-// unbiased either way.
+// but cancels the pile-up skew of the raw histogram. The dead time of 2 periods puts a SPAD that
+// fired on an echo back on the echo two periods later, recharging within the pulse: Coates, which
+// takes the hazard of an armed TDC as the arrivals', keeps that skew (tens of um at 10 Mcounts/s,
+// pinned; SpadGolden.EstimatorMomentsCoatesStrongEcho compares it with the kernel).
 TEST(SpadEstimator, PhaseLockedReArmHidesThePileUpSkew) {
   const SpadModel m(ideal_config());
   const PointResult c = m.evaluate(1e7, 1e3, 3.0, {7, true, true});
   const PointResult r = m.evaluate(1e7, 1e3, 3.0, {7, false, true});
-  EXPECT_LT(std::fabs(c.bias_m), 0.01e-3);
-  EXPECT_NEAR(r.bias_m, -0.006e-3, 0.002e-3);
+  std::printf("preset, 1e7/s echo: bias Coates %.4f mm, raw %.4f mm\n", c.bias_m * 1e3, r.bias_m * 1e3);
+  EXPECT_NEAR(c.bias_m, -0.0696e-3, 0.005e-3);
+  EXPECT_NEAR(r.bias_m, -0.0765e-3, 0.005e-3);
+  EXPECT_LT(std::fabs(c.bias_m), 0.1e-3);  // still a small fraction of the mm-scale pile-up skew
 }
 
 TEST(SpadEstimator, PlainCentroidIsPulledToTheWindowCentre) {

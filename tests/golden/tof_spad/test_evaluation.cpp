@@ -35,7 +35,10 @@ TEST(SpadEvaluation, PresetGridIsFast) {
   std::printf("tof-spad preset grid %zu x %zu evaluated in %.3f s\n", r.signal.values.size(),
               r.background.values.size(), s);
   EXPECT_EQ(r.points.size(), 41u * 71u);
-  EXPECT_LT(s, 5.0);  // budget: well under 20 s on one core
+  // The renewal chain of the dead time costs ~5 ms of one core per point (docs/tof-spad.md):
+  // ~16 s of CPU for the grid and its sweeps, spread over the cores. A guard against a hang or a
+  // chain that stops converging, not a speed goal (that is measured, not asserted).
+  EXPECT_LT(s, 120.0);
   EXPECT_EQ(extra(r, "chain_not_converged_points"), 0.0);
 }
 
@@ -59,7 +62,7 @@ TEST(SpadEvaluation, PresetSummary) {
   EXPECT_FALSE(r.signal_range.lo_limited_by_grid);
   EXPECT_TRUE(r.signal_range.hi_limited_by_grid);
   // Background at 1 Mcounts/s signal: Coates keeps it detectable to the grid's 1e8/s, 5x the
-  // dead-time limit (13% of the cycles are still armed at the echo there).
+  // dead-time limit (10% of the cycles are still armed at the echo there).
   EXPECT_TRUE(r.background_range.lo_limited_by_grid);
   EXPECT_TRUE(r.background_range.hi_limited_by_grid);
   EXPECT_NEAR(r.background_range.range_dB, 140.0, 1e-9);
@@ -70,10 +73,10 @@ TEST(SpadEvaluation, PresetSummary) {
               r.sbr_ratio_min_dB, r.sbr_ratio_max_dB, r.accuracy_min_m * 1e3, r.accuracy_max_m * 1e3);
   EXPECT_NEAR(r.sbr_max_dB, 100.0, 0.01);  // 1e6 over 10 counts/s
   EXPECT_NEAR(r.sbr_ratio_max_dB, 100.0, 0.01);
-  EXPECT_NEAR(r.sbr_ratio_min_dB, -50.0, 0.01);      // 1e6 signal over the grid's 1e8 background
-  EXPECT_NEAR(r.sbr_min_dB, 0.0274, 0.001);          // the weakest signal detectable at the grid's 1e8/s background
-  EXPECT_NEAR(r.accuracy_min_m, 1.451e-3, 0.01e-3);  // INL bias at 3.6 m with std -> 0
-  EXPECT_NEAR(r.accuracy_max_m, 6.821e-3, 0.01e-3);
+  EXPECT_NEAR(r.sbr_ratio_min_dB, -52.0, 0.01);       // 2.5e5 signal over the grid's 1e8 background
+  EXPECT_NEAR(r.sbr_min_dB, 0.0218, 0.001);           // the weakest signal detectable at the grid's 1e8/s background
+  EXPECT_NEAR(r.accuracy_min_m, 1.4515e-3, 0.01e-3);  // INL bias at 3.6 m with std -> 0
+  EXPECT_NEAR(r.accuracy_max_m, 7.068e-3, 0.01e-3);
   EXPECT_EQ(extra(r, "cycles"), 2e6);
   EXPECT_NEAR(extra(r, "tdc_lsb_s"), 97.65625e-12, 1e-20);
   // Afterpulses: at most 0.08% of the events can reach an armed TDC: not modelled, bounded.
@@ -122,9 +125,9 @@ TEST(SpadEvaluation, PublishedFigures) {
   EXPECT_NEAR(by_id["table_5_1_signal_light"].ours, 73.98, 0.01);
   EXPECT_NEAR(by_id["table_5_1_background_light"].ours, 140.0, 0.01);
   EXPECT_NEAR(by_id["table_5_1_sbr_max"].ours, 100.0, 0.01);
-  EXPECT_NEAR(by_id["table_5_1_sbr_min"].ours, -50.0, 0.01);
-  EXPECT_NEAR(by_id["table_5_1_accuracy_best"].ours, 1.451e-3, 0.01e-3);
-  EXPECT_NEAR(by_id["table_5_1_accuracy_worst"].ours, 6.821e-3, 0.01e-3);
+  EXPECT_NEAR(by_id["table_5_1_sbr_min"].ours, -52.0, 0.01);
+  EXPECT_NEAR(by_id["table_5_1_accuracy_best"].ours, 1.4515e-3, 0.01e-3);
+  EXPECT_NEAR(by_id["table_5_1_accuracy_worst"].ours, 7.068e-3, 0.01e-3);
   for (const char* id : {"table_5_1_background_light", "table_5_1_sbr_max", "table_5_1_sbr_min",
                          "table_5_1_accuracy_best", "table_5_1_accuracy_worst", "tdc_lsb_thesis_text"})
     EXPECT_FALSE(by_id[id].reproduced()) << id;

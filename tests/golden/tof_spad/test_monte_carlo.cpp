@@ -1,17 +1,18 @@
-// Monte Carlo of the same model, cycle by cycle, against the closed forms: the expected
+// Monte Carlo of the same physics, cycle by cycle, against the closed forms: the expected
 // histogram (bin counts within 5 standard errors) and the estimator's mean and variance (within
 // 5 standard errors), at a low-rate point and a pile-up-heavy one.
 //
-// The simulation is independent of the closed form's bin integrals and chain: photons of the TDC
-// group arrive in continuous time (Poisson background from the arming time on, Poisson number of
-// Gaussian echo photons), the first one stops the TDC, the bin comes from the actual edges, the
-// hit is ours with probability 1 / s, and the blocking re-arms the group after the same number of
-// phase bins as in the model.
+// The simulation is independent of the closed form's bins, laws and chain: every SPAD of the TDC
+// group is followed in continuous time (Poisson background, Poisson-many Gaussian echo photons
+// per pulse at the golden IRF, non-paralysable dead time), the first avalanche at or after the
+// arming stops the TDC, its bin comes from the actual edges, and the TDC re-arms at the start of
+// that bin + the blocking (or at the next START).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <queue>
 #include <random>
 
 #include "golden/tof_spad/point_model.h"
@@ -20,66 +21,115 @@
 namespace rangesim::golden::spad {
 namespace {
 
-class CycleSimulator {
+class GroupSimulator {
  public:
-  CycleSimulator(const SpadModel& m, double signal_Hz, double background_Hz, double distance_m, unsigned long long seed)
-      : m_(m),
-        a_(make_arrivals(m.config(), signal_Hz, background_Hz, distance_m)),
-        in_(m.pile_up_input({})),
-        rng_(seed) {}
+  GroupSimulator(const SpadModel& m, double signal_Hz, double background_Hz, double distance_m, unsigned long long seed)
+      : m_(m), a_(make_arrivals(m.config(), signal_Hz, background_Hz, distance_m)), rng_(seed) {
+    const PileUpInput blocks = m.pile_up_input({});
+    block_event_ = blocks.block_event_bins, block_overflow_ = blocks.block_overflow_bins;
+    spads_.resize(static_cast<size_t>(m.config().tdc.columns_per_tdc));
+  }
 
-  // One histogram of n cycles (state carries over from the previous call, as a sensor's does).
+  // One histogram of n cycles of SPAD 0 (state carries over from the previous call, as a sensor's does).
   HistogramCounts run(long n) {
     const TdcBins& b = m_.bins();
     const int np = b.phase_bins, codes = b.codes;
-    const double s = m_.share(), period = b.period_s;
-    const double bg_rate = s * a_.live_fraction * a_.uniform_rate_Hz;
-    std::poisson_distribution<int> echo_photons(s * a_.live_fraction * a_.signal_per_cycle);
-    std::normal_distribution<double> jitter(a_.round_trip_s, a_.irf_sigma_s);
-    std::exponential_distribution<double> background(bg_rate > 0 ? bg_rate : 1.0);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    HistogramCounts h{std::vector<double>(static_cast<size_t>(codes), 0.0), {}, s};
+    const double period = b.period_s, dead = m_.config().spad.dead_time_s;
+    HistogramCounts h{std::vector<double>(static_cast<size_t>(codes), 0.0), {}, m_.share()};
     std::vector<double> armed_diff(static_cast<size_t>(np) + 1, 0.0);
-    for (long c = 0; c < n; ++c) {
-      if (blind_ > 0) {
-        --blind_;
-        continue;
+    double full_cycles = 0;
+    // Armed bins [from, to] (bins counted from this run's first START).
+    const auto add_armed = [&](long long from, long long to) {
+      from = std::max(from, 0LL);  // armed since before this run
+      if (from > to) return;
+      const long long kf = from / np, kt = to / np;
+      const int pf = static_cast<int>(from % np), pt = static_cast<int>(to % np);
+      if (kf == kt) {
+        armed_diff[static_cast<size_t>(pf)] += 1, armed_diff[static_cast<size_t>(pt) + 1] -= 1;
+        return;
       }
-      const double t_arm = b.edges_s[static_cast<size_t>(phase_)];
-      double t = bg_rate > 0 ? t_arm + background(rng_) : INFINITY;
-      for (int k = echo_photons(rng_); k > 0; --k) {
-        const double x = jitter(rng_);
-        if (x >= t_arm && x >= 0 && x < period) t = std::min(t, x);
-      }
-      armed_diff[static_cast<size_t>(phase_)] += 1;
-      if (!(t < period)) {  // no hit: armed to the end, next cycle from START
-        armed_diff[static_cast<size_t>(np)] -= 1;
-        phase_ = 0;
-        continue;
-      }
-      const int i = static_cast<int>(std::upper_bound(b.edges_s.begin(), b.edges_s.end(), t) - b.edges_s.begin()) - 1;
-      armed_diff[static_cast<size_t>(i) + 1] -= 1;
-      if (i < codes && unit(rng_) * s < 1.0) h.events[static_cast<size_t>(i)] += 1;
-      const long dest = i + (i < codes ? in_.block_event_bins : in_.block_overflow_bins);
-      if (dest < np) {
-        phase_ = 0;
-      } else {
-        phase_ = static_cast<int>(dest % np);
-        blind_ = dest / np - 1;
-      }
+      armed_diff[static_cast<size_t>(pf)] += 1, armed_diff[static_cast<size_t>(np)] -= 1;
+      full_cycles += static_cast<double>(kt - kf - 1);
+      armed_diff[0] += 1, armed_diff[static_cast<size_t>(pt) + 1] -= 1;
+    };
+    armed_from_ -= static_cast<long long>(np) * done_;  // bins relative to this run
+    t0_ += static_cast<double>(done_) * period;
+    done_ = n;
+    for (;;) {
+      // The next avalanche of the group (SPADs are independent: the earliest one's).
+      int who = 0;
+      for (size_t j = 1; j < spads_.size(); ++j)
+        if (next(j) < next(static_cast<size_t>(who))) who = static_cast<int>(j);
+      const double t = next(static_cast<size_t>(who)) - t0_;
+      if (t >= static_cast<double>(n) * period) break;
+      fire(static_cast<size_t>(who), dead);
+      const long long cycle = static_cast<long long>(std::floor(t / period));
+      const double phase = t - static_cast<double>(cycle) * period;
+      const int bin = std::clamp(
+          static_cast<int>(std::upper_bound(b.edges_s.begin(), b.edges_s.end(), phase) - b.edges_s.begin()) - 1, 0,
+          np - 1);
+      const long long abs_bin = cycle * np + bin;
+      if (abs_bin < armed_from_) continue;  // the TDC is blind
+      add_armed(armed_from_, abs_bin);
+      if (bin < codes && who == 0) h.events[static_cast<size_t>(bin)] += 1;
+      armed_from_ = std::max(abs_bin + (bin < codes ? block_event_ : block_overflow_), (cycle + 1) * np);
     }
-    double armed = 0;
-    for (int i = 0; i < codes; ++i) h.armed.push_back(armed += armed_diff[static_cast<size_t>(i)]);
+    add_armed(armed_from_, static_cast<long long>(n) * np - 1);
+    double run = 0;
+    for (int i = 0; i < codes; ++i) h.armed.push_back((run += armed_diff[static_cast<size_t>(i)]) + full_cycles);
     return h;
   }
 
  private:
+  struct Spad {
+    double dead_until = -1e300;
+    double next_uniform = -1;   // absolute time of the next background / dark arrival
+    long long echo_cycle = -1;  // cycle of the buffered echo photons
+    std::vector<double> echo;   // their absolute times, latest first
+    double next = -1;           // the next avalanche (absolute time), -1: to draw
+  };
+
+  // The SPAD's next arrival time (absolute).
+  double arrival(Spad& s) {
+    const double period = m_.bins().period_s;
+    if (s.next_uniform < 0) s.next_uniform = draw_exp(a_.uniform_rate_Hz);
+    while (s.echo.empty() && a_.signal_per_cycle > 0) {
+      // Cycles without an echo photon are skipped (geometric), then a zero-truncated Poisson count.
+      s.echo_cycle += 1 + static_cast<long long>(std::floor(draw_exp(1.0) / a_.signal_per_cycle));
+      int k = 0;
+      while (k == 0) k = std::poisson_distribution<int>(a_.signal_per_cycle)(rng_);
+      std::normal_distribution<double> shape(a_.round_trip_s, a_.irf_sigma_s);
+      for (int i = 0; i < k; ++i) s.echo.push_back(static_cast<double>(s.echo_cycle) * period + shape(rng_));
+      std::sort(s.echo.begin(), s.echo.end(), std::greater<double>());
+    }
+    return std::min(s.next_uniform, s.echo.empty() ? INFINITY : s.echo.back());
+  }
+  void consume(Spad& s, double t) {
+    if (!s.echo.empty() && s.echo.back() == t)
+      s.echo.pop_back();
+    else
+      s.next_uniform += draw_exp(a_.uniform_rate_Hz);
+  }
+  // The SPAD's next avalanche: its first arrival while live.
+  double next(size_t j) {
+    Spad& s = spads_[j];
+    while (s.next < 0) {
+      const double t = arrival(s);
+      consume(s, t);
+      if (t >= s.dead_until) s.next = t;
+    }
+    return s.next;
+  }
+  void fire(size_t j, double dead) { spads_[j].dead_until = spads_[j].next + dead, spads_[j].next = -1; }
+  double draw_exp(double rate) { return rate > 0 ? std::exponential_distribution<double>(rate)(rng_) : INFINITY; }
+
   const SpadModel& m_;
   Arrivals a_;
-  PileUpInput in_;
   std::mt19937_64 rng_;
-  int phase_ = 0;
-  long blind_ = 0;
+  long long block_event_ = 0, block_overflow_ = 0;
+  std::vector<Spad> spads_;
+  long long armed_from_ = 0, done_ = 0;
+  double t0_ = 0;
 };
 
 struct McPoint {
@@ -87,8 +137,8 @@ struct McPoint {
   double signal_Hz, background_Hz, distance_m;
 };
 // Low rate: ~2% of the cycles stop the shared TDC. Pile-up heavy: the group sees ~1 background
-// photon per cycle; 4-cycle blocking after every hit; only ~12% of the cycles are armed at the
-// echo.
+// photon per cycle (each SPAD 0.6 per dead time); 4-cycle blocking after every hit; only ~12% of
+// the cycles are armed at the echo.
 const McPoint kLowRate{"low-rate", 1e6, 1e4, 2.2};
 const McPoint kPileUp{"pile-up", 4e6, 2e7, 2.2};
 
@@ -102,7 +152,7 @@ TofSpadConfig config_with_cycles(double cycles) {
 void check_histogram(const McPoint& pt) {
   const long n = 200000;
   const SpadModel m(config_with_cycles(static_cast<double>(n)));
-  CycleSimulator sim(m, pt.signal_Hz, pt.background_Hz, pt.distance_m, 12345);
+  GroupSimulator sim(m, pt.signal_Hz, pt.background_Hz, pt.distance_m, 12345);
   sim.run(20000);  // reach the stationary arming phase first
   const HistogramCounts h = sim.run(n);
   const PileUpHistogram p = m.histogram(pt.signal_Hz, pt.background_Hz, pt.distance_m);
@@ -124,13 +174,17 @@ void check_histogram(const McPoint& pt) {
 TEST(SpadMonteCarlo, ExpectedHistogramLowRate) { check_histogram(kLowRate); }
 TEST(SpadMonteCarlo, ExpectedHistogramPileUp) { check_histogram(kPileUp); }
 
-// Estimator moments: `trials` histograms of `cycles` cycles each.
-void check_estimator(const McPoint& pt, bool coates, double cycles, int trials) {
+// Estimator moments: `trials` histograms of `cycles` cycles each. `systematic_s`: the mean's
+// allowed systematic gap. The renewal chain's one approximation (the losers' laws independent)
+// shifts the echo's centroid when several SPADs of the group fire on the same echo: 1.7 ps at the
+// pile-up point (0.1 photons per SPAD and pulse, 4 columns), nothing measurable with one column
+// or at the evaluation grid's 1 Mcounts/s (SpadGolden.EstimatorMomentsCoatesGridMaxSignal).
+void check_estimator(const McPoint& pt, bool coates, double cycles, int trials, double systematic_s = 0) {
   const SpadModel m(config_with_cycles(cycles));
   const EstimatorConfig est{7, coates, true};
   const PointResult cf = m.evaluate(pt.signal_Hz, pt.background_Hz, pt.distance_m, est);
   ASSERT_EQ(cf.detect, "detectable") << pt.name;
-  CycleSimulator sim(m, pt.signal_Hz, pt.background_Hz, pt.distance_m, coates ? 777 : 778);
+  GroupSimulator sim(m, pt.signal_Hz, pt.background_Hz, pt.distance_m, coates ? 777 : 778);
   sim.run(20000);
   double sum = 0, sum2 = 0;
   int missed = 0;
@@ -152,14 +206,14 @@ void check_estimator(const McPoint& pt, bool coates, double cycles, int trials) 
               pt.name, coates ? "Coates" : "raw", mean * 1e12, cf_mean * 1e12, se_mean * 1e12, std::sqrt(var) * 1e12,
               std::sqrt(cf_var) * 1e12, missed);
   EXPECT_EQ(missed, 0);
-  EXPECT_NEAR(mean, cf_mean, 5 * se_mean) << pt.name;
+  EXPECT_NEAR(mean, cf_mean, 5 * se_mean + systematic_s) << pt.name;
   EXPECT_NEAR(var, cf_var, 5 * se_var) << pt.name;
 }
 
 TEST(SpadMonteCarlo, EstimatorLowRateCoates) { check_estimator(kLowRate, true, 20000, 1000); }
 TEST(SpadMonteCarlo, EstimatorLowRateRaw) { check_estimator(kLowRate, false, 20000, 1000); }
-TEST(SpadMonteCarlo, EstimatorPileUpCoates) { check_estimator(kPileUp, true, 40000, 1000); }
-TEST(SpadMonteCarlo, EstimatorPileUpRaw) { check_estimator(kPileUp, false, 40000, 1000); }
+TEST(SpadMonteCarlo, EstimatorPileUpCoates) { check_estimator(kPileUp, true, 40000, 1000, 2e-12); }
+TEST(SpadMonteCarlo, EstimatorPileUpRaw) { check_estimator(kPileUp, false, 40000, 1000, 2e-12); }
 
 }  // namespace
 }  // namespace rangesim::golden::spad
