@@ -59,6 +59,18 @@ bool wait_for(const fs::path& p, double seconds) {
   return true;
 }
 
+// True once `p` holds a line starting with `prefix` (a journal's first finished point).
+bool wait_for_line(const fs::path& p, const std::string& prefix, double seconds) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (;;) {
+    std::ifstream in(p);
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind(prefix, 0) == 0) return true;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > seconds) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
 // A Monte Carlo sweep of a few seconds: its last point costs ~1.4 s a trial on one thread.
 const std::string kSlowMc =
     "evaluate tof-spad --signal 1e5:1e8:4 --background 1e5:1e5:1 --trials 3 --threads 1 --no-plots";
@@ -76,6 +88,9 @@ TEST(Reliability, OneWriterPerFolderAndResumeNeverJoinsALiveRun) {
   const ChildResult resume = w.run(kSlowMc + " --out d --resume");
   EXPECT_EQ(resume.exit_code, 2) << resume.err;
   EXPECT_NE(resume.err.find("another rangesim run is writing there"), std::string::npos) << resume.err;
+  // Stop it inside the Monte Carlo (its first point journaled), not in the golden grid before it:
+  // only the Monte Carlo has points to keep and a --resume to offer.
+  ASSERT_TRUE(wait_for_line(w.work / "d" / ".staging-sweep" / "evaluate.journal", "P ", 60));
   ::kill(first.pid, SIGTERM);
   const ChildResult stopped = wait_child(first);
   EXPECT_EQ(stopped.exit_code, 143) << stopped.err;

@@ -116,6 +116,9 @@ RC_GTEST_PROP(LockinStress, MoreBackgroundNeverLowersNoise, ()) {
   // The offset charge of 0.3 V_sat is background-independent noise; with it most drawn points
   // fail the preconditions below (rapidcheck gives up), so the property is checked without it.
   cfg.nonideal.offset_shot_noise = false;
+  // The range-noise detectability rule off (as `--set readout.max_range_noise_fraction=1e6`):
+  // the property is the noise's, and with the rule most drawn points are not detectable.
+  cfg.readout.max_range_noise_fraction = 1e6;
   cfg.readout.adc_full_scale_V = 4 * cfg.pixel.source_follower_gain * cfg.pixel.saturation_voltage_V;
   cfg.noise.read_noise_V = 100 * adc_lsb_V(cfg);
   const double d = distance_for(cfg, *rc::gen::map(rc::gen::inRange(1, 1000), [](int i) { return i / 1000.0; }));
@@ -241,9 +244,14 @@ TEST(LockinHazards, HugeAggregatedChargeSaturates) {
   cfg.gates.accumulations_per_frame = 1000000000;
   TofLockinSensorKernel k(cfg, aggregated(true, 3), 1, 1, {LockinPixelStimulus{1.0, 1.0, 0.3e-3}}, 1);
   k.run();
+  // The read noise is added after the clip (the source follower reads a saturated FD), so a
+  // saturated tap reads the top code within 6 sigma of it, never the bottom.
+  const double lsb = cfg.readout.adc_full_scale_V / std::ldexp(1.0, cfg.readout.adc_bits);
+  const long long top = (1LL << cfg.readout.adc_bits) - 1;
+  const long long margin = static_cast<long long>(std::ceil(6 * cfg.noise.read_noise_V / lsb));
   for (int tap = 0; tap < 2; ++tap) {
     EXPECT_TRUE(std::isfinite(k.adc_input_V(0, 0, 0, tap)));
-    EXPECT_EQ(k.code(0, 0, 0, tap), (1LL << cfg.readout.adc_bits) - 1) << "tap " << tap;
+    EXPECT_GE(k.code(0, 0, 0, tap), top - margin) << "tap " << tap;
   }
 }
 

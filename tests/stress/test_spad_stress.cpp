@@ -113,7 +113,11 @@ RC_GTEST_PROP(SpadStress, ExpectedHistogramIsAProbabilityLaw, ()) {
   for (double a : h.armed_prob) RC_ASSERT(finite(a) && a >= 0 && a <= 1 + 1e-12);
   for (double q : h.hazard) RC_ASSERT(q >= 0 && q <= 1);
   RC_ASSERT(sum <= 1 + 1e-9);
-  RC_ASSERT(finite(h.cycles_per_live_cycle) && h.cycles_per_live_cycle >= 1 - 1e-12);
+  RC_LOG() << std::setprecision(17) << "cycles_per_live_cycle=" << h.cycles_per_live_cycle << " model=" << h.model
+           << "\n";
+  // 1e-9: the renewal chain sums its cycle lengths and armings over many bins and passes
+  // (0.99999999999899969 seen at a 10.7 GHz laser rate).
+  RC_ASSERT(finite(h.cycles_per_live_cycle) && h.cycles_per_live_cycle >= 1 - 1e-9);
   // Our pixel's share of the group's events is 1 / share exactly when every column sees the same
   // rates (or the neighbours none); otherwise the dead time makes it depend on the rates.
   const double f = cfg.tdc.neighbour_rate_fraction;
