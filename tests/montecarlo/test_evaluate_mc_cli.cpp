@@ -253,7 +253,7 @@ TEST(EvaluateMcCli, GoldenOutsideTheIntervalIsPrintedAndRecorded) {
   ASSERT_EQ(j["golden_outside_ci"].size(), 1u);
   const auto& miss = j["golden_outside_ci"][0];
   EXPECT_EQ(miss["quantity"], "accuracy_clean_m");
-  EXPECT_EQ(miss["background_V"].get<double>(), 0.0026);
+  EXPECT_EQ(miss["background"].get<double>(), 0.0026);
   EXPECT_GT(miss["golden"].get<double>(), miss["mc_hi"].get<double>());
   EXPECT_FALSE(miss["within_2_half_widths"].get<bool>());
   EXPECT_GT(miss["gap_half_widths"].get<double>(), 2.0);
