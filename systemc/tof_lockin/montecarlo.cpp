@@ -104,7 +104,6 @@ class Runner : public McPointRunner {
     const long long per_map = ambient ? 2 : 1;
     lk::CounterStream stream = lk::LockinPixelKernel::merged_stream(seed, 0, 0);
     double sum = 0;
-    McTrial out;
     for (long long f = 0; f < frames_; f += per_map) {
       long long codes[2][2] = {{0, 0}, {0, 0}};  // [LED, ambient][tap]
       for (long long j = 0; j < per_map; ++j) {
@@ -113,12 +112,10 @@ class Runner : public McPointRunner {
         codes[j][0] = law[0](stream), codes[j][1] = law[1](stream);
       }
       const double L = lk::TofLockinSensorKernel::range_from_codes(cfg_, adc_, range_m_, codes[0], codes[1]);
-      if (!std::isfinite(L)) return out;
+      if (!std::isfinite(L)) return {};  // a map without a range: the averaged value is missing
       sum += L;
     }
-    out.detected = true;
-    out.error = sum / static_cast<double>(frames_ / per_map) - cfg_.eval.distance_m;
-    return out;
+    return averaged(sum, frames_ / per_map);
   }
 
   // The sensor kernel's frames: one kernel for all the point's trials, restarted with the trial's
@@ -133,15 +130,12 @@ class Runner : public McPointRunner {
     lk::TofLockinSensorKernel& k = *kernel_;
     k.run();  // bounded: the frames' schedule has a fixed number of events
     double sum = 0;
-    McTrial out;
     for (long long m = 0; m < k.range_maps(); ++m) {
       const double L = k.range_m(m, 0, 0);
-      if (!std::isfinite(L)) return out;  // a map without a range: the averaged value is missing
+      if (!std::isfinite(L)) return {};  // a map without a range: the averaged value is missing
       sum += L;
     }
-    out.detected = true;
-    out.error = sum / static_cast<double>(k.range_maps()) - cfg_.eval.distance_m;
-    return out;
+    return averaged(sum, k.range_maps());
   }
 
   // The same frames without the sequencer: the pixel's reset and aggregated draw, the column ADC
@@ -153,7 +147,6 @@ class Runner : public McPointRunner {
     if (merged_) stream = lk::LockinPixelKernel::merged_stream(seed, 0, 0);
     opt_.seed = seed;
     double sum = 0;
-    McTrial out;
     for (long long f = 0; f < frames_; f += per_map) {
       long long codes[2][2] = {{0, 0}, {0, 0}};  // [LED, ambient][tap]
       for (long long j = 0; j < per_map; ++j) {
@@ -172,12 +165,18 @@ class Runner : public McPointRunner {
         }
       }
       const double L = lk::TofLockinSensorKernel::range_from_codes(cfg_, adc_, range_m_, codes[0], codes[1]);
-      if (!std::isfinite(L)) return out;
+      if (!std::isfinite(L)) return {};  // a map without a range: the averaged value is missing
       sum += L;
     }
-    out.detected = true;
-    out.error = sum / static_cast<double>(frames_ / per_map) - cfg_.eval.distance_m;
-    return out;
+    return averaged(sum, frames_ / per_map);
+  }
+
+  // A trial whose every map gave a range: the error of their average.
+  McTrial averaged(double sum, long long maps) const {
+    McTrial t;
+    t.detected = true;
+    t.error = sum / static_cast<double>(maps) - cfg_.eval.distance_m;
+    return t;
   }
 
   TofLockinConfig cfg_;

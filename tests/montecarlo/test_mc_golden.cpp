@@ -13,6 +13,7 @@
 #include "app/montecarlo/mc_stats.h"
 #include "core/physics.h"
 #include "core/preset.h"
+#include "mc_point_run.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "golden/ls_demodulation/evaluation.h"
 #include "golden/common/position_noise.h"
@@ -28,17 +29,6 @@ namespace rangesim::app::mc {
 namespace {
 
 using namespace rangesim::mc;  // the sensors' trial models (systemc/<sensor>/montecarlo.h)
-
-McPointStats run(const McModel& m, double signal, double background, long long trials, std::uint64_t index = 0) {
-  auto runner = m.point(signal, background, point_key(1, index));
-  std::vector<double> errors;
-  std::vector<char> outlier;
-  for (long long t = 0; t < trials; ++t) {
-    const McTrial r = runner->trial(t);
-    if (r.detected) errors.push_back(r.error), outlier.push_back(r.outlier);
-  }
-  return summarise_trials(trials, errors, outlier);
-}
 
 // golden within 2 CI half-widths of the MC value, plus a relative slack for approximations.
 void expect_agrees(const McInterval& mc, double golden, double rel_slack, const char* what) {
@@ -75,7 +65,7 @@ TEST(McGolden, LsConventionalMeanAndVarianceAtFixedSpot) {
     const double x0 = row.centre_pixel - 0.5 + u;
     const golden::PositionMoments g = golden::position_moments(row, x0);
     ASSERT_TRUE(g.exact);
-    const McPointStats s = run(LsConventionalMc(cfg, SpotPlacement{u}), sig, bg, 4000);
+    const McPointStats s = run_mc_point(LsConventionalMc(cfg, SpotPlacement{u}), sig, bg, 4000);
     expect_agrees(s.p_detect, g.p_detect, 0, "p_detect");
     expect_agrees(s.bias, g.mean_px - x0, 0, "mean error (px)");
     expect_agrees(squared(s.std), g.var_px2, 0, "variance (px^2)");
@@ -97,7 +87,7 @@ TEST(McGolden, LsConventionalAccuracyOverSpotPositions) {
     ASSERT_EQ(g.detect, golden::Detect::Detectable);
     EXPECT_TRUE(g.subpixel_converged);
     EXPECT_LE(g.subpixel_error_estimate, cfg.grid.subpixel_tolerance);
-    const McPointStats s = run(LsConventionalMc(cfg), sig, bg, 6000);
+    const McPointStats s = run_mc_point(LsConventionalMc(cfg), sig, bg, 6000);
     expect_agrees(s.rms, g.accuracy_px, 0.0, "accuracy (px)");
   }
 }
@@ -110,7 +100,7 @@ TEST(McGolden, LsConventionalDetectionEdge) {
   const LsConventionalConfig cfg = ls_conventional_from_params(load_preset("ls-conventional"));
   const golden::OperatingPoint g = golden::evaluate_point(cfg, 0.01, 0.001);
   ASSERT_EQ(g.detect, golden::Detect::Detectable);
-  const McPointStats s = run(LsConventionalMc(cfg), 0.01, 0.001, 3000);
+  const McPointStats s = run_mc_point(LsConventionalMc(cfg), 0.01, 0.001, 3000);
   EXPECT_GT(s.p_detect.value, 0.05);
   EXPECT_LT(s.p_detect.value, 0.95);
   expect_probability_agrees(s.p_detect, g.p_detect, "P(detect) at the edge");
@@ -135,7 +125,7 @@ TEST(McGolden, LsConventionalFormerMisses) {
     SCOPED_TRACE(sig);
     const golden::OperatingPoint g = golden::evaluate_point(cfg, sig, bg);
     ASSERT_EQ(g.detect, golden::Detect::Detectable);
-    const McPointStats s = run(LsConventionalMc(cfg), sig, bg, 100000, static_cast<std::uint64_t>(++index));
+    const McPointStats s = run_mc_point(LsConventionalMc(cfg), sig, bg, 100000, static_cast<std::uint64_t>(++index));
     expect_probability_agrees(s.p_detect, g.p_detect, "P(detect)");
     expect_agrees(s.rms, g.accuracy_px, 0.0, "accuracy (px)");
     expect_catches_three_percent(s.rms, g.accuracy_px, "accuracy (px)");
@@ -158,7 +148,7 @@ TEST(McGolden, LsConventionalOutliersSplitOff) {
     ASSERT_EQ(g.detect, golden::Detect::Detectable);
     EXPECT_GT(g.p_outlier, 1e-4);
     EXPECT_GT(g.accuracy_px, 3 * g.accuracy_clean_px);  // the outliers dominate the total
-    const McPointStats s = run(LsConventionalMc(cfg), sig, 1.0, 20000, static_cast<std::uint64_t>(++index));
+    const McPointStats s = run_mc_point(LsConventionalMc(cfg), sig, 1.0, 20000, static_cast<std::uint64_t>(++index));
     expect_probability_agrees(s.p_outlier, g.p_outlier, "P(outlier)");
     expect_probability_agrees(s.p_detect, g.p_detect, "P(detect)");
     expect_agrees(s.rms_clean, g.accuracy_clean_px, 0.0, "accuracy without outliers (px)");
@@ -171,7 +161,7 @@ TEST(McGolden, TofLockinMeanAndVariance) {
   const double is = 3e-10, ib = 1e-10;
   const golden::LockinPoint g = golden::evaluate_point(cfg, is, ib, cfg.eval.distance_m, cfg.eval.frames_averaged);
   ASSERT_EQ(g.detect, golden::LockinDetect::Detectable);
-  const McPointStats s = run(TofLockinMc(cfg), is, ib, 3000);
+  const McPointStats s = run_mc_point(TofLockinMc(cfg), is, ib, 3000);
   EXPECT_EQ(s.detected, s.trials);
   expect_agrees(s.bias, g.bias_m, 0, "bias (m)");
   const double var = g.std_m * g.std_m / static_cast<double>(cfg.eval.frames_averaged);
@@ -188,7 +178,7 @@ TEST(McGolden, TofSpadMeanAndVariance) {
   ASSERT_EQ(g.detect, "detectable");
   ASSERT_TRUE(g.moments.defined);
   // The golden histogram bounds afterpulses but does not model them: off for the comparison.
-  const McPointStats s = run(TofSpadMc(cfg, false), sig, bg, 500);
+  const McPointStats s = run_mc_point(TofSpadMc(cfg, false), sig, bg, 500);
   EXPECT_EQ(s.detected, s.trials);
   expect_agrees(s.bias, g.bias_m, 0, "bias (m)");
   expect_agrees(squared(s.std), g.std_m * g.std_m, 0.10, "variance (m^2)");
@@ -212,7 +202,7 @@ TEST(McGolden, TofSpadDarkCountSpreadOverTheChip) {
   uniform.fixed_pattern.dsnu_rms = 0;
   const golden::spad::PointResult plain = golden::spad::SpadModel(uniform).evaluate(sig, bg, cfg.evaluation.distance_m);
   ASSERT_EQ(g.detect, "detectable");
-  const McPointStats s = run(TofSpadMc(cfg, false), sig, bg, 1000);
+  const McPointStats s = run_mc_point(TofSpadMc(cfg, false), sig, bg, 1000);
   expect_agrees(s.rms, g.accuracy_m, 0.0, "accuracy over the chip (m)");
   EXPECT_GT(std::fabs(s.rms.value - plain.accuracy_m), 2 * s.rms.half_width());
 }
@@ -222,7 +212,7 @@ TEST(McGolden, LsDemodulationAccuracy) {
   const double sig = cfg.grid.signal_min_A * 30, bg = cfg.grid.background_min_A * 10;
   const golden::DemodPoint g = golden::evaluate_demod_point(cfg, sig, bg);
   ASSERT_EQ(g.detect, golden::DemodDetect::Detectable);
-  const McPointStats s = run(LsDemodulationMc(cfg), sig, bg, 600);
+  const McPointStats s = run_mc_point(LsDemodulationMc(cfg), sig, bg, 600);
   expect_agrees(s.rms, g.accuracy.accuracy_px, 0.05, "accuracy (px)");
 }
 
@@ -240,7 +230,7 @@ TEST(McGolden, LsDemodulationOutliersSplitOff) {
   ASSERT_EQ(g.detect, golden::DemodDetect::Detectable);
   EXPECT_GT(g.accuracy.p_outlier, 1e-3);
   EXPECT_GT(g.accuracy.accuracy_px, 3 * g.accuracy.accuracy_clean_px);
-  const McPointStats s = run(LsDemodulationMc(cfg), sig, bg, 20000, 3);
+  const McPointStats s = run_mc_point(LsDemodulationMc(cfg), sig, bg, 20000, 3);
   expect_probability_agrees(s.p_outlier, g.accuracy.p_outlier, "P(outlier)");
   expect_probability_agrees(s.p_detect, g.accuracy.p_detect, "P(detect)");
   expect_agrees(s.rms_clean, g.accuracy.accuracy_clean_px, 0.0, "accuracy without outliers (px)");

@@ -8,6 +8,7 @@
 
 #include "app/montecarlo/mc_stats.h"
 #include "core/preset.h"
+#include "mc_point_run.h"
 #include "golden/ls_conventional/evaluation.h"
 #include "golden/ls_demodulation/evaluation.h"
 #include "systemc/ls_conventional/montecarlo.h"
@@ -24,23 +25,13 @@ using namespace rangesim::mc;
 // wide (the errors' fourth moment is the outliers'), about 25 %, so this test cannot tell a 3 %
 // error of golden's total. What it can tell, and the default suite cannot: the outliers the MC sees
 // are the ones golden counts (the clean accuracy taken for the total fails by many half-widths).
-McPointStats run(const McModel& m, double signal, double background, long long trials, std::uint64_t index) {
-  auto runner = m.point(signal, background, point_key(1, index));
-  std::vector<double> errors;
-  std::vector<char> outlier;
-  for (long long t = 0; t < trials; ++t) {
-    const McTrial r = runner->trial(t);
-    if (r.detected) errors.push_back(r.error), outlier.push_back(r.outlier);
-  }
-  return summarise_trials(trials, errors, outlier);
-}
 
 TEST(McGoldenHeavy, LsConventionalTotalAccuracyWithOutliers) {
   const LsConventionalConfig cfg = ls_conventional_from_params(load_preset("ls-conventional"));
   const double sig = 0.01 * std::pow(150.0, 0.6), bg = 1.0;  // 0.202 V: --signal 0.01:1.5:6
   const golden::OperatingPoint g = golden::evaluate_point(cfg, sig, bg);
   ASSERT_EQ(g.detect, golden::Detect::Detectable);
-  const McPointStats s = run(LsConventionalMc(cfg), sig, bg, 200000, 21);
+  const McPointStats s = run_mc_point(LsConventionalMc(cfg), sig, bg, 200000, 21);
   EXPECT_GT(s.outliers, 10);
   EXPECT_LE(std::fabs(s.rms.value - g.accuracy_px), 2 * s.rms.half_width())
       << "total: MC " << s.rms.value << " [" << s.rms.lo << ", " << s.rms.hi << "], golden " << g.accuracy_px;
@@ -58,7 +49,7 @@ TEST(McGoldenHeavy, LsDemodulationOutliersSplitOff) {
   const double sig = 2.86601e-11, bg = 2.65302e-10;
   const golden::DemodPoint g = golden::evaluate_demod_point(cfg, sig, bg);
   ASSERT_EQ(g.detect, golden::DemodDetect::Detectable);
-  const McPointStats s = run(LsDemodulationMc(cfg), sig, bg, 100000, 3);
+  const McPointStats s = run_mc_point(LsDemodulationMc(cfg), sig, bg, 100000, 3);
   const double gc = g.accuracy.accuracy_clean_px;
   EXPECT_LE(std::fabs(s.rms_clean.value - gc), 2 * s.rms_clean.half_width())
       << "MC " << s.rms_clean.value << " [" << s.rms_clean.lo << ", " << s.rms_clean.hi << "], golden " << gc;

@@ -16,12 +16,14 @@
 
 #include "../systemc/ls_demodulation/demod_test_helpers.h"
 #include "app/bench/bench_stats.h"
+#include "comparison_text.h"
 #include "golden/ls_demodulation/front_end.h"
 
 namespace rangesim::systemc {
 namespace {
 
 using app::bench::compare_samples;
+using app::bench::describe;
 using app::bench::TwoSampleComparison;
 
 // The preset's physics on `rows` x `columns` pixels with N = `periods` correlation periods.
@@ -53,11 +55,6 @@ std::vector<double> all_diff_V(const DemodRunResult& r) {
   std::vector<double> d;
   for (const auto& f : r.frames) d.insert(d.end(), f.diff_V.begin(), f.diff_V.end());
   return d;
-}
-
-std::string describe(const TwoSampleComparison& c) {
-  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) +
-         " SE (variance), KS p " + ::testing::PrintToString(c.ks_p);
 }
 
 TEST(DemodAggregation, NoiseFreeEqualsPerPeriod) {

@@ -7,16 +7,17 @@
 
 #include "../systemc/tof_lockin/lockin_sc_test_util.h"
 #include "app/bench/bench_stats.h"
+#include "comparison_text.h"
+#include "lockin_samples.h"
 
 namespace rangesim::systemc::lockin {
 namespace {
 
 using app::bench::compare_samples;
+using app::bench::describe;
 using app::bench::TwoSampleComparison;
 
-struct Samples {
-  std::vector<double> tap[2], range;
-};
+using test::Samples;
 
 Samples run(const TofLockinConfig& cfg, bool aggregated, double signal_A, std::uint64_t seed) {
   LockinSimOptions o;
@@ -28,19 +29,7 @@ Samples run(const TofLockinConfig& cfg, bool aggregated, double signal_A, std::u
   TofLockinSensorKernel k(cfg, o, 1, columns,
                           std::vector<LockinPixelStimulus>(columns, {signal_A, 1e-10, 2 * 2.0 / 299792458.0}), frames);
   k.run();
-  Samples s;
-  for (const auto& rec : k.frame_records())
-    if (rec.led_on)
-      for (int c = 0; c < columns; ++c)
-        for (int t = 0; t < 2; ++t) s.tap[t].push_back(k.adc_input_V(rec.frame, 0, c, t));
-  for (long long m = 0; m < k.range_maps(); ++m)
-    for (int c = 0; c < columns; ++c) s.range.push_back(k.range_m(m, 0, c));
-  return s;
-}
-
-std::string describe(const TwoSampleComparison& c) {
-  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) +
-         " SE (variance), KS p " + ::testing::PrintToString(c.ks_p);
+  return test::led_samples(k, columns);
 }
 
 TEST(LockinAggregation, StatisticallyIdenticalToPerClock) {

@@ -12,17 +12,18 @@
 
 #include "../systemc/tof_lockin/lockin_sc_test_util.h"
 #include "app/bench/bench_stats.h"
+#include "comparison_text.h"
+#include "lockin_samples.h"
 #include "golden/tof_lockin/tap_charge.h"
 
 namespace rangesim::systemc::lockin {
 namespace {
 
 using app::bench::compare_samples;
+using app::bench::describe;
 using app::bench::TwoSampleComparison;
 
-struct Samples {
-  std::vector<double> tap[2], range;
-};
+using test::Samples;
 
 struct Run {
   bool merged = true, tables = true;
@@ -41,19 +42,7 @@ Samples run(const Run& r) {
   TofLockinSensorKernel k(cfg, o, 1, columns, test::uniform(columns, r.signal_A, r.background_A, r.distance_m), frames);
   k.run();
   EXPECT_EQ(k.merged_draws(), r.merged);
-  Samples s;
-  for (const auto& rec : k.frame_records())
-    if (rec.led_on)
-      for (int c = 0; c < columns; ++c)
-        for (int t = 0; t < 2; ++t) s.tap[t].push_back(k.adc_input_V(rec.frame, 0, c, t));
-  for (long long m = 0; m < k.range_maps(); ++m)
-    for (int c = 0; c < columns; ++c) s.range.push_back(k.range_m(m, 0, c));
-  return s;
-}
-
-std::string describe(const TwoSampleComparison& c) {
-  return ::testing::PrintToString(c.mean_z) + " SE (mean), " + ::testing::PrintToString(c.var_z) +
-         " SE (variance), KS p " + ::testing::PrintToString(c.ks_p);
+  return test::led_samples(k, columns);
 }
 
 void expect_indistinguishable(const Samples& a, const Samples& b, bool ranges = true) {
