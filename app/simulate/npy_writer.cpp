@@ -1,6 +1,7 @@
 #include "app/simulate/npy_writer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -38,25 +39,60 @@ std::string matrix_header(const std::vector<std::vector<double>>& rows, std::siz
   return header("'<f8'", "(" + std::to_string(rows.size()) + ", " + std::to_string(columns) + ")");
 }
 
+using Kind = systemc::Table::Kind;
+
+const char* npy_type(Kind k) {
+  switch (k) {
+    case Kind::Integer: return "<i8";
+    case Kind::Index: return "<i4";
+    case Kind::Flag: return "|b1";
+    case Kind::Real: break;
+  }
+  return "<f8";
+}
+
+std::size_t cell_bytes(Kind k) { return k == Kind::Flag ? 1 : k == Kind::Index ? 4 : 8; }
+
 std::string table_header(const systemc::Table& t) {
   std::string descr = "[";
   for (std::size_t c = 0; c < t.columns.size(); ++c)
-    descr += (c ? ", ('" : "('") + t.columns[c].name + (t.columns[c].integer ? "', '<i8')" : "', '<f8')");
+    descr += (c ? ", ('" : "('") + t.columns[c].name + "', '" + npy_type(t.columns[c].kind) + "')";
   descr += "]";
   return header(descr, "(" + std::to_string(t.rows()) + ",)");
 }
 
-// n whole rows of `t`'s cells as record bytes at `p` (integer columns converted to int64).
+std::size_t record_bytes(const systemc::Table& t) {
+  std::size_t n = 0;
+  for (const auto& c : t.columns) n += cell_bytes(c.kind);
+  return n;
+}
+
+// One cell of kind `k` as its record bytes at `p`; returns the bytes written. An Index outside
+// int32 is a bug in the run that declared it (a logic_error: the staged output is discarded).
+std::size_t put_cell(Kind k, double v, char* p) {
+  switch (k) {
+    case Kind::Real: std::memcpy(p, &v, 8); return 8;
+    case Kind::Integer: {
+      const auto i = static_cast<std::int64_t>(v);
+      std::memcpy(p, &i, 8);
+      return 8;
+    }
+    case Kind::Index: {
+      if (!(std::fabs(v) < 2147483648.0)) throw std::logic_error("npy_table: an index column's value outside int32");
+      const auto i = static_cast<std::int32_t>(v);
+      std::memcpy(p, &i, 4);
+      return 4;
+    }
+    case Kind::Flag: *p = v != 0 ? 1 : 0; return 1;
+  }
+  return 0;
+}
+
+// n whole rows of `t`'s cells (row-major) as packed records at `p`.
 void table_bytes(const systemc::Table& t, const double* cells, std::size_t n, char* p) {
   const std::size_t C = t.columns.size();
-  for (std::size_t i = 0; i < n; ++i, p += 8) {
-    if (t.columns[i % C].integer) {
-      const auto v = static_cast<std::int64_t>(cells[i]);
-      std::memcpy(p, &v, 8);
-    } else {
-      std::memcpy(p, &cells[i], 8);
-    }
-  }
+  for (std::size_t r = 0; r < n; ++r, cells += C)
+    for (std::size_t c = 0; c < C; ++c) p += put_cell(t.columns[c].kind, cells[c], p);
 }
 
 class File {
@@ -97,13 +133,14 @@ void write_npy_table(const std::string& path, const systemc::Table& t) {
   f.put(h.data(), h.size());
   // Through a 256 KB buffer, whole rows at a time: the converted records never exist whole in memory.
   const std::size_t C = std::max<std::size_t>(t.columns.size(), 1), chunk_rows = std::max<std::size_t>(32768 / C, 1);
-  std::vector<char> buf(chunk_rows * C * 8);
+  const std::size_t R = record_bytes(t);
+  std::vector<char> buf(chunk_rows * R);
   std::size_t written = 0;
   t.for_each_block([&](const double* cells, std::size_t rows) {
     for (std::size_t r = 0; r < rows; r += chunk_rows) {
       const std::size_t n = std::min(chunk_rows, rows - r);
-      table_bytes(t, cells + r * C, n * C, buf.data());
-      f.put(buf.data(), n * C * 8);
+      table_bytes(t, cells + r * C, n, buf.data());
+      f.put(buf.data(), n * R);
     }
     written += rows;
   });

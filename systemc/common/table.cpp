@@ -16,7 +16,7 @@ std::string table_csv(const Table& t) {
     for (std::size_t i = 0; i < rows * C; i += C) {
       for (std::size_t c = 0; c < C; ++c) {
         if (c) csv += ',';
-        if (t.columns[c].integer)
+        if (t.columns[c].integer())
           append_csv_integer(csv, static_cast<long long>(cells[i + c]));
         else
           append_csv_number(csv, cells[i + c]);

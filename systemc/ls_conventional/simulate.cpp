@@ -129,18 +129,18 @@ void add_point(Reconstruction& out, const Point& x, int r, std::size_t f) {
 }
 
 Table points_table() {
-  return Table({{"frame", true},
-                {"beam_position", true},
-                {"row", true},
-                {"truth_visible", true},
+  return Table({{"frame", Table::Kind::Index},
+                {"beam_position", Table::Kind::Index},
+                {"row", Table::Kind::Index},
+                {"truth_visible", Table::Kind::Flag},
                 {"truth_centre_px"},
                 {"truth_range_m"},
-                {"detected", true},
+                {"detected", Table::Kind::Flag},
                 {"centre_px"},
                 {"range_m"},
                 {"error_px"},
                 {"error_m"},
-                {"valid", true},
+                {"valid", Table::Kind::Flag},
                 {"detecting_fraction"}});
 }
 

@@ -98,15 +98,15 @@ sp::SystemcRun run_model(const SimulationRequest& req, const sp::TofSpadKernel& 
 // on pixels outside the beam are false valids and stay out of the error.
 struct Reconstruction {
   RangeMap map;
-  Table points{{{"frame", true},
-                {"row", true},
-                {"column", true},
+  Table points{{{"frame", Table::Kind::Index},
+                {"row", Table::Kind::Index},
+                {"column", Table::Kind::Index},
                 {"truth_range_m"},
-                {"detected", true},
+                {"detected", Table::Kind::Flag},
                 {"range_m"},
                 {"error_m"},
-                {"events", true},
-                {"valid", true},
+                {"events", Table::Kind::Integer},
+                {"valid", Table::Kind::Flag},
                 {"significance_sigma"}}};
   std::string frames_csv = "frame,cycles,laser_cycles,histogram_readout,avalanches,photons\n";
   long long points_total = 0, detected = 0, valid = 0, photons = 0, avalanches = 0, groups_agg = 0, groups_cyc = 0;

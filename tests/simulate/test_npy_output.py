@@ -65,8 +65,9 @@ def main():
                 prow = list(csv.reader(f))
             p = np.load(os.path.join(a, "points.npy"))
             assert list(p.dtype.names) == prow[0], f"{sensor}: fields {p.dtype.names} against {prow[0]}"
-            ints = [n for n in p.dtype.names if p.dtype[n].kind == "i"]
-            assert "frame" in ints and "row" in ints, f"{sensor}: integer fields {ints}"
+            ints = [n for n in p.dtype.names if p.dtype[n].kind in "ib"]
+            assert p.dtype["frame"] == np.int32 and p.dtype["row"] == np.int32, f"{sensor}: index fields {p.dtype}"
+            assert p.dtype["valid"] == np.bool_ and p.dtype["detected"] == np.bool_, f"{sensor}: flag fields {p.dtype}"
             got = [[str(int(x[n])) if n in ints else text(float(x[n])) for n in p.dtype.names] for x in p]
             check_equal(prow[1:], got, sensor + " points")
             nan_cells += sum(int(np.isnan(p[n]).sum()) for n in p.dtype.names if n not in ints)
