@@ -295,7 +295,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
       sim->add_flag("--csv", sim_opt.csv,
                     "Write range_map and points as CSV. Default: a table of more than 100,000 numbers as NumPy\n"
                     ".npy (numpy.load; range_map.npy a float64 matrix, NaN = no range; points.npy a record array\n"
-                    "with the CSV's columns as fields: indices int32, flags bool, counts int64, the rest float64), smaller ones as CSV; frames.csv is always CSV");
+                    "with the CSV's columns as fields: indices int32, flags bool, counts int64, the rest float64),\n"
+                    "smaller ones as CSV; frames.csv is always CSV");
   sim->add_flag("--npy", sim_opt.npy, "Write range_map and points as NumPy .npy, small ones too")->excludes(csv_flag);
   sim->add_option("--time-step", sim_opt.time_step_s,
                   "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
