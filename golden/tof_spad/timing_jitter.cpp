@@ -17,12 +17,6 @@ double cdf_integral(double x) { return x * normal_cdf(x) + std::exp(-0.5 * x * x
 constexpr int kEchoSlices = 16;
 // The jitter's reach: +-12 sigma (beyond, < 1e-32 of it).
 constexpr double kReach = 12;
-// Beyond this reach in bins the bins' INL is nothing against the jitter: one kernel on nominal
-// bins for all source bins (a circular convolution) instead of a spread per source bin.
-constexpr double kMaxExactReachBins = 64;
-// Jitter above this many periods: the recorded phase is uniform (the wrapped Gaussian's ripple
-// is exp(-2 pi^2 sigma^2 / T^2) < 1e-19).
-constexpr double kUniformPeriods = 1.5;
 
 class Spreader {
  public:
@@ -41,8 +35,8 @@ class Spreader {
   }
 
   // `mass` avalanches uniform over [a, b] (a == b: at a point), recorded t + jitter: added to
-  // `out` by recorded phase bin (wrapped over the period).
-  void add(double a, double b, double mass, std::vector<double>& out) const {
+  // `out` by absolute recorded bin (out[0]: bin `base`).
+  void add(double a, double b, double mass, long long base, std::vector<double>& out) const {
     if (!(mass > 0)) return;
     const double w = b - a;
     const auto cdf = [&](double e) {  // P(t + jitter < e), t uniform on [a, b]
@@ -54,30 +48,11 @@ class Spreader {
     double prev = c_lo;
     for (long long j = lo; j <= hi; ++j) {
       const double c = cdf(edge(j + 1));
-      out[u(phase(j))] += mass * std::max(0.0, c - prev) / norm;
+      if (j >= base && j - base < static_cast<long long>(out.size()))  // always, by the caller's margins
+        out[u(j - base)] += mass * std::max(0.0, c - prev) / norm;
       prev = c;
     }
   }
-
-  // Wide jitter: one kernel on nominal bins, P(recorded d bins later, wrapped), d = 0 .. Np-1.
-  std::vector<double> nominal_kernel() const {
-    std::vector<double> kern(u(np_), 1.0 / static_cast<double>(np_));
-    if (s_ > kUniformPeriods * b_.period_s) return kern;
-    std::fill(kern.begin(), kern.end(), 0.0);
-    const double lsb = b_.period_s / static_cast<double>(np_);
-    const auto cdf = [&](double e) { return s_ / lsb * (cdf_integral(e / s_) - cdf_integral((e - lsb) / s_)); };
-    const long long reach = static_cast<long long>(std::ceil(kReach * s_ / lsb)) + 1;
-    double prev = cdf(static_cast<double>(-reach) * lsb), sum = 0;
-    for (long long d = -reach; d <= reach; ++d) {
-      const double c = cdf(static_cast<double>(d + 1) * lsb), p = std::max(0.0, c - prev);
-      kern[u(phase(d))] += p, sum += p;
-      prev = c;
-    }
-    for (double& x : kern) x /= sum;
-    return kern;
-  }
-
-  bool exact() const { return kReach * s_ <= kMaxExactReachBins * b_.period_s / np_; }
 
  private:
   const TdcBins& b_;
@@ -90,29 +65,53 @@ class Spreader {
 BinArrivals recorded_arrivals(const TdcBins& bins, const Arrivals& a) {
   BinArrivals t = bin_arrivals(bins, a);
   if (!(a.jitter_sigma_s > 0)) return t;
+  std::vector<double> echo_c, echo_m;
+  if (a.signal_per_cycle > 0) echo_c.push_back(a.round_trip_s), echo_m.push_back(a.signal_per_cycle);
+  for (const Return& r : a.returns)
+    if (r.signal_per_cycle > 0) echo_c.push_back(r.round_trip_s), echo_m.push_back(r.signal_per_cycle);
+  // Without an echo the arrivals are uniform: a jittered Poisson process is the same process.
+  if (echo_c.empty()) return t;
   const int np = bins.phase_bins;
+  double lsb = bins.period_s;  // the narrowest bin: the reaches in bins hold for every bin
+  for (int i = 0; i < np; ++i) lsb = std::min(lsb, bins.width_s(i));
   const Spreader sp(bins, a.jitter_sigma_s);
-  const bool exact = sp.exact();
-  std::vector<double> echo_c{a.round_trip_s}, echo_m{a.signal_per_cycle};
-  for (const Return& r : a.returns) echo_c.push_back(r.round_trip_s), echo_m.push_back(r.signal_per_cycle);
-  // A live SPAD's first photon of the period by true time, slice by slice (P = survival x
-  // (1 - exp(-m))), its echo part, and where they are recorded.
-  std::vector<double> rec(u(np), 0.0), rec_echo(u(np), 0.0), first(u(np), 0.0), first_echo(u(np), 0.0);
+  // The window around the echoes where the first photon matters, with a margin of two jitter
+  // reaches on each side: a SPAD live from the window's start has the uniform rate as its hazard
+  // again one reach after it, and the survival before the window's end needs no later photon.
+  const long long reach = static_cast<long long>(std::ceil(kReach * a.jitter_sigma_s / lsb)) + 1;
+  const long long pulse = static_cast<long long>(std::ceil(kReach * a.pulse_sigma_s / lsb)) + 1;
+  const long long margin = 2 * reach;
+  const long long first = sp.bin_of(*std::min_element(echo_c.begin(), echo_c.end())) - pulse - margin;
+  const long long last = sp.bin_of(*std::max_element(echo_c.begin(), echo_c.end())) + pulse + margin;
+  if (last - first + 1 > np) {
+    // Jitter or pulse of a period: the former approximation, the jitter folded into the pulse.
+    Arrivals folded = a;
+    folded.pulse_sigma_s = std::hypot(a.pulse_sigma_s, a.jitter_sigma_s);
+    return bin_arrivals(bins, folded);
+  }
+  // A SPAD live from the window's start: its first photon by true time, slice by slice (P =
+  // survival x (1 - exp(-m)), the echo's part by its share), and where it is recorded (absolute
+  // bins from first - reach).
+  const long long base = first - reach, n_local = last - first + 1 + 2 * reach;
+  std::vector<double> rec(u(n_local), 0.0), rec_echo(u(n_local), 0.0);
   double surv = 1;
-  for (int i = 0; i < np; ++i) {
-    const double e0 = bins.edges_s[u(i)], e1 = bins.edges_s[u(i) + 1];
+  for (long long j = first; j <= last; ++j) {
+    const long long i = sp.phase(j), k_period = (j - i) / np;
+    const double shift = static_cast<double>(k_period) * bins.period_s;
+    const double e0 = sp.edge(j), e1 = sp.edge(j + 1);
     const double m_bg = t.total[u(i)] - t.signal[u(i)], m_echo = t.signal[u(i)];
-    const bool sliced = exact && m_echo > 0;
-    const int n = sliced ? kEchoSlices : 1;
-    const double dw = (e1 - e0) / n, k = a.pulse_sigma_s > 0 ? 1.0 / (std::sqrt(2.0) * a.pulse_sigma_s) : 0.0;
-    // The echo's mass per slice (exact, erfc), scaled to the bin's.
+    const int n = m_echo > 0 ? kEchoSlices : 1;
+    const double dw = (e1 - e0) / n;
+    // The echo's mass per slice (erfc), scaled to the bin's.
     std::vector<double> em(u(n), 0.0);
     double em_sum = 0;
     for (int sl = 0; sl < n && m_echo > 0; ++sl) {
       const double lo = e0 + sl * dw, hi = sl + 1 == n ? e1 : lo + dw;
       for (size_t e = 0; e < echo_c.size(); ++e) {
-        const double c = echo_c[e];
-        em[u(sl)] += a.pulse_sigma_s > 0 ? echo_m[e] * 0.5 * (std::erfc((lo - c) * k) - std::erfc((hi - c) * k))
+        const double c = echo_c[e] + shift;
+        em[u(sl)] += a.pulse_sigma_s > 0 ? echo_m[e] * 0.5 *
+                                               (std::erfc((lo - c) / (std::sqrt(2.0) * a.pulse_sigma_s)) -
+                                                std::erfc((hi - c) / (std::sqrt(2.0) * a.pulse_sigma_s)))
                                          : (c >= lo && c < hi ? echo_m[e] : 0.0);
       }
       em_sum += em[u(sl)];
@@ -120,39 +119,24 @@ BinArrivals recorded_arrivals(const TdcBins& bins, const Arrivals& a) {
     for (int sl = 0; sl < n; ++sl) {
       const double lo = e0 + sl * dw, hi = sl + 1 == n ? e1 : lo + dw;
       const double me = em_sum > 0 ? m_echo * em[u(sl)] / em_sum : (n == 1 ? m_echo : 0.0);
-      const double mb = m_bg * (hi - lo) / (e1 - e0), m = mb + me;
+      const double m = m_bg * (hi - lo) / (e1 - e0) + me;
       if (!(m > 0)) continue;
       const double p = surv * -std::expm1(-m), p_echo = p * me / m;
       surv *= std::exp(-m);
-      if (!exact) {
-        first[u(i)] += p, first_echo[u(i)] += p_echo;
-        continue;
-      }
-      sp.add(lo, hi, p - p_echo, rec);
-      // A delta pulse's photons are at its centre (one echo per bin; more: the slice).
+      sp.add(lo, hi, p - p_echo, base, rec);
+      // A delta pulse's photons are at its centre (one echo; more: over the slice).
       const bool point = !(a.pulse_sigma_s > 0) && echo_c.size() == 1;
-      sp.add(point ? echo_c[0] : lo, point ? echo_c[0] : hi, p_echo, rec_echo);
+      sp.add(point ? echo_c[0] + shift : lo, point ? echo_c[0] + shift : hi, p_echo, base, rec_echo);
     }
   }
-  if (!exact) {  // wide jitter: one kernel on nominal bins
-    const std::vector<double> kern = sp.nominal_kernel();
-    for (int i = 0; i < np; ++i) {
-      if (!(first[u(i)] > 0)) continue;
-      for (int d = 0; d < np; ++d) {
-        rec[u((i + d) % np)] += (first[u(i)] - first_echo[u(i)]) * kern[u(d)];
-        rec_echo[u((i + d) % np)] += first_echo[u(i)] * kern[u(d)];
-      }
-    }
-  }
-  for (int j = 0; j < np; ++j) rec[u(j)] += rec_echo[u(j)];
-  // The hazard: r_j = ln(S_j / S_{j+1}), S from the end (sums of positive terms: no
-  // cancellation). Where the survival has underflowed the arrivals themselves (no echo there).
+  // The hazard inside the margins: r_j = ln(S_j / S_{j+1}), S from the end (sums of positive
+  // terms: no cancellation). Outside, the arrivals as they are (uniform there).
   double after = surv;  // S_{j+1}
-  for (int j = np - 1; j >= 0; --j) {
-    const double g = rec[u(j)];
-    if (after > 1e-290 && g >= 0) {
-      const double r = std::log1p(g / after), share = g > 0 ? std::clamp(rec_echo[u(j)] / g, 0.0, 1.0) : 0.0;
-      t.total[u(j)] = r, t.signal[u(j)] = r * share;
+  for (long long j = base + n_local - 1; j >= base; --j) {
+    const double g = rec[u(j - base)] + rec_echo[u(j - base)];
+    if (j >= first + margin && j <= last - margin && after > 1e-290) {
+      const double r = std::log1p(g / after), share = g > 0 ? std::clamp(rec_echo[u(j - base)] / g, 0.0, 1.0) : 0.0;
+      t.total[u(sp.phase(j))] = r, t.signal[u(sp.phase(j))] = r * share;
     }
     after += g;
   }
