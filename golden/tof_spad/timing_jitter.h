@@ -10,12 +10,18 @@
 // hazard, gets the hazard of that law: r_j = ln(S_j / S_{j+1}), S_j = P(no avalanche recorded
 // before bin j). Folding the jitter into the arrivals instead (the first *jittered* photon fires)
 // makes a SPAD with two photons in a pulse fire early: at 1 Mcounts/s (0.025 photons per SPAD
-// and pulse) that put the range about 20 um short at 3.6 m.
+// and pulse) golden's accuracy was 1.8 % (26 um) below the kernel's at 3.6 m.
 //
-// Approximations: the first-photon law is that of a SPAD live from the START (a SPAD that
-// recharges inside the echo sees the rest of it, as the hazard form gives); a SPAD's dead time
-// runs from its recorded time (a fraction of a bin against dead times of hundreds of bins);
-// inside a bin without echo the first photon is taken uniform.
+// Where: in a window around the echoes, from a SPAD live at the window's start (two jitter
+// reaches before the echo's); elsewhere the arrivals are uniform and a jittered Poisson process
+// is the same process. A window longer than a period (jitter or pulse of a period) falls back to
+// the jitter folded into the pulse's width.
+//
+// Approximations: a SPAD that recharges inside the echo sees the rest of it through the hazard
+// (its first-photon law restarts at the recharge); a SPAD's dead time runs from its recorded time
+// (a fraction of a bin against dead times of hundreds of bins; it shows on the recharge onto a
+// strong echo: 1.5 ps at 10 Mcounts/s, SpadGolden.EstimatorMomentsCoatesStrongEcho); inside a bin
+// without echo the first photon is taken uniform.
 #include "golden/tof_spad/arrival_rates.h"
 #include "golden/tof_spad/tdc_bins.h"
 
