@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "app/montecarlo/mc_stats.h"
 #include "core/physics.h"
@@ -225,6 +226,8 @@ TEST(McGolden, TofSpadJitterAfterTheFirstPhoton) {
   folded.spad.jitter_sigma_s = 0;
   const golden::spad::PointResult before = golden::spad::SpadModel(folded).evaluate(sig, bg, d);
   const McPointStats s = run_mc_point(TofSpadMc(cfg), sig, bg, 400, 5);
+  std::printf("accuracy: MC %.4f [%.4f, %.4f] mm, golden %.4f mm, the former order %.4f mm\n", s.rms.value * 1e3,
+              s.rms.lo * 1e3, s.rms.hi * 1e3, g.accuracy_m * 1e3, before.accuracy_m * 1e3);
   EXPECT_EQ(s.detected, s.trials);
   expect_agrees(s.rms, g.accuracy_m, 0.0, "accuracy (m)");
   EXPECT_GT(std::fabs(s.rms.value - before.accuracy_m), 2 * s.rms.half_width())
