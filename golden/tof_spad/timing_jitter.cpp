@@ -60,6 +60,23 @@ class Spreader {
   long long np_;
 };
 
+// The echoes' photons per cycle in n equal slices of [e0, e1] (erfc; a delta pulse: the slice
+// holding its centre), the echoes' centres shifted by `shift` (the period of the bin).
+std::vector<double> echo_slices(double e0, double e1, int n, double shift, const std::vector<double>& centre,
+                                const std::vector<double>& mass, double pulse_sigma_s) {
+  std::vector<double> em(u(n), 0.0);
+  const double dw = (e1 - e0) / n, k = 1.0 / (std::sqrt(2.0) * pulse_sigma_s);
+  for (int sl = 0; sl < n; ++sl) {
+    const double lo = e0 + sl * dw, hi = sl + 1 == n ? e1 : lo + dw;
+    for (size_t e = 0; e < centre.size(); ++e) {
+      const double c = centre[e] + shift;
+      em[u(sl)] += pulse_sigma_s > 0 ? mass[e] * 0.5 * (std::erfc((lo - c) * k) - std::erfc((hi - c) * k))
+                                     : (c >= lo && c < hi ? mass[e] : 0.0);
+    }
+  }
+  return em;
+}
+
 }  // namespace
 
 BinArrivals recorded_arrivals(const TdcBins& bins, const Arrivals& a) {
@@ -102,20 +119,9 @@ BinArrivals recorded_arrivals(const TdcBins& bins, const Arrivals& a) {
     const double m_bg = t.total[u(i)] - t.signal[u(i)], m_echo = t.signal[u(i)];
     const int n = m_echo > 0 ? kEchoSlices : 1;
     const double dw = (e1 - e0) / n;
-    // The echo's mass per slice (erfc), scaled to the bin's.
-    std::vector<double> em(u(n), 0.0);
+    const std::vector<double> em = echo_slices(e0, e1, n, shift, echo_c, echo_m, a.pulse_sigma_s);
     double em_sum = 0;
-    for (int sl = 0; sl < n && m_echo > 0; ++sl) {
-      const double lo = e0 + sl * dw, hi = sl + 1 == n ? e1 : lo + dw;
-      for (size_t e = 0; e < echo_c.size(); ++e) {
-        const double c = echo_c[e] + shift;
-        em[u(sl)] += a.pulse_sigma_s > 0 ? echo_m[e] * 0.5 *
-                                               (std::erfc((lo - c) / (std::sqrt(2.0) * a.pulse_sigma_s)) -
-                                                std::erfc((hi - c) / (std::sqrt(2.0) * a.pulse_sigma_s)))
-                                         : (c >= lo && c < hi ? echo_m[e] : 0.0);
-      }
-      em_sum += em[u(sl)];
-    }
+    for (double x : em) em_sum += x;
     for (int sl = 0; sl < n; ++sl) {
       const double lo = e0 + sl * dw, hi = sl + 1 == n ? e1 : lo + dw;
       const double me = em_sum > 0 ? m_echo * em[u(sl)] / em_sum : (n == 1 ? m_echo : 0.0);
