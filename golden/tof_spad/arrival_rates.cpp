@@ -16,7 +16,8 @@ Arrivals make_arrivals(const TofSpadConfig& cfg, double signal_Hz, double backgr
   Arrivals a;
   a.signal_per_cycle = signal_Hz / cfg.laser.repetition_rate_Hz;
   a.round_trip_s = 2.0 * distance_m / phys::kSpeedOfLight_m_per_s;
-  a.irf_sigma_s = irf_sigma_s(cfg);
+  a.pulse_sigma_s = cfg.laser.sigma_per_fwhm * cfg.laser.pulse_fwhm_s;
+  a.jitter_sigma_s = cfg.spad.jitter_sigma_s;
   a.uniform_rate_Hz = background_Hz + cfg.spad.dark_count_rate_Hz;
   double signal_Hz_all = signal_Hz;
   if (cfg.multipath.on()) {
@@ -41,15 +42,15 @@ BinArrivals bin_arrivals(const TdcBins& bins, const Arrivals& a) {
   // One echo of `mass` photons per cycle centred at `centre`.
   const auto echo = [&](double mass, double centre) {
     if (!(mass > 0)) return;
-    if (a.irf_sigma_s <= 0) {  // a delta echo lands whole in one bin
+    if (a.pulse_sigma_s <= 0) {  // a delta echo lands whole in one bin
       const auto it = std::upper_bound(bins.edges_s.begin(), bins.edges_s.end(), centre);
       const long i = std::distance(bins.edges_s.begin(), it) - 1;
       if (i >= 0 && i < np) add(static_cast<int>(i), mass);
       return;
     }
     // Upper tail Q(x) = erfc(x / sqrt 2) / 2 keeps precision far out on both sides.
-    const double k = 1.0 / (std::sqrt(2.0) * a.irf_sigma_s);
-    const double lo = centre - 12 * a.irf_sigma_s, hi = centre + 12 * a.irf_sigma_s;
+    const double k = 1.0 / (std::sqrt(2.0) * a.pulse_sigma_s);
+    const double lo = centre - 12 * a.pulse_sigma_s, hi = centre + 12 * a.pulse_sigma_s;
     for (int i = 0; i < np; ++i) {
       const double e0 = bins.edges_s[static_cast<size_t>(i)], e1 = bins.edges_s[static_cast<size_t>(i) + 1];
       if (e1 < lo || e0 > hi) continue;

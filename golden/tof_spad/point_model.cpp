@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/physics.h"
+#include "golden/tof_spad/timing_jitter.h"
 
 namespace rangesim::golden::spad {
 
@@ -66,9 +67,11 @@ DeadTimeChainInput SpadModel::chain_input(const BinArrivals& ours, const BinArri
 PileUpHistogram SpadModel::histogram(const Arrivals& a) const { return histogram(a, a); }
 
 PileUpHistogram SpadModel::histogram(const Arrivals& a, const Arrivals& others) const {
-  const BinArrivals arrivals = bin_arrivals(bins_, a);
+  // By recorded time: each SPAD's first photon by its true arrival, its avalanche jittered
+  // (timing_jitter.h); the TDC takes the group's first recorded avalanche.
+  const BinArrivals arrivals = recorded_arrivals(bins_, a);
   if (dead_bins() >= 1) {
-    const DeadTimeChainInput in = chain_input(arrivals, bin_arrivals(bins_, others));
+    const DeadTimeChainInput in = chain_input(arrivals, recorded_arrivals(bins_, others));
     if (dead_time_chain_work(in) <= kDeadTimeChainMaxWork) return dead_time_histogram(in);
   }
   std::vector<double> r = arrivals.total;

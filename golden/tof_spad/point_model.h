@@ -1,7 +1,7 @@
 #pragma once
 // One operating point of the tof-spad golden model: signal and background count rates and a
 // target distance -> expected histogram -> detection verdict, bias and spread of the range.
-// Data flow: arrival_rates -> pile_up -> estimator -> (this) -> evaluate.cpp.
+// Data flow: arrival_rates -> timing_jitter -> pile_up (dead_time_chain) -> estimator -> (this) -> evaluate.cpp.
 #include <string>
 #include <vector>
 
@@ -60,6 +60,8 @@ class SpadModel {
   // Expected per-cycle histogram of an operating point: the renewal chain of the SPADs' dead
   // time (dead_time_chain.h); without dead time, or with dead and busy times too long for the
   // chain, the TDC's chain alone on the mean-field rates (PileUpHistogram::model says which).
+  // Both on the SPADs' recorded avalanche times (timing_jitter.h: first photon by true arrival,
+  // then the jitter).
   PileUpHistogram histogram(double signal_Hz, double background_Hz, double distance_m) const;
   PileUpHistogram histogram(const Arrivals& a) const;
   // Our pixel with arrivals `ours`, the sharing columns with `others` (times the neighbour fraction).

@@ -4,9 +4,10 @@
 //
 // The simulation is independent of the closed form's bins, laws and chain: every SPAD of the TDC
 // group is followed in continuous time (Poisson background, Poisson-many Gaussian echo photons
-// per pulse at the golden IRF, non-paralysable dead time), the first avalanche at or after the
-// arming stops the TDC, its bin comes from the actual edges, and the TDC re-arms at the start of
-// that bin + the blocking (or at the next START).
+// per pulse at the laser pulse's width, non-paralysable dead time from the true arrival), each
+// avalanche's recorded time jittered, the first recorded avalanche at or after the arming stops
+// the TDC, its bin comes from the actual edges, and the TDC re-arms at the start of that bin +
+// the blocking (or at the next START).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -87,6 +88,7 @@ class GroupSimulator {
     long long echo_cycle = -1;  // cycle of the buffered echo photons
     std::vector<double> echo;   // their absolute times, latest first
     double next = -1;           // the next avalanche (absolute time), -1: to draw
+    double recorded = -1;       // its recorded time (jittered)
   };
 
   // The SPAD's next arrival time (absolute).
@@ -98,7 +100,7 @@ class GroupSimulator {
       s.echo_cycle += 1 + static_cast<long long>(std::floor(draw_exp(1.0) / a_.signal_per_cycle));
       int k = 0;
       while (k == 0) k = std::poisson_distribution<int>(a_.signal_per_cycle)(rng_);
-      std::normal_distribution<double> shape(a_.round_trip_s, a_.irf_sigma_s);
+      std::normal_distribution<double> shape(a_.round_trip_s, a_.pulse_sigma_s);
       for (int i = 0; i < k; ++i) s.echo.push_back(static_cast<double>(s.echo_cycle) * period + shape(rng_));
       std::sort(s.echo.begin(), s.echo.end(), std::greater<double>());
     }
@@ -110,15 +112,16 @@ class GroupSimulator {
     else
       s.next_uniform += draw_exp(a_.uniform_rate_Hz);
   }
-  // The SPAD's next avalanche: its first arrival while live.
+  // The SPAD's next avalanche: its first arrival while live (dead time from there); returns its
+  // recorded (jittered) time.
   double next(size_t j) {
     Spad& s = spads_[j];
     while (s.next < 0) {
       const double t = arrival(s);
       consume(s, t);
-      if (t >= s.dead_until) s.next = t;
+      if (t >= s.dead_until) s.next = t, s.recorded = t + a_.jitter_sigma_s * std::normal_distribution<double>()(rng_);
     }
-    return s.next;
+    return s.recorded;
   }
   void fire(size_t j, double dead) { spads_[j].dead_until = spads_[j].next + dead, spads_[j].next = -1; }
   double draw_exp(double rate) { return rate > 0 ? std::exponential_distribution<double>(rate)(rng_) : INFINITY; }

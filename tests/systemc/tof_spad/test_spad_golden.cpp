@@ -148,10 +148,13 @@ TEST(SpadGolden, EstimatorMomentsPlainCentroid) { expect_moments_agree(4e4, 2e5,
 // A strong echo: the SPADs' recharge onto the echo two periods later skews even the Coates-corrected
 // histogram (Coates assumes a memoryless hazard once the TDC is armed). At the grid's largest
 // signal (1 Mcounts/s) golden's mean follows the kernel's within the statistics; at 10 Mcounts/s
-// (0.25 photons per SPAD and pulse) within 1 ps (0.15 mm; golden gives the avalanche the echo's
-// jittered time, which matters on the recharge edge; docs/tof-spad.md).
+// (0.25 photons per SPAD and pulse) within 2 ps (0.3 mm; measured 1.5 ps late). Golden runs the
+// chain on recorded times (golden/tof_spad/timing_jitter.h), so a SPAD that recharges onto the
+// echo recharges at its recorded avalanche + dead time, really at its photon + dead time; with
+// the jitter folded into the arrivals (before) the gap was within 1 ps here but 1.8 % of the
+// accuracy at the grid's 1 Mcounts/s (McGolden.TofSpadJitterAfterTheFirstPhoton).
 TEST(SpadGolden, EstimatorMomentsCoatesGridMaxSignal) { expect_moments_agree(1e6, 1e3, 3.0, 5e-3, true); }
-TEST(SpadGolden, EstimatorMomentsCoatesStrongEcho) { expect_moments_agree(1e7, 1e3, 3.0, 1e-3, true, 1e-12); }
+TEST(SpadGolden, EstimatorMomentsCoatesStrongEcho) { expect_moments_agree(1e7, 1e3, 3.0, 1e-3, true, 2e-12); }
 
 // No background, no dark counts, no jitter, delta pulse, linear TDC: the range is the centre of
 // the echo's TDC bin, within half an LSB (c LSB / 4 in range) of the truth.
