@@ -38,8 +38,8 @@
 // (FrameStimulus::per_pixel(): the chip's fixed pattern or a spread spot, core/nonideal.h), every
 // row's pixels get their own drive, dark swing and comparator offset; the window and certain
 // intervals, which assume one drive and threshold per row, give way to a per-pixel test: a pixel
-// is simulated when its mean swing at t_N reaches the cut of the row's most favourable comparator
-// (threshold less the row's largest offset), the same bounded skip as above, and its noise is
+// is simulated when its mean swing at t_N reaches the cut of the band's most favourable comparator
+// (threshold less the band's largest offset), the same bounded skip as above, and its noise is
 // drawn at every sampling (the per-sampling draws, exact in distribution). Without per-pixel
 // inputs nothing of it runs, so every other path keeps its bits.
 //
@@ -184,6 +184,7 @@ class PixelArrayKernel {
   std::uint64_t frame_ = 0;                        // current frame access
   bool have_frame_ = false;                        // reset_frame ran at least once
   bool per_pixel_ = false;                         // this frame access takes the per-pixel path
+  double band_max_offset_V_ = 0;                   // per-pixel path: the band's largest comparator offset
   int sampling_ = 0;                               // last sampling latched (0 after reset)
   double dark_V_ = 0;                              // V_dark = I_dark T / C
   double electrons_per_V_ = 0;                     // C / q

@@ -21,8 +21,8 @@ void PixelArrayKernel::reset_row_pixels(int r, const RowIllumination& in, RowSta
   const bool offset = pat && !pat->offset_V.empty(), spread = !stimulus_.signal_px_V.empty();
   row.threshold_V = golden::comparator_threshold_V(config_, in.background_V);
   row.shape = -1;
-  // The row's most favourable comparator bounds every pixel's: below its cut none can fire.
-  const double easiest_V = row.threshold_V - (offset ? pat->max_offset_V[static_cast<std::size_t>(ar)] : 0.0);
+  // The band's most favourable comparator bounds every pixel's: below its cut none can fire.
+  const double easiest_V = row.threshold_V - band_max_offset_V_;
   const double cut_V = options_.sparse ? cut_swing_V(easiest_V) : -1.0;
   // Beyond reach_px the spot adds less than half an ulp of the background, so the pixel's swing is
   // the background's to the bit and the profile is not evaluated (the exp is most of a row's cost).
@@ -34,7 +34,7 @@ void PixelArrayKernel::reset_row_pixels(int r, const RowIllumination& in, RowSta
   for (int i = 0; i < C; ++i) {
     const std::size_t x = at + static_cast<std::size_t>(i);
     const double d = i - in.centre_px;
-    const double spot_V = spread ? stimulus_.signal_px_V[x]
+    const double spot_V = spread                     ? stimulus_.signal_px_V[x]
                           : std::fabs(d) <= reach_px ? in.signal_V * golden::spot_profile(config_.spot, d)
                                                      : 0.0;
     const double swing = (gain ? pat->gain[x] : 1.0) * (spot_V + in.background_V) + (dark ? pat->dark_V[x] : dark_V_);
