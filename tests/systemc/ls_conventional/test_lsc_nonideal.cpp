@@ -209,3 +209,38 @@ TEST(LsConventionalNonideal, PresetDefaultsLeaveThePerRowPaths) {
   EXPECT_TRUE(rs::ls_conventional_blur_taps(c).empty());
   EXPECT_TRUE(rs::make_pixel_pattern(c, 1).empty());
 }
+
+// Row bands (PixelArrayOptions::first_row, row_count: the rows on several threads) give the whole
+// array's bits with the chip's pattern and a spread spot too: the pattern and the streams are keyed
+// by the array's row, and each band spreads from every source row.
+TEST(LsConventionalNonideal, RowBandsEqualTheWholeArrayWithPatternAndSpread) {
+  LsConventionalConfig c = small_config(30, 96, 4);
+  c.fixed_pattern.prnu_fraction = 0.02;
+  c.fixed_pattern.comparator_offset_rms_V = 0.002;
+  c.blur.psf = rangesim::PsfKind::Gaussian;
+  c.blur.gaussian_sigma_px = 1.0;
+  const rs::PixelPattern pat = rs::make_pixel_pattern(c, 9);
+  const std::vector<rs::BlurTap> taps = rs::ls_conventional_blur_taps(c);
+  RandomStimulus stim;
+  auto source = [&](std::uint64_t f, rs::FrameStimulus& s) {
+    const int first = s.first_row, count = s.row_count;
+    s.first_row = 0, s.row_count = -1;
+    stim(f, s);  // every row: the spread crosses rows
+    s.first_row = first, s.row_count = count;
+    s.pattern = &pat;
+    rs::spread_spot(c, taps, s);
+  };
+  rs::PixelArrayOptions whole = options(true, true);
+  const auto all = run(c, whole, source, 3);
+  rs::PixelArrayOptions lo = whole, hi = whole;
+  lo.first_row = 0, lo.row_count = 13;
+  hi.first_row = 13, hi.row_count = 17;
+  const auto a = run(c, lo, source, 3), b = run(c, hi, source, 3);
+  // run() stores rows per sampling: whole 30 per sampling, the bands 13 and 17.
+  for (std::size_t step = 0; step < 3 * 4; ++step)
+    for (std::size_t r = 0; r < 30; ++r) {
+      const rs::ActivationRow& want = all[step * 30 + r];
+      const rs::ActivationRow& got = r < 13 ? a[step * 13 + r] : b[step * 17 + (r - 13)];
+      EXPECT_TRUE(want == got) << "sampling step " << step << " row " << r;
+    }
+}
