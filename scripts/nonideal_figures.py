@@ -3,11 +3,13 @@
 
 (a) step-scene range profiles with the point spread off and on: tof-lockin along a row across its
     column step (flying pixels), ls-demodulation down a beam position across its row step (mixed rows);
+    ls-conventional likewise down a beam position across the row step (a row that sees both stripes);
 (b) accuracy against frames averaged, tof-lockin at one operating point: golden and the clock-level
     Monte Carlo (evaluate --trials; every trial a pixel of another chip), the chip's fixed pattern
     (1 % tap gain mismatch) on and off.
 
 Usage: /usr/bin/python3 scripts/nonideal_figures.py [--rangesim build/app/rangesim] [--out docs/nonideal]
+       [--figures step,lsc-step,floor]
 Writes PNGs and the numbers behind them (CSV) into --out; the rangesim runs go to --work.
 """
 import argparse
@@ -78,6 +80,31 @@ def step_profiles(rs, work, out):
         w.writerows(lines)
 
 
+def lsc_step_profile(rs, work, out):
+    # ls-conventional: one beam position down the rows across the row step (0.9 m | 1.2 m); with the
+    # point spread a row near the step sees the stripes of both depths (two spot profiles).
+    ls = {name: simulate(rs, "ls-conventional", "step.toml", extra + ["--csv"], os.path.join(work, "lsc_" + name))
+          for name, extra in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+    nrows, npos = len(ls["sharp"]), len(ls["sharp"][0])
+    # The middle beam position (a stripe near an array edge is spread against the edge's clamp).
+    b = npos // 2
+    rows = list(range(nrows // 2 - 8, nrows // 2 + 9))
+    fig, ax = plt.subplots(figsize=(6, 4))
+    lines = []
+    for name, style in (("sharp", "o-"), ("blur", "s--")):
+        vals = [ls[name][r][b] for r in rows]
+        ax.plot(rows, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
+        lines += [("ls-conventional", name, r, b, v) for r, v in zip(rows, vals)]
+    ax.set(title="ls-conventional, step 0.9 m | 1.2 m, beam position %d" % b, xlabel="row", ylabel="range (m)")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "lsc_step_profile_blur.png"), dpi=110)
+    with open(os.path.join(out, "lsc_step_profile_blur.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["sensor", "blur", "row", "beam_position", "range_m"])
+        w.writerows(lines)
+
+
 def frames_floor(rs, work, out, trials):
     frames = [1, 3, 10, 30, 100, 300, 1000]
     cases = (("fixed pattern on (tap mismatch 1 %)", ["--set", "fixed_pattern.tap_mismatch_fraction=0.01"]),
@@ -118,11 +145,18 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "nonideal"))
     ap.add_argument("--work", default="/tmp/rangesim-nonideal")
     ap.add_argument("--trials", type=int, default=400)
+    ap.add_argument("--figures", default="step,lsc-step,floor",
+                    help="comma-separated: step (tof-lockin, ls-demodulation), lsc-step (ls-conventional), floor")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     os.makedirs(a.work, exist_ok=True)
-    step_profiles(a.rangesim, a.work, a.out)
-    frames_floor(a.rangesim, a.work, a.out, a.trials)
+    which = a.figures.split(",")
+    if "step" in which:
+        step_profiles(a.rangesim, a.work, a.out)
+    if "lsc-step" in which:
+        lsc_step_profile(a.rangesim, a.work, a.out)
+    if "floor" in which:
+        frames_floor(a.rangesim, a.work, a.out, a.trials)
 
 
 if __name__ == "__main__":

@@ -67,6 +67,8 @@ LsConventionalConfig ls_conventional_from_params(const ParamSet& p) {
   c.optics.baseline_m = p.real("optics.baseline_m");
   c.optics.distance_m = p.real("optics.distance_m");
   c.optics.f_number = p.real("optics.f_number");
+  c.fixed_pattern = read_fixed_pattern(p, "A", false, true);
+  c.blur = read_blur(p, 0.0, c.optics.f_number, c.pixel.pitch_m);
 
   c.grid.signal_min_V = p.real("evaluation.signal_min_V");
   c.grid.signal_max_V = p.real("evaluation.signal_max_V");

@@ -108,7 +108,9 @@ struct LsConventionalConfig {
   EvaluationGridConfig grid;
   LsValidityConfig validity;
   LsSimulationConfig simulation;
-  DarkTemperatureConfig dark;  // pixel.dark_current_A is already scaled to pixel.temperature_K
+  DarkTemperatureConfig dark;        // pixel.dark_current_A is already scaled to pixel.temperature_K
+  FixedPatternConfig fixed_pattern;  // PRNU, DSNU (A), comparator offset per pixel (core/nonideal.h)
+  BlurConfig blur;                   // point spread and crosstalk of the scene runs (across rows and columns)
 };
 
 // The clock schedule of one frame access, one formula each (golden/ls_conventional/frame_timing,

@@ -93,7 +93,8 @@ const ParamSchema& ls_conventional_schema() {
            "inversion of its exact distribution function (false: a normal pair and a Gamma variate)"},
       }};
   // The non-idealities' keys (core/nonideal.h).
-  static const ParamSchema schema = with_specs(base, {dark_temperature_specs()});
+  static const ParamSchema schema =
+      with_specs(base, {fixed_pattern_specs("A", 1e-9, false, true), blur_specs(true), dark_temperature_specs()});
   return schema;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "golden/common/fixed_pattern_activation.h"
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
 
@@ -160,23 +161,38 @@ double level_threshold_electrons(const RowModel& row, int m) {
 }
 
 double static_noise_electrons(const RowModel& row) {
-  return static_noise_V(row.cfg.pixel) * electrons_per_volt(row.cfg.pixel);
+  return static_noise_V(row.cfg) * electrons_per_volt(row.cfg.pixel);
 }
 
 namespace {
+
+// P(pixel i activated by sampling k) at the row's threshold and static noise, averaged over the
+// chip's PRNU and DSNU draws when they are on (fixed_pattern_activation.h).
+ActivationProbability pixel_activation(const RowModel& row, ActivationCache& cache, int i, double x0, int k, double thr,
+                                       double sig) {
+  if (!fixed_pattern_spreads_mean(row.cfg)) return cache.get(row_pixel_mean_electrons(row, i, x0, k), thr, sig);
+  const double t = static_cast<double>(k) / row.samplings;
+  const double photo_V = row.signal_V * spot_profile(row.cfg.spot, i - x0) + row.background_V;
+  return fixed_pattern_activation(row.cfg, cache, photo_V * electrons_per_volt(row.cfg.pixel) * t, t, thr, sig);
+}
 
 // Pixels [first, last] whose activation probability (code >= 1 by t_N) exceeds kWindowMin.
 bool activation_window(const RowModel& row, double x0, ActivationCache& cache, int& first, int& last) {
   const int N = row.samplings;
   const double thr = level_threshold_electrons(row, 1), sig = static_noise_electrons(row);
   const double bg_only = (row.background_V + row.dark_V) * electrons_per_volt(row.cfg.pixel);
-  if (cache.get(bg_only, thr, sig).p > kWindowMin) {  // background alone may activate: whole row
+  const ActivationProbability bg =
+      fixed_pattern_spreads_mean(row.cfg)
+          ? fixed_pattern_activation(row.cfg, cache, row.background_V * electrons_per_volt(row.cfg.pixel), 1.0, thr,
+                                     sig)
+          : cache.get(bg_only, thr, sig);
+  if (bg.p > kWindowMin) {  // background alone may activate: whole row
     first = 0;
     last = row.columns - 1;
     return true;
   }
   // The profile falls off monotonically from x0, so the window is contiguous around it.
-  auto active = [&](int i) { return cache.get(row_pixel_mean_electrons(row, i, x0, N), thr, sig).p > kWindowMin; };
+  auto active = [&](int i) { return pixel_activation(row, cache, i, x0, N, thr, sig).p > kWindowMin; };
   const int c = std::clamp(static_cast<int>(std::lround(x0)), 0, row.columns - 1);
   first = c;
   while (first > 0 && active(first - 1)) --first;
@@ -204,7 +220,7 @@ SplitMoments exact_moments(const RowModel& row, double x0_px, ActivationCache& c
     C[j][N + 1] = 1;
     S[j][N + 1] = 0;
     for (int k = 1; k <= N; ++k) {
-      const ActivationProbability p = cache.get(row_pixel_mean_electrons(row, i, x0_px, k), thr, sig);
+      const ActivationProbability p = pixel_activation(row, cache, i, x0_px, k, thr, sig);
       C[j][k] = p.p;
       S[j][k] = p.q;
     }
@@ -239,8 +255,7 @@ double outlier_probability(const RowModel& row, double x0_px, ActivationCache& c
   const ColumnSpan spot = spot_window(row.cfg.spot, x0_px, row.columns);
   double log_none = 0;
   for (int i = first; i <= last; ++i)
-    if (!spot.contains(i))
-      log_none += std::log(cache.get(row_pixel_mean_electrons(row, i, x0_px, row.samplings), thr, sig).q);
+    if (!spot.contains(i)) log_none += std::log(pixel_activation(row, cache, i, x0_px, row.samplings, thr, sig).q);
   return -std::expm1(log_none);
 }
 
@@ -292,7 +307,7 @@ int certain_levels(const RowModel& row, double mu_e, double sig, ActivationCache
 PositionMoments delta_moments(const RowModel& row, double x0, ActivationCache& cache, int first, int last) {
   const int N = row.samplings, W = last - first + 1, M = row.quantiser.max_code;
   const double sig = static_noise_electrons(row), e_per_V = electrons_per_volt(row.cfg.pixel);
-  const double sigR_V = static_noise_V(row.cfg.pixel);
+  const double sigR_V = static_noise_V(row.cfg);
   Mat Ec(W, Vec(N)), Vc(W, Vec(N)), mu(W, Vec(N));
   Vec pnone(N, 0.0);  // log P(no pixel has code >= 1 at sampling k)
   for (int j = 0; j < W; ++j)

@@ -17,8 +17,26 @@ struct RowIllumination {
   double centre_px = 0;     // x0: spot centre, in columns (pixel i is centred at x = i)
 };
 
+// The chip's fixed pattern (core/nonideal.h) as the pixel array takes it, per pixel of the array
+// (row-major, rows x columns; an empty vector: that term is off). Fixed per chip: the scene
+// adapter makes it once (systemc/ls_conventional/nonideal_pattern.h) and every frame points at it.
+struct PixelPattern {
+  std::vector<double> gain;          // PRNU: relative gain of the pixel's photo swing (signal and background)
+  std::vector<double> dark_V;        // DSNU: the pixel's dark swing at the end of integration (replaces V_dark)
+  std::vector<double> offset_V;      // comparator offset at its input (fires when A_sf v + offset >= theta)
+  std::vector<double> max_offset_V;  // per row: the largest offset (bounds the row's sparse window)
+  bool empty() const { return gain.empty() && dark_V.empty() && offset_V.empty(); }
+};
+
 struct FrameStimulus {
   std::vector<RowIllumination> rows;  // one per sensor row
+  // Point spread and crosstalk (core/nonideal.h BlurConfig): each pixel's spot swing at the end of
+  // integration (row-major, rows x columns), replacing signal_V g(i - centre_px); the background
+  // stays the row's (a uniform background stays uniform under the spread). Empty: no spread.
+  std::vector<double> signal_px_V;
+  const PixelPattern* pattern = nullptr;  // the chip's fixed pattern (null or empty: none)
+  // Whether the pixel array must take each pixel's own drive (the per-pixel path).
+  bool per_pixel() const { return !signal_px_V.empty() || (pattern != nullptr && !pattern->empty()); }
   // The rows the pixel array simulates (a band of them when rows run on several threads): a source
   // may fill only rows first_row .. first_row + row_count - 1 and leave the others as they are.
   int first_row = 0, row_count = -1;  // -1: every row

@@ -8,6 +8,7 @@
 #include "core/user_error.h"
 #include "golden/common/spot.h"
 #include "golden/common/triangulation.h"
+#include "systemc/ls_conventional/nonideal_pattern.h"
 #include "systemc/ls_conventional/sensor_kernel.h"
 
 namespace rangesim::mc {
@@ -24,6 +25,12 @@ class Runner : public McPointRunner {
         background_V_(background_V),
         kernel_(cfg_, options(key), [this](std::uint64_t frame, systemc::FrameStimulus& s) {
           s.rows.assign(1, systemc::RowIllumination{signal_V_, background_V_, x0(frame)});
+          if (cfg_.fixed_pattern.any()) {
+            // Every trial is a row of another chip (its fixed pattern keyed by the trial), so the
+            // trials' spread holds the spread over chips that golden's accuracy does.
+            pattern_ = systemc::make_pixel_pattern(cfg_, trial_key(key_, frame));
+            s.pattern = &pattern_;
+          }
         }) {
     kernel_.reset();
   }
@@ -73,6 +80,7 @@ class Runner : public McPointRunner {
   std::uint64_t key_;
   SpotPlacement spot_;
   double signal_V_, background_V_;
+  systemc::PixelPattern pattern_;  // this trial's chip (fixed_pattern.* on)
   systemc::LsConventionalSensorKernel kernel_;
   long long next_trial_ = 0;  // = the kernel's frame counter: trial t is frame access t
 };

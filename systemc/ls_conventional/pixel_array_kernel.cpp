@@ -127,6 +127,23 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   have_frame_ = true;
   sampling_ = 0;
   const int N = config_.multisampling.samplings;
+  per_pixel_ = stimulus_.per_pixel();
+  if (per_pixel_) {
+    const std::size_t want = static_cast<std::size_t>(config_.pixel.rows) * static_cast<std::size_t>(columns());
+    if (!stimulus_.signal_px_V.empty() && stimulus_.signal_px_V.size() != want)
+      throw std::invalid_argument("PixelArrayKernel: per-pixel spot swings of the wrong size");
+    // The band's largest comparator offset bounds every pixel's: one cut per threshold (memoised).
+    band_max_offset_V_ = 0;
+    const PixelPattern* pat = stimulus_.pattern;
+    if (pat && !pat->offset_V.empty())
+      band_max_offset_V_ =
+          *std::max_element(pat->max_offset_V.begin() + first_row_, pat->max_offset_V.begin() + first_row_ + rows());
+    for (int r = 0; r < rows(); ++r) {
+      act_[static_cast<std::size_t>(r)].clear();
+      reset_row_pixels(r, stimulus_.rows[static_cast<std::size_t>(first_row_ + r)], rows_[static_cast<std::size_t>(r)]);
+    }
+    return;
+  }
   if (exact_) {
     shapes_used_ = 0;
     band_k_.clear();
@@ -174,6 +191,10 @@ void PixelArrayKernel::sample(int k) {
   const double A = config_.pixel.source_follower_gain, vsat = config_.pixel.saturation_voltage_V;
   const double t_over_T = static_cast<double>(k) / N;
   const bool noisy = options_.noise.any();
+  if (per_pixel_) {
+    sample_pixels(k);
+    return;
+  }
   if (exact_) {  // the firing samplings were decided at the reset: latch this one's
     sample_exact(k);
     return;

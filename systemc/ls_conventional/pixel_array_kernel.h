@@ -34,6 +34,15 @@
 // keyed uniform by inversion of its exact distribution function (activation_sampler.h; else the
 // Gamma draw).
 //
+// Per-pixel path (pixel_array_pixelwise.cpp): when a frame's stimulus carries per-pixel inputs
+// (FrameStimulus::per_pixel(): the chip's fixed pattern or a spread spot, core/nonideal.h), every
+// row's pixels get their own drive, dark swing and comparator offset; the window and certain
+// intervals, which assume one drive and threshold per row, give way to a per-pixel test: a pixel
+// is simulated when its mean swing at t_N reaches the cut of the band's most favourable comparator
+// (threshold less the band's largest offset), the same bounded skip as above, and its noise is
+// drawn at every sampling (the per-sampling draws, exact in distribution). Without per-pixel
+// inputs nothing of it runs, so every other path keeps its bits.
+//
 // Rows: a kernel may simulate a band of the array's rows (PixelArrayOptions::first_row,
 // row_count) so that bands run on several cores; the keyed streams make each row's bits
 // independent of the band it runs in.
@@ -103,6 +112,7 @@ class PixelArrayKernel {
   bool certain_intervals() const { return intervals_ != nullptr; }
   bool inversion_draw() const { return inversion_; }
   const ExactActivation* exact() const { return exact_.get(); }
+  bool per_pixel() const { return per_pixel_; }  // the current frame access took the per-pixel path
   // Simulated window [first, last] of row r in the current frame access (last < first: none).
   int window_first(int r) const { return rows_[static_cast<std::size_t>(r)].first; }
   int window_last(int r) const { return rows_[static_cast<std::size_t>(r)].last; }
@@ -110,13 +120,16 @@ class PixelArrayKernel {
 
  private:
   struct Pixel {
-    pcg32 rng;               // this pixel's stream in this frame access
-    double electrons = 0;    // integrated electrons up to the last sampling (shot noise on)
-    double mean_step_e = 0;  // mean electrons per sampling interval, mu(T) / N
-    PoissonSampler shot;     // Poisson sampler of that mean
-    double offset_V = 0;     // kTC reset noise on the photodiode
-    double read_V = 0;       // read noise at the comparator input (input-referred)
-    double profile = 0;      // g(i - x0)
+    int column = 0;           // per-pixel path: the pixel's column (the window is not contiguous)
+    double swing_T_V = 0;     // per-pixel path: noise-free mean swing at t_N
+    double comparator_V = 0;  // per-pixel path: comparator offset at its input
+    pcg32 rng;                // this pixel's stream in this frame access
+    double electrons = 0;     // integrated electrons up to the last sampling (shot noise on)
+    double mean_step_e = 0;   // mean electrons per sampling interval, mu(T) / N
+    PoissonSampler shot;      // Poisson sampler of that mean
+    double offset_V = 0;      // kTC reset noise on the photodiode
+    double read_V = 0;        // read noise at the comparator input (input-referred)
+    double profile = 0;       // g(i - x0)
   };
   struct RowState {
     int first = 0, last = -1;   // simulated window [first, last]
@@ -158,6 +171,9 @@ class PixelArrayKernel {
   BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
   int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
   void sample_exact(int k);
+  // The per-pixel path (pixel_array_pixelwise.cpp).
+  void reset_row_pixels(int r, const RowIllumination& in, RowState& row);
+  void sample_pixels(int k);
 
   LsConventionalConfig config_;                    // sensor
   PixelArrayOptions options_;                      // noise, seed, sparse
@@ -167,6 +183,8 @@ class PixelArrayKernel {
   std::vector<ActivationRow> act_;                 // latched activations per row
   std::uint64_t frame_ = 0;                        // current frame access
   bool have_frame_ = false;                        // reset_frame ran at least once
+  bool per_pixel_ = false;                         // this frame access takes the per-pixel path
+  double band_max_offset_V_ = 0;                   // per-pixel path: the band's largest comparator offset
   int sampling_ = 0;                               // last sampling latched (0 after reset)
   double dark_V_ = 0;                              // V_dark = I_dark T / C
   double electrons_per_V_ = 0;                     // C / q

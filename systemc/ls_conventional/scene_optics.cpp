@@ -8,6 +8,7 @@
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
 #include "scene/physical.h"
+#include "systemc/ls_conventional/nonideal_pattern.h"
 
 namespace rangesim::scene {
 
@@ -55,6 +56,10 @@ SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene)
                             scene.background_irradiance_W_per_m2 / (4 * f_number * f_number);
   background_V_ = golden::voltage_from_current_V(bg_current, px.integration_time_s, px.pd_capacitance_F);
   if (scene.shape == TargetShape::DepthMap) depth_grid_m_ = scene.depth_map->resample(px.rows, px.columns);
+  if (config.fixed_pattern.any())
+    pattern_ =
+        std::make_shared<const systemc::PixelPattern>(systemc::make_pixel_pattern(config, config.fixed_pattern.seed));
+  taps_ = systemc::ls_conventional_blur_taps(config);
   // The beam must actually sweep: every position must leave the projector in front (0 < a_p < pi)
   // — always true for cot finite — and not run parallel to a tilted target.
   for (int b = 0; b < beam_positions(); ++b) {
@@ -122,8 +127,10 @@ void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) con
   const int b = beam_position(frame);
   const double cot = cot_beam(b);
   out.rows.resize(static_cast<std::size_t>(rows()));
-  const int first = std::clamp(out.first_row, 0, rows());
-  const int last = out.row_count < 0 ? rows() : std::min(rows(), first + out.row_count);
+  out.pattern = pattern_.get();
+  const bool spread = !taps_.empty();
+  const int first = spread ? 0 : std::clamp(out.first_row, 0, rows());
+  const int last = spread || out.row_count < 0 ? rows() : std::min(rows(), first + out.row_count);
   for (int r = first; r < last; ++r) {
     const RowTruth t = truth(b, cot, r);
     systemc::RowIllumination& in = out.rows[static_cast<std::size_t>(r)];
@@ -131,6 +138,7 @@ void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) con
     in.signal_V = t.hit ? t.signal_V : 0.0;
     in.centre_px = t.hit ? t.centre_px : 0.0;
   }
+  if (spread) systemc::spread_spot(config_, taps_, out);
 }
 
 double SceneOptics::range_from_centre_m(int b, double centre_px) const {

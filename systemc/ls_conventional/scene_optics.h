@@ -26,10 +26,12 @@
 //   background photocurrent       R ff pitch^2 rho E_bg / (4 F#^2)        (camera equation)
 // and V = I t_int / C_pd (thesis eq. 3.1).
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/ls_conventional/config.h"
 #include "scene/scene.h"
+#include "systemc/common/optical_blur.h"
 #include "systemc/ls_conventional/frame_stimulus.h"
 
 namespace rangesim::scene {
@@ -67,7 +69,10 @@ class SceneOptics {
   double principal_row_px() const { return 0.5 * (rows() - 1); }
 
   RowTruth truth(int b, int row) const;
-  // The pixel array's stimulus of frame access `frame` (systemc::StimulusSource).
+  // The pixel array's stimulus of frame access `frame` (systemc::StimulusSource), with the chip's
+  // fixed pattern (fixed_pattern.*, made once here) and the spot spread by blur.* when they are on
+  // (systemc/ls_conventional/nonideal_pattern.h); with blur every row is filled (the spread
+  // crosses rows), the spread swings only for the band's.
   void stimulus(std::uint64_t frame, systemc::FrameStimulus& out) const;
   // Depth from an estimated stripe column on a row at beam position b (triangulation).
   double range_from_centre_m(int b, double centre_px) const;
@@ -79,9 +84,11 @@ class SceneOptics {
 
   LsConventionalConfig config_;
   Scene scene_;
-  double signal_per_inv_z2_V_ = 0;    // spot-peak swing times z^2 (V m^2) at reflectance rho
-  double background_V_ = 0;           // background swing
-  std::vector<double> depth_grid_m_;  // depth_map: the map resampled to the pixel grid, row-major
+  double signal_per_inv_z2_V_ = 0;                        // spot-peak swing times z^2 (V m^2) at reflectance rho
+  double background_V_ = 0;                               // background swing
+  std::vector<double> depth_grid_m_;                      // depth_map: the map resampled to the pixel grid, row-major
+  std::shared_ptr<const systemc::PixelPattern> pattern_;  // the chip's fixed pattern (null: off)
+  std::vector<systemc::BlurTap> taps_;                    // the spread (empty: none)
 };
 
 }  // namespace rangesim::scene

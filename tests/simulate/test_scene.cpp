@@ -15,6 +15,7 @@
 #include "golden/common/triangulation.h"
 #include "systemc/ls_conventional/scene_optics.h"
 #include "scene/scene.h"
+#include "systemc/ls_conventional/pixel_array_kernel.h"
 #include "systemc/ls_conventional/sensor.h"
 
 namespace sc = rangesim::scene;
@@ -171,4 +172,40 @@ TEST(SceneOptics, NoiseFreeKernelRunEqualsGoldenEstimateOfTheScene) {
     }
   ASSERT_GT(n, 1000);
   EXPECT_LT(std::sqrt(sq / n), 0.2);
+}
+
+// The point spread across rows (blur.*, systemc/ls_conventional/nonideal_pattern.h): at the step
+// (0.9 m over 1.2 m, by row) a noise-free row near the edge sees both stripes and its centre gives a
+// range of neither surface (a mixed pixel); without the spread every row gives one surface's range.
+TEST(SceneOptics, BlurMakesMixedRowsAtTheStep) {
+  for (bool blur : {false, true}) {
+    LsConventionalConfig c = preset();
+    if (blur) c.blur.psf = rangesim::PsfKind::Gaussian, c.blur.gaussian_sigma_px = 1.0;
+    const sc::Scene s = sc::load_scene(kScenes + "/step.toml", "ls-conventional");
+    const sc::SceneOptics o(c, s);
+    const int b = o.beam_positions() / 2;
+    rangesim::systemc::PixelArrayOptions opt;
+    opt.noise = rangesim::systemc::PixelNoiseConfig::none();
+    rangesim::systemc::PixelArrayKernel px(
+        c, opt, [&o](std::uint64_t f, rangesim::systemc::FrameStimulus& st) { o.stimulus(f, st); });
+    px.reset_frame(static_cast<std::uint64_t>(b));
+    for (int k = 1; k <= c.multisampling.samplings; ++k) px.sample(k);
+    EXPECT_EQ(px.per_pixel(), blur);
+    int mixed = 0, rows = 0;
+    for (int r = 0; r < o.rows(); ++r) {
+      const rangesim::systemc::ActivationRow& a = px.row(r);
+      int left = -1, right = -1;
+      for (int i = 0; i < o.columns(); ++i)
+        if (a.test(i)) right = i, left = left < 0 ? i : left;
+      if (left < 0) continue;
+      ++rows;
+      const double z = o.range_from_centre_m(b, 0.5 * (left + right));
+      mixed += z > 0.92 && z < 1.18;
+    }
+    EXPECT_GT(rows, 300);
+    if (blur)
+      EXPECT_GE(mixed, 2);
+    else
+      EXPECT_EQ(mixed, 0);
+  }
 }
