@@ -32,7 +32,7 @@ TEST(CsvNumber, SameTextAsPrintfG9) {
 }
 
 TEST(CsvNumber, TableCsv) {
-  rs::Table t({{"frame", true}, {"range_m"}});
+  rs::Table t({{"frame", rs::Table::Kind::Index}, {"range_m"}});
   t.add_row({3, 0.125});
   t.add_row({4, NAN});
   t.add_row({-5, 1.0 / 3});
