@@ -7,6 +7,7 @@
 #include <climits>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "app/mpi_plugin.h"
 #include "core/user_error.h"
@@ -25,28 +26,34 @@ int launcher_size() {
 const PluginApi* api = nullptr;  // loaded by init() under a launcher
 
 #if RANGESIM_HAS_MPI
-// The MPI library beside the executable (the build puts it there): its path.
-std::string plugin_path() {
+// The MPI library's candidate paths: beside the executable (the build tree), then where
+// `cmake --install` puts it relative to the installed executable.
+std::vector<std::string> plugin_paths() {
   char exe[PATH_MAX];
   const ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
   std::string dir = n > 0 ? std::string(exe, static_cast<std::size_t>(n)) : std::string();
   dir = dir.substr(0, dir.find_last_of('/') + 1);
-  return dir + RANGESIM_MPI_PLUGIN;
+  return {dir + RANGESIM_MPI_PLUGIN, dir + RANGESIM_MPI_PLUGIN_INSTALLED_DIR + "/" + RANGESIM_MPI_PLUGIN};
 }
 
 const PluginApi* load_plugin() {
-  const std::string path = plugin_path();
-  // Global: Open MPI loads its own components, which look for libmpi's symbols.
-  void* lib = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
-  const char* why = lib ? nullptr : dlerror();
-  const auto entry = lib ? reinterpret_cast<PluginEntry>(dlsym(lib, kPluginEntry)) : nullptr;
-  const PluginApi* a = entry ? entry() : nullptr;
-  if (!a || a->abi != kPluginAbi)
-    throw UserError("started under mpirun with more than one process, but the MPI library of this build, " + path +
-                    ", " + (why ? std::string("cannot be loaded: ") + why : std::string("is not this build's")) +
-                    "; rebuild (cmake --build build --target rangesim), or split the run with --shard K/N and "
-                    "`rangesim merge`");
-  return a;
+  std::string tried;
+  for (const std::string& path : plugin_paths()) {
+    // Global: Open MPI loads its own components, which look for libmpi's symbols.
+    void* lib = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    if (!lib) {
+      tried += std::string(tried.empty() ? "" : "; ") + dlerror();
+      continue;
+    }
+    const auto entry = reinterpret_cast<PluginEntry>(dlsym(lib, kPluginEntry));
+    const PluginApi* a = entry ? entry() : nullptr;
+    if (a && a->abi == kPluginAbi) return a;
+    tried += std::string(tried.empty() ? "" : "; ") + path + " is not this build's";
+  }
+  throw UserError("started under mpirun with more than one process, but the MPI library of this build (" +
+                  std::string(RANGESIM_MPI_PLUGIN) + ") cannot be loaded: " + tried +
+                  "; rebuild (cmake --build build --target rangesim) or reinstall, or split the run with --shard "
+                  "K/N and `rangesim merge`");
 }
 #else
 const PluginApi* load_plugin() {
