@@ -56,16 +56,17 @@ McPointStats summarise_trials(long long trials, const std::vector<double>& error
   s.trials = trials;
   s.detected = static_cast<long long>(errors.size());
   s.p_detect = wilson_interval(s.detected, trials);
-  std::vector<double> clean;
-  clean.reserve(errors.size());
-  for (std::size_t i = 0; i < errors.size(); ++i) {
-    if (i < outlier.size() && outlier[i])
-      ++s.outliers;
-    else
-      clean.push_back(errors[i]);
-  }
+  for (std::size_t i = 0; i < errors.size() && i < outlier.size(); ++i) s.outliers += outlier[i] ? 1 : 0;
   s.p_outlier = wilson_interval(s.outliers, trials);
   error_intervals(errors, &s.bias, &s.std, s.rms);
+  if (s.outliers == 0) {  // the clean trials are all of them: the same sums (no copy of 8 MB per 10^6 trials)
+    s.rms_clean = s.rms;
+    return s;
+  }
+  std::vector<double> clean;
+  clean.reserve(errors.size() - static_cast<std::size_t>(s.outliers));
+  for (std::size_t i = 0; i < errors.size(); ++i)
+    if (i >= outlier.size() || !outlier[i]) clean.push_back(errors[i]);
   error_intervals(clean, nullptr, nullptr, s.rms_clean);
   return s;
 }

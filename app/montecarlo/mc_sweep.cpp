@@ -56,14 +56,24 @@ PointOutcome run_point(const McModel& model, const McSweepPoint& p, const McSwee
   auto runner = model.point(p.signal, p.background, point_key(opt.seed, static_cast<std::uint64_t>(p.index)));
   long long n = 0, target = std::min(opt.trials, opt.max_trials);
   std::vector<double> errors;
-  std::vector<char> outlier;  // per detected trial
+  // Per detected trial up to the last outlier (summarise_trials: the ones after it are clean);
+  // empty while there is none, so a model without outliers never touches a page of it.
+  std::vector<char> outlier;
+  constexpr long long kBatch = 16;
+  McTrial batch[kBatch];
   reserve_trial_buffer(errors, target);
-  outlier.reserve(static_cast<std::size_t>(target));
   for (;;) {
-    for (; n < target; ++n) {
-      if ((n & 15) == 0 && halt.load(std::memory_order_relaxed)) return o;
-      const McTrial t = runner->trial(n);
-      if (t.detected) errors.push_back(t.error), outlier.push_back(t.outlier);
+    // In batches of kBatch trials (the runner's loop), the stop flag looked at between them.
+    while (n < target) {
+      if (halt.load(std::memory_order_relaxed)) return o;
+      const long long m = std::min<long long>(kBatch, target - n);
+      runner->trials(n, m, batch);
+      for (long long i = 0; i < m; ++i) {
+        if (!batch[i].detected) continue;
+        errors.push_back(batch[i].error);
+        if (batch[i].outlier) outlier.resize(errors.size(), 0), outlier.back() = 1;
+      }
+      n += m;
     }
     o.stats = summarise_trials(n, errors, outlier);
     if (opt.target_error_m <= 0 || meets_target(o.stats, model.metres_per_unit(), opt.target_error_m) ||

@@ -35,6 +35,12 @@ class McPointRunner {
  public:
   virtual ~McPointRunner() = default;
   virtual McTrial trial(long long t) = 0;
+  // Trials t0 .. t0 + n - 1 into out[0 .. n-1], the same values as n calls of trial(). The sweep
+  // calls this; a model whose trials are a few nanoseconds each overrides it with a loop the
+  // compiler can inline and overlap (no virtual call, no per-trial set-up checks).
+  virtual void trials(long long t0, long long n, McTrial* out) {
+    for (long long i = 0; i < n; ++i) out[i] = trial(t0 + i);
+  }
   // Random variates drawn so far (Poisson, normal, uniform), -1 if the kernel does not count them.
   virtual long long variates() const { return -1; }
 };

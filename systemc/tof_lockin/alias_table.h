@@ -33,7 +33,11 @@ class AliasTable {
   long long operator()(Stream& s) const {
     const unsigned __int128 p = static_cast<unsigned __int128>(s.next()) * size_;
     const auto i = static_cast<std::uint32_t>(p >> 64);
-    return first_ + (static_cast<std::uint64_t>(p) < threshold_[i] ? i : alias_[i]);
+    // Both candidates read, then selected without a branch: the compare is a coin toss where the
+    // bucket is shared, and a mispredicted jump cost more than the draw (tof-lockin Monte Carlo).
+    const std::uint32_t alias = alias_[i];
+    const std::uint64_t keep = 0 - static_cast<std::uint64_t>(static_cast<std::uint64_t>(p) < threshold_[i]);
+    return first_ + static_cast<long long>((i & keep) | (alias & ~keep));
   }
 
   long long first() const { return first_; }

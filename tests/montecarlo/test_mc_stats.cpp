@@ -55,6 +55,23 @@ TEST(McStats, IntervalsCoverTheTruth) {
   EXPECT_NEAR(cover_rms / double(reps), 0.95, tol);
 }
 
+// The clean rms leaves out exactly the flagged trials: with no flag (or an all-false flag vector)
+// it is the rms of all trials bit for bit; with flags, the rms of the others.
+TEST(McStats, CleanRmsLeavesOutTheOutliersOnly) {
+  const std::vector<double> e = {0.5, -1.25, 3.0, 0.125, -0.75};
+  const McPointStats none = summarise_trials(6, e), unflagged = summarise_trials(6, e, {0, 0, 0, 0, 0});
+  EXPECT_EQ(none.outliers, 0);
+  EXPECT_EQ(none.rms_clean.value, none.rms.value);
+  EXPECT_EQ(none.rms_clean.lo, none.rms.lo);
+  EXPECT_EQ(none.rms_clean.hi, none.rms.hi);
+  EXPECT_EQ(unflagged.to_record(), none.to_record());
+  const McPointStats flagged = summarise_trials(6, e, {0, 0, 1, 0, 0});
+  EXPECT_EQ(flagged.outliers, 1);
+  EXPECT_EQ(flagged.rms.value, none.rms.value);
+  EXPECT_DOUBLE_EQ(flagged.rms_clean.value, summarise_trials(4, {0.5, -1.25, 0.125, -0.75}).rms.value);
+  EXPECT_LT(flagged.rms_clean.value, flagged.rms.value);
+}
+
 TEST(McStats, RecordRoundTripIsExact) {
   const McPointStats s = summarise_trials(1000, {0.1, -0.2, 1.0 / 3.0, 1e-300, 7.25});
   const McPointStats t = McPointStats::from_record(s.to_record());
