@@ -214,14 +214,9 @@ void PixelArrayKernel::sample(int k) {
             std::min(golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, t_over_T), vsat);
         fires = A * swing >= row.threshold_V;
       } else {
-        double v;
-        if (options_.noise.shot) {
-          p.electrons += p.mean_step_e > 0 ? static_cast<double>(p.shot(p.rng)) : 0.0;
-          v = p.electrons / electrons_per_V_;
-        } else {
-          v = golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, t_over_T);
-        }
-        fires = A * (std::min(v + p.offset_V, vsat) + p.read_V) >= row.threshold_V;
+        const double input_V = noisy_input_V(
+            p, [&] { return golden::pixel_swing_V(in.signal_V, p.profile, in.background_V, dark_V_, t_over_T); });
+        fires = input_V >= row.threshold_V;
       }
       if (fires) act.set(i);
     }

@@ -46,6 +46,7 @@
 // Rows: a kernel may simulate a band of the array's rows (PixelArrayOptions::first_row,
 // row_count) so that bands run on several cores; the keyed streams make each row's bits
 // independent of the band it runs in.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -171,6 +172,22 @@ class PixelArrayKernel {
   BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
   int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
   void sample_exact(int k);
+  // A noisy pixel's comparator input at a sampling, the per-sampling path's expression (both
+  // per-sampling paths share it): the swing from its electrons so far, one more Poisson step drawn
+  // (shot noise on), or else `swing_V()`, the noise-free swing; then the frozen kTC offset,
+  // saturation and read noise.
+  template <class Swing>
+  double noisy_input_V(Pixel& p, Swing swing_V) {
+    double v;
+    if (options_.noise.shot) {
+      p.electrons += p.mean_step_e > 0 ? static_cast<double>(p.shot(p.rng)) : 0.0;
+      v = p.electrons / electrons_per_V_;
+    } else {
+      v = swing_V();
+    }
+    return config_.pixel.source_follower_gain *
+           (std::min(v + p.offset_V, config_.pixel.saturation_voltage_V) + p.read_V);
+  }
   // The per-pixel path (pixel_array_pixelwise.cpp).
   void reset_row_pixels(int r, const RowIllumination& in, RowState& row);
   void sample_pixels(int k);

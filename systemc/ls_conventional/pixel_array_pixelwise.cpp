@@ -71,19 +71,8 @@ void PixelArrayKernel::sample_pixels(int k) {
     ActivationRow& act = act_[static_cast<std::size_t>(r)];
     for (Pixel& p : row.pixels) {
       if (act.test(p.column)) continue;  // latched
-      double input_V;
-      if (!noisy) {
-        input_V = A * std::min(p.swing_T_V * t_over_T, vsat);
-      } else {
-        double v;
-        if (options_.noise.shot) {
-          p.electrons += p.mean_step_e > 0 ? static_cast<double>(p.shot(p.rng)) : 0.0;
-          v = p.electrons / electrons_per_V_;
-        } else {
-          v = p.swing_T_V * t_over_T;
-        }
-        input_V = A * (std::min(v + p.offset_V, vsat) + p.read_V);
-      }
+      const double input_V =
+          noisy ? noisy_input_V(p, [&] { return p.swing_T_V * t_over_T; }) : A * std::min(p.swing_T_V * t_over_T, vsat);
       if (input_V + p.comparator_V >= row.threshold_V) act.set(p.column);
     }
   }
