@@ -1,4 +1,5 @@
 #include "systemc/common/centre_validity.h"
+#include "systemc/common/row_points.h"
 #include "systemc/ls_conventional/simulate.h"
 
 #include <chrono>
@@ -128,21 +129,7 @@ void add_point(Reconstruction& out, const Point& x, int r, std::size_t f) {
   }
 }
 
-Table points_table() {
-  return Table({{"frame", Table::Kind::Index},
-                {"beam_position", Table::Kind::Index},
-                {"row", Table::Kind::Index},
-                {"truth_visible", Table::Kind::Flag},
-                {"truth_centre_px"},
-                {"truth_range_m"},
-                {"detected", Table::Kind::Flag},
-                {"centre_px"},
-                {"range_m"},
-                {"error_px"},
-                {"error_m"},
-                {"valid", Table::Kind::Flag},
-                {"detecting_fraction"}});
-}
+Table points_table() { return row_points_table(true); }
 
 // The points table's rows made when it is written, block by block (a full map's 137,000 points
 // are never held whole): the same points in the same order as reconstruct() counts them.

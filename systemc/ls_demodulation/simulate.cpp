@@ -1,4 +1,5 @@
 #include "systemc/common/centre_validity.h"
+#include "systemc/common/row_points.h"
 #include "systemc/ls_demodulation/simulate.h"
 
 #include <chrono>
@@ -135,18 +136,7 @@ Reconstruction reconstruct(const DemodRunResult& res, const scene::DemodOptics& 
       "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of the {} decision(s) of "
       "its frame (at least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
       cfg.min_detecting_fraction, cfg.grid.detections, cfg.edge_margin_px);
-  out.points = Table({{"frame", Table::Kind::Index},
-                      {"row", Table::Kind::Index},
-                      {"truth_visible", Table::Kind::Flag},
-                      {"truth_centre_px"},
-                      {"truth_range_m"},
-                      {"detected", Table::Kind::Flag},
-                      {"centre_px"},
-                      {"range_m"},
-                      {"error_px"},
-                      {"error_m"},
-                      {"valid", Table::Kind::Flag},
-                      {"detecting_fraction"}});
+  out.points = row_points_table(false);
   out.frames_csv = "frame,cycles,end_cycle";
   for (const auto& p : gt.phases) out.frames_csv += "," + p.name;
   out.frames_csv += ",rows_detected\n";
