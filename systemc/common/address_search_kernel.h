@@ -64,6 +64,12 @@ class ActivationRow {
 
 std::ostream& operator<<(std::ostream& os, const ActivationRow& row);
 
+// Lowest and highest activated column of a row (-1: none): all the address search reads of it.
+struct ActivationExtent {
+  int first = -1, last = -1;
+  bool operator==(const ActivationExtent& o) const { return first == o.first && last == o.last; }
+};
+
 // The RTL output ports during one clock cycle.
 struct AddressSearchPins {
   bool busy = false;        // busy_o
@@ -103,21 +109,19 @@ class AddressSearchKernel {
   // The addresses are decoded from the addr_bit_o stream, not copied from the state.
   AddressSearchResult run(const ActivationRow& act);
 
-  // The same result in closed form, no ticks (the event-skipping path; tests prove it equal).
-  AddressSearchResult evaluate(const ActivationRow& act) const {
+  // The same result in closed form, no ticks (the event-skipping path; tests prove it equal). The
+  // search reads nothing of the row but its lowest and highest activated column.
+  AddressSearchResult evaluate(const ActivationExtent& e) const {
     AddressSearchResult r;
-    const std::vector<std::uint64_t>& w = act.words();
-    std::size_t i = 0, j = w.size();
-    while (i < j && w[i] == 0) ++i;  // the first word with an activation, then the last
-    if (i < j) {
-      while (w[j - 1] == 0) --j;
+    if (e.first >= 0) {
       r.found = true;
-      r.left = static_cast<int>(i * 64) + __builtin_ctzll(w[i]);
-      r.right = static_cast<int>((j - 1) * 64) + 63 - __builtin_clzll(w[j - 1]);
+      r.left = e.first;
+      r.right = e.last;
     }
     r.done_cycle = operation_cycles(r.found);
     return r;
   }
+  AddressSearchResult evaluate(const ActivationRow& act) const { return evaluate(ActivationExtent{act.first(), act.last()}); }
 
   // Cycles from start (k = 0, exclusive) to done_o (inclusive): S + 2B, or S if nothing found.
   // Start-to-next-start is one more (the latch cycle).

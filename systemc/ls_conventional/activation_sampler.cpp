@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "golden/common/activation_cdf.h"
 #include "golden/common/pixel.h"
@@ -11,8 +12,50 @@
 namespace rangesim::systemc {
 
 namespace {
-constexpr std::size_t kMemoEntries = 16;  // distinct thresholds kept (a scene has one per background)
+constexpr std::size_t kMemoEntries = 16;    // distinct thresholds kept (a scene has one per background)
+constexpr std::size_t kSharedEntries = 64;  // the same, process-wide
 double Phi(double z) { return 0.5 * std::erfc(-z * M_SQRT1_2); }
+
+// The process-wide store of bounds and tables (ExactActivation::entry). Building them is most of
+// a kernel's set-up (about 1 ms for the preset's threshold, against 7 for a whole map).
+struct SharedEntry {
+  ActivationModel model;
+  double threshold_V = 0;
+  ActivationBounds b;
+  std::shared_ptr<const ActivationTable> table;
+};
+
+bool same_model(const ActivationModel& a, const ActivationModel& b) {
+  return a.shot == b.shot && a.ktc_V == b.ktc_V && a.read_V == b.read_V && a.electrons_per_V == b.electrons_per_V &&
+         a.gain == b.gain && a.saturation_V == b.saturation_V && a.samplings == b.samplings;
+}
+
+std::mutex& shared_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+std::vector<SharedEntry>& shared_entries() {
+  static std::vector<SharedEntry> v;
+  return v;
+}
+
+SharedEntry* find_shared(const ActivationModel& m, double threshold_V) {  // shared_mutex() held
+  for (SharedEntry& e : shared_entries())
+    if (e.threshold_V == threshold_V && same_model(e.model, m)) return &e;
+  return nullptr;
+}
+
+void publish(const ActivationModel& m, const ThresholdEntry& e) {
+  std::lock_guard<std::mutex> lock(shared_mutex());
+  if (SharedEntry* s = find_shared(m, e.threshold_V)) {
+    if (!s->table) s->table = e.table;
+    return;
+  }
+  std::vector<SharedEntry>& v = shared_entries();
+  if (v.size() >= kSharedEntries) v.erase(v.begin());
+  v.push_back({m, e.threshold_V, e.b, e.table});
+}
 }  // namespace
 
 ExactActivation::ExactActivation(const ActivationModel& model) : m_(model) {
@@ -40,7 +83,19 @@ ThresholdEntry& ExactActivation::entry(double threshold_V) {
   if (memo_.size() >= kMemoEntries) memo_.erase(memo_.begin());
   ThresholdEntry e;
   e.threshold_V = threshold_V;
-  e.b = compute_bounds(threshold_V);
+  bool known = false;
+  {
+    std::lock_guard<std::mutex> lock(shared_mutex());
+    if (const SharedEntry* s = find_shared(m_, threshold_V)) {
+      e.b = s->b;
+      e.table = s->table;
+      known = true;
+    }
+  }
+  if (!known) {
+    e.b = compute_bounds(threshold_V);
+    publish(m_, e);
+  }
   memo_.push_back(std::move(e));
   return memo_.back();
 }
@@ -154,8 +209,15 @@ bool ExactActivation::below(double u, double lambda, ThresholdEntry& e) {
   probability(lambda, e.threshold_V, p, q);
   ++exact_evaluations_;
   if (!e.table && ++e.exact_evaluations >= kTableAfter) {
-    const double t_e = e.threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
-    e.table = std::make_unique<ActivationTable>(t_e, s_e, std::max(e.b.never_upto_e, 0.0), e.b.always_from_e);
+    {
+      std::lock_guard<std::mutex> lock(shared_mutex());  // another kernel may have made it meanwhile
+      if (const SharedEntry* s = find_shared(m_, e.threshold_V)) e.table = s->table;
+    }
+    if (!e.table) {
+      const double t_e = e.threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
+      e.table = std::make_shared<const ActivationTable>(t_e, s_e, std::max(e.b.never_upto_e, 0.0), e.b.always_from_e);
+      publish(m_, e);
+    }
   }
   return u < p;
 }

@@ -80,7 +80,7 @@ struct ActivationBounds {
 struct ThresholdEntry {
   double threshold_V = 0;
   ActivationBounds b;
-  std::unique_ptr<ActivationTable> table;  // made after kTableAfter exact evaluations
+  std::shared_ptr<const ActivationTable> table;  // made after kTableAfter exact evaluations, or shared
   int exact_evaluations = 0;               // golden::activation_probability calls at this threshold
 };
 
@@ -91,7 +91,9 @@ class ExactActivation {
   static constexpr int kTableAfter = 8;  // exact evaluations at a threshold before its table is made
 
   // Bounds (and table) at threshold theta (comparator input, V); a small memo (rows share
-  // thresholds). A reference stays valid until the next call.
+  // thresholds). A reference stays valid until the next call. Both are pure functions of the model
+  // and theta, so they are also kept for the whole process (thread-safe): another kernel with the
+  // same model (the next map, another row band's thread, a Monte Carlo trial) takes them from there.
   ThresholdEntry& entry(double threshold_V);
   const ActivationBounds& bounds(double threshold_V) { return entry(threshold_V).b; }
   // f(lambda) and 1 - f(lambda) at threshold theta, the pixel's exact activation probability.

@@ -11,13 +11,6 @@ CentreProcessorKernel::CentreProcessorKernel(int address_bits) : address_bits_(a
                                 std::to_string(address_bits));
 }
 
-void CentreProcessorKernel::clear() {
-  sum_ = 0;
-  count_ = 0;
-  shift_ = 0;
-  bits_ = 0;
-}
-
 void CentreProcessorKernel::tick(bool clear_in, const AddressSearchPins& search) {
   if (clear_in) {
     clear();
@@ -32,24 +25,6 @@ void CentreProcessorKernel::tick(bool clear_in, const AddressSearchPins& search)
     shift_ = 0;
     bits_ = 0;
   }
-}
-
-void CentreProcessorKernel::accumulate(const AddressSearchResult& result) {
-  if (!result.found) return;
-  sum_ += static_cast<std::uint32_t>(result.left + result.right);
-  ++count_;
-}
-
-CentreProcessorPins CentreProcessorKernel::pins() const {
-  CentreProcessorPins p;
-  p.sum = sum_;
-  p.count = count_;
-  p.valid = count_ > 0;
-  if (p.valid) {
-    const std::uint64_t n = static_cast<std::uint64_t>(count_);
-    p.centre_q = static_cast<std::uint32_t>(((static_cast<std::uint64_t>(sum_) << kCentreFractionBits) + n) / (2 * n));
-  }
-  return p;
 }
 
 }  // namespace rangesim::systemc

@@ -40,10 +40,30 @@ class CentreProcessorKernel {
   // One rising edge with the inputs of the ending cycle: the row's search pins and clear.
   void tick(bool clear, const AddressSearchPins& search);
   // Event-skipping path: the whole stream of one sampling at once (tests prove it equal).
-  void accumulate(const AddressSearchResult& result);
-  void clear();
+  void accumulate(const AddressSearchResult& result) {
+    // Inline and without a branch: called for every row at every sampling.
+    sum_ += result.found ? static_cast<std::uint32_t>(result.left + result.right) : 0U;
+    count_ += result.found ? 1 : 0;
+  }
+  void clear() { sum_ = 0, count_ = 0, shift_ = 0, bits_ = 0; }
 
-  CentreProcessorPins pins() const;
+  // Inline, and the usual counts divided by constants: read for every row of every frame.
+  CentreProcessorPins pins() const {
+    CentreProcessorPins p;
+    p.sum = sum_;
+    p.count = count_;
+    p.valid = count_ > 0;
+    const std::uint64_t num = (static_cast<std::uint64_t>(sum_) << kCentreFractionBits) + static_cast<std::uint64_t>(count_);
+    switch (count_) {  // floor((sum 2^8 + n) / (2 n))
+      case 0: break;
+      case 1: p.centre_q = static_cast<std::uint32_t>(num / 2); break;
+      case 2: p.centre_q = static_cast<std::uint32_t>(num / 4); break;
+      case 3: p.centre_q = static_cast<std::uint32_t>(num / 6); break;
+      case 4: p.centre_q = static_cast<std::uint32_t>(num / 8); break;
+      default: p.centre_q = static_cast<std::uint32_t>(num / (2 * static_cast<std::uint64_t>(count_)));
+    }
+    return p;
+  }
   int address_bits() const { return address_bits_; }
 
  private:

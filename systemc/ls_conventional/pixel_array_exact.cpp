@@ -3,6 +3,7 @@
 // (certain_intervals.h) only the band between them is looked at one by one.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
@@ -23,11 +24,96 @@ void PixelArrayKernel::reset_row_exact(int r, const RowIllumination& in, RowStat
   row.band_at = band_k_.size();
   if (!intervals_) {  // every window pixel was looked at and decided in make_shape
     for (const BandPixel& p : s.band) band_k_.push_back(static_cast<std::uint8_t>(p.certain));
-    return;
+  } else {
+    pixels_examined_ += static_cast<long long>(s.band.size());
+    for (const BandPixel& p : s.band)
+      band_k_.push_back(static_cast<std::uint8_t>(p.certain >= 0 ? p.certain : draw(r, s, p, *shape_entry_)));
   }
-  pixels_examined_ += static_cast<long long>(s.band.size());
-  for (const BandPixel& p : s.band)
-    band_k_.push_back(static_cast<std::uint8_t>(p.certain >= 0 ? p.certain : draw(r, s, p, *shape_entry_)));
+  fill_extents(r - first_row_, s, band_k_.data() + row.band_at);
+}
+
+namespace {
+// Fired by sampling k: first firing 1..k (0, never, wraps to the largest unsigned).
+inline bool fired_by(std::uint8_t first_firing, int k) {
+  return static_cast<unsigned>(first_firing) - 1U < static_cast<unsigned>(k);
+}
+}  // namespace
+
+void PixelArrayKernel::set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const {
+  // What the latch holds at sampling k: the core ranges of samplings 1..k, then each band pixel as
+  // its own first firing says (even inside a core range).
+  act.clear();
+  if (k == 0) return;
+  act.set_range(s.held_first[static_cast<std::size_t>(k - 1)], s.held_last[static_cast<std::size_t>(k - 1)]);
+  for (std::size_t j = 0; j < s.band.size(); ++j) act.set(s.band[j].column, fired_by(fk[j], k));
+}
+
+void PixelArrayKernel::build_row(int r) const {
+  const RowState& row = rows_[static_cast<std::size_t>(r)];
+  set_row_bits(act_[static_cast<std::size_t>(r)], shapes_[static_cast<std::size_t>(row.shape)],
+               band_k_.data() + row.band_at, sampling_);
+  act_at_[static_cast<std::size_t>(r)] = generation_;
+}
+
+namespace {
+// fill_extents' widening of one row, N samplings (a compile-time N keeps the k loop in vector
+// registers): the held ranges' first / last columns, then each band pixel fired by k. Returns
+// whether a band pixel sits in the held range before it fired (a hole).
+template <int N>
+bool widen_by_band(int n, int* __restrict first, int* __restrict last, const int* __restrict held_first,
+                   const int* __restrict held_last, const int* __restrict column_from, const std::uint8_t* fk,
+                   std::size_t band) {
+  const int samplings = N > 0 ? N : n;
+  int f1[N > 0 ? N : 1], l1[N > 0 ? N : 1];
+  int* F = N > 0 ? f1 : first;
+  int* L = N > 0 ? l1 : last;
+  for (int k = 0; k < samplings; ++k) F[k] = held_first[k], L[k] = held_last[k];
+  bool hole = false;
+  for (std::size_t j = 0; j < band; ++j) {
+    const int f = fk[j], c = column_from[2 * j], from = column_from[2 * j + 1];
+    hole |= (from <= samplings) & ((f == 0) | (f > from));
+    const unsigned f_1 = static_cast<unsigned>(f) - 1U;  // fired by k + 1: f - 1 < k + 1, unsigned
+    for (int k = 0; k < samplings; ++k) {
+      const bool on = f_1 < static_cast<unsigned>(k + 1);
+      F[k] = on && c < F[k] ? c : F[k];
+      L[k] = on && c > L[k] ? c : L[k];
+    }
+  }
+  for (int k = 0; k < samplings; ++k) {
+    first[k] = L[k] < 0 ? -1 : F[k];
+    last[k] = L[k];
+  }
+  return hole;
+}
+}  // namespace
+
+void PixelArrayKernel::fill_extents(int r, const RowShape& s, const std::uint8_t* fk) {
+  // Per sampling: the held core range widened by the band pixels fired by then (without branches on
+  // the random first firings: no range is first = INT_MAX, last = -1 here). A band pixel inside the
+  // held range that has not fired (its draw fell in a 2^-56 tail of a certain outcome) punches a
+  // hole that may be at the range's edge: such a row takes its extents from its bits.
+  const int N = config_.multisampling.samplings;
+  const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
+  int* first = extent_first_.data() + at;
+  int* last = extent_last_.data() + at;
+  const std::size_t n = s.band.size();
+  const int* hf = s.held_first.data();
+  const int* hl = s.held_last.data();
+  const int* cf = s.band_column_from.data();
+  bool hole;
+  switch (N) {  // the usual counts of samplings unrolled (the preset's is 4)
+    case 2: hole = widen_by_band<2>(N, first, last, hf, hl, cf, fk, n); break;
+    case 4: hole = widen_by_band<4>(N, first, last, hf, hl, cf, fk, n); break;
+    case 8: hole = widen_by_band<8>(N, first, last, hf, hl, cf, fk, n); break;
+    default: hole = widen_by_band<0>(N, first, last, hf, hl, cf, fk, n);
+  }
+  if (!hole) return;
+  ActivationRow bits(columns());
+  for (int k = 1; k <= N; ++k) {
+    set_row_bits(bits, s, fk, k);
+    first[k - 1] = bits.first();
+    last[k - 1] = bits.last();
+  }
 }
 
 int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row) {
@@ -39,6 +125,8 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
   s.first = row.first, s.last = row.last, s.threshold_V = row.threshold_V;
   s.core_first.assign(static_cast<std::size_t>(N), 0);
   s.core_last.assign(static_cast<std::size_t>(N), -1);
+  s.held_first.assign(static_cast<std::size_t>(N), std::numeric_limits<int>::max());
+  s.held_last.assign(static_cast<std::size_t>(N), -1);
   s.band.clear();
   s.cut.clear();
   if (s.last >= s.first) {
@@ -79,7 +167,31 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
       }
     }
   }
+  hold_ranges(s);
   return shapes_used_++;
+}
+
+void PixelArrayKernel::hold_ranges(RowShape& s) const {
+  // Core ranges are nested (all are |i - x0| <= r_k): their union by k is the widest so far. None:
+  // first = INT_MAX, last = -1 (fill_extents widens it without a branch).
+  const int N = config_.multisampling.samplings;
+  int a = std::numeric_limits<int>::max(), b = -1;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(N); ++k) {
+    if (s.core_first[k] <= s.core_last[k]) {
+      a = std::min(a, s.core_first[k]);
+      b = std::max(b, s.core_last[k]);
+    }
+    s.held_first[k] = a, s.held_last[k] = b;
+  }
+  s.band_column_from.clear();
+  for (const BandPixel& p : s.band) {
+    int from = N + 1;
+    for (int k = N; k >= 1; --k)
+      if (s.held_first[static_cast<std::size_t>(k - 1)] <= p.column && p.column <= s.held_last[static_cast<std::size_t>(k - 1)])
+        from = k;
+    s.band_column_from.push_back(p.column);
+    s.band_column_from.push_back(from);
+  }
 }
 
 void PixelArrayKernel::core_ranges(const RowCertainty& c, double x0, RowShape& s) const {
@@ -126,28 +238,10 @@ int PixelArrayKernel::draw(int r, const RowShape& s, const BandPixel& p, Thresho
   return exact_->draw_first_firing(p.drive, e.threshold_V, rng);
 }
 
-void PixelArrayKernel::sample_exact(int k) {
-  // Rows in order: consecutive rows mostly share their shape, so its core range and band are
-  // looked up once per run of rows.
-  const std::size_t kk = static_cast<std::size_t>(k - 1);
-  int current = -1, core_first = 0, core_last = -1;
-  const BandPixel* band = nullptr;
-  std::size_t band_size = 0;
-  for (int r = 0; r < rows(); ++r) {
-    const RowState& row = rows_[static_cast<std::size_t>(r)];
-    if (row.shape != current) {
-      const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
-      current = row.shape;
-      core_first = s.core_first[kk], core_last = s.core_last[kk];
-      band = s.band.data(), band_size = s.band.size();
-    }
-    ActivationRow& act = act_[static_cast<std::size_t>(r)];
-    act.set_range(core_first, core_last);
-    const std::uint8_t* fk = band_k_.data() + row.band_at;
-    // Fired by k: first firing 1..k (0, never, wraps to the largest unsigned).
-    for (std::size_t j = 0; j < band_size; ++j)
-      act.set(band[j].column, static_cast<unsigned>(fk[j]) - 1U < static_cast<unsigned>(k));
-  }
+void PixelArrayKernel::sample_exact(int) {
+  // The firing samplings were decided at the reset: the rows' extents are ready, their bits are made
+  // when asked for (row()).
+  ++generation_;
 }
 
 }  // namespace rangesim::systemc

@@ -32,6 +32,7 @@ PixelArrayKernel::PixelArrayKernel(const LsConventionalConfig& config, const Pix
                                 " outside the array's " + std::to_string(config.pixel.rows));
   rows_.resize(static_cast<std::size_t>(band));
   act_.assign(static_cast<std::size_t>(band), ActivationRow(config.pixel.columns));
+  act_at_.assign(static_cast<std::size_t>(band), 0);
   dark_V_ = golden::dark_voltage_V(config.pixel);
   electrons_per_V_ = golden::electrons_per_volt(config.pixel);
   ktc_V_ = golden::ktc_noise_V(config.pixel);
@@ -128,6 +129,8 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   sampling_ = 0;
   const int N = config_.multisampling.samplings;
   per_pixel_ = stimulus_.per_pixel();
+  lazy_bits_ = exact_ && !per_pixel_;
+  ++generation_;
   if (per_pixel_) {
     const std::size_t want = static_cast<std::size_t>(config_.pixel.rows) * static_cast<std::size_t>(columns());
     if (!stimulus_.signal_px_V.empty() && stimulus_.signal_px_V.size() != want)
@@ -147,15 +150,17 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   if (exact_) {
     shapes_used_ = 0;
     band_k_.clear();
+    extent_first_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+    extent_last_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+    for (int r = 0; r < rows(); ++r)
+      reset_row_exact(first_row_ + r, stimulus_.rows[static_cast<std::size_t>(first_row_ + r)],
+                      rows_[static_cast<std::size_t>(r)]);
+    return;
   }
   for (int r = 0; r < rows(); ++r) {
     const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r)];
     RowState& row = rows_[static_cast<std::size_t>(r)];
     act_[static_cast<std::size_t>(r)].clear();
-    if (exact_) {
-      reset_row_exact(first_row_ + r, in, row);
-      continue;
-    }
     set_window(in, row);
     const int W = std::max(0, row.last - row.first + 1);
     row.pixels.resize(static_cast<std::size_t>(W));

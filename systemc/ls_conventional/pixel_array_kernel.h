@@ -25,8 +25,10 @@
 //
 // Exact activation sampling (config simulation.exact_activation_sampling, on by default; with
 // noise): within the window each pixel's first firing sampling is drawn at the reset from its exact
-// distribution, or set without a draw where it is certain to 2^-56 (activation_sampler.h); the
-// samplings then only latch the drawn bits. Off: the draws above at every sampling, unchanged.
+// distribution, or set without a draw where it is certain to 2^-56 (activation_sampler.h). The
+// reset also works out each row's extent (lowest and highest activated column) at every sampling,
+// all the event-skipping readout reads; a row's bits are made only when row() asks for them (the
+// ticked readout, the sc_module), from the same draws. Off: the draws above at every sampling.
 // Two further switches of that path: simulation.certain_intervals (sparse only; --dense looks at
 // every pixel) finds a row's certain pixels as intervals around the spot centre and looks only at
 // the band between them one by one (certain_intervals.h; bit-identical to looking at every window
@@ -94,8 +96,23 @@ class PixelArrayKernel {
   void reset_frame(std::uint64_t frame);
   void sample(int k);
 
-  // Rows are counted within the band: row(r) is the array's row first_row() + r.
-  const ActivationRow& row(int r) const { return act_[static_cast<std::size_t>(r)]; }
+  // Rows are counted within the band: row(r) is the array's row first_row() + r. On the exact path
+  // a row's bits are made when asked for (the event-skipping readout reads extent() instead).
+  const ActivationRow& row(int r) const {
+    const std::size_t i = static_cast<std::size_t>(r);
+    if (lazy_bits_ && act_at_[i] != generation_) build_row(r);
+    return act_[i];
+  }
+  // Lowest and highest activated column of row r, all the address search reads of it: on the exact
+  // path from the first firings drawn at the reset, without the bits; equal to row(r)'s first() and
+  // last() on every path (tests/skipping).
+  ActivationExtent extent(int r) const {
+    if (sampling_ == 0) return {};
+    if (!lazy_bits_) return {row(r).first(), row(r).last()};
+    const std::size_t i = static_cast<std::size_t>(r) * static_cast<std::size_t>(config_.multisampling.samplings) +
+                          static_cast<std::size_t>(sampling_ - 1);
+    return {extent_first_[i], extent_last_[i]};
+  }
   int rows() const { return static_cast<int>(rows_.size()); }
   int first_row() const { return first_row_; }
   int columns() const { return config_.pixel.columns; }
@@ -158,7 +175,12 @@ class PixelArrayKernel {
     int first = 0, last = -1;
     double threshold_V = 0;
     std::vector<int> core_first, core_last;
-    std::vector<BandPixel> band;
+    // Union of the core ranges of samplings 1..k at k - 1 (they are nested: all centred on the spot),
+    // which is what the latch holds of them by sampling k; none: first = INT_MAX, last = -1.
+    std::vector<int> held_first, held_last;
+    std::vector<BandPixel> band;  // ascending columns
+    // Per band pixel: its column and the first sampling whose held range covers it (N + 1: none).
+    std::vector<int> band_column_from;
     std::vector<double> cut;  // the band pixels' prepared inversions (ExactActivation::prepare_inversion)
   };
 
@@ -169,9 +191,15 @@ class PixelArrayKernel {
   void reset_row_exact(int r, const RowIllumination& in, RowState& row);
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
+  void hold_ranges(RowShape& shape) const;  // held_first / held_last and band_column_from
   BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
   int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
   void sample_exact(int k);
+  // The exact path's bits of a row at the current sampling (row()), and its extents at every
+  // sampling from the first firings drawn at the reset.
+  void build_row(int r) const;
+  void set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const;
+  void fill_extents(int r, const RowShape& s, const std::uint8_t* fk);
   // A noisy pixel's comparator input at a sampling, the per-sampling path's expression (both
   // per-sampling paths share it): the swing from its electrons so far, one more Poisson step drawn
   // (shot noise on), or else `swing_V()`, the noise-free swing; then the frozen kTC offset,
@@ -197,7 +225,11 @@ class PixelArrayKernel {
   StimulusSource source_;                          // optics: stimulus per frame access
   FrameStimulus stimulus_;                         // the current frame access
   std::vector<RowState> rows_;                     // per row
-  std::vector<ActivationRow> act_;                 // latched activations per row
+  mutable std::vector<ActivationRow> act_;         // latched activations per row (exact path: made by row())
+  mutable std::vector<std::uint64_t> act_at_;      // exact path: the generation_ each row's bits were made at
+  std::uint64_t generation_ = 1;                   // exact path: counts resets and samplings
+  bool lazy_bits_ = false;                         // this frame access takes the exact path
+  std::vector<int> extent_first_, extent_last_;    // exact path: row r's extent at sampling k at r N + k - 1
   std::uint64_t frame_ = 0;                        // current frame access
   bool have_frame_ = false;                        // reset_frame ran at least once
   bool per_pixel_ = false;                         // this frame access takes the per-pixel path

@@ -131,8 +131,11 @@ void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) con
   const bool spread = !taps_.empty();
   const int first = spread ? 0 : std::clamp(out.first_row, 0, rows());
   const int last = spread || out.row_count < 0 ? rows() : std::min(rows(), first + out.row_count);
+  // A plane puts the same lit point on every row: one truth for the frame access.
+  const bool same_every_row = scene_.shape == TargetShape::Plane;
+  const RowTruth plane = same_every_row ? truth(b, cot, first) : RowTruth{};
   for (int r = first; r < last; ++r) {
-    const RowTruth t = truth(b, cot, r);
+    const RowTruth t = same_every_row ? plane : truth(b, cot, r);
     systemc::RowIllumination& in = out.rows[static_cast<std::size_t>(r)];
     in.background_V = t.background_V;
     in.signal_V = t.hit ? t.signal_V : 0.0;

@@ -212,8 +212,12 @@ SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const Sens
     BandRun& o = band[static_cast<std::size_t>(b)];
     if (o.frames.size() != r.frames.size() || o.cycles != band[0].cycles)
       throw std::logic_error("run_sensor_kernel: row bands disagree on the frame schedule");
-    for (std::size_t f = 0; f < r.frames.size(); ++f)
-      r.frames[f].rows.insert(r.frames[f].rows.end(), o.frames[f].rows.begin(), o.frames[f].rows.end());
+    for (std::size_t f = 0; f < r.frames.size(); ++f) {
+      FrameResult& to = r.frames[f];
+      const FrameResult& from = o.frames[f];
+      to.rows.insert(to.rows.end(), from.rows.begin(), from.rows.end());
+      to.extents.insert(to.extents.end(), from.extents.begin(), from.extents.end());
+    }
   }
   r.cycles = band[0].cycles;
   r.simulated_time_s = static_cast<double>(r.cycles) / config.timing.clock_Hz;

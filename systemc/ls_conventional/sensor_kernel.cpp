@@ -58,13 +58,16 @@ void LsConventionalSensorKernel::account(const MultisamplingSequencerPins& p, lo
 void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& p) {
   FrameResult fr;
   fr.frame = p.frame;
-  fr.rows.reserve(centre_.size());
-  for (const auto& c : centre_) fr.rows.push_back(c.pins());
-  fr.extents.reserve(centre_.size());
-  for (std::size_t r = 0; r < centre_.size(); ++r) {
-    const ActivationRow& a = pixels_.row(static_cast<int>(r));
-    fr.extents.push_back({a.first(), a.last()});
-  }
+  // Sized first and written in place (a push_back of a struct built on the stack costs a failed
+  // store-to-load forward per row), with room for the whole array's rows: a row band's results are
+  // joined to the others' (run_sensor_kernel) without a new allocation.
+  const std::size_t rows = centre_.size();
+  fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
+  fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
+  fr.rows.resize(rows);
+  fr.extents.resize(rows);
+  for (std::size_t r = 0; r < rows; ++r) fr.rows[r] = centre_[r].pins();
+  for (std::size_t r = 0; r < rows; ++r) fr.extents[r] = pixels_.extent(static_cast<int>(r));
   fr.end_cycle = sequencer_.cycle() + 1;
   fr.phase_cycles = phase_cycles_;
   for (long long c : phase_cycles_) fr.cycles += c;
@@ -112,7 +115,7 @@ void LsConventionalSensorKernel::step() {
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
     const std::size_t rows = search_.size();
-    for (std::size_t r = 0; r < rows; ++r) centre_[r].accumulate(search_[r].evaluate(pixels_.row(static_cast<int>(r))));
+    for (std::size_t r = 0; r < rows; ++r) centre_[r].accumulate(search_[r].evaluate(pixels_.extent(static_cast<int>(r))));
   }
   sequencer_.advance_to(next);
   settle();

@@ -32,12 +32,6 @@ struct SensorKernelOptions {
   bool event_skipping = true;  // step() jumps to the next event instead of ticking every cycle
 };
 
-// Lowest and highest activated column of a row (-1: none).
-struct ActivationExtent {
-  int first = -1, last = -1;
-  bool operator==(const ActivationExtent& o) const { return first == o.first && last == o.last; }
-};
-
 // Outcome of one frame access.
 struct FrameResult {
   std::uint64_t frame = 0;                // frame-access counter (beam position index in a range map)

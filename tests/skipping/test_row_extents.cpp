@@ -1,0 +1,89 @@
+// Proof of the exact path's row extents (systemc/ls_conventional/pixel_array_kernel.h extent()):
+// the event-skipping readout reads each row's lowest and highest activated column, which the exact
+// path computes from the first firings drawn at the reset, without making the row's bits. At every
+// sampling of every row they must equal the first and last set bit of the row as the latch holds it
+// (row(), made on demand from the same draws), under every noise configuration, with and without
+// the certain intervals, for several counts of samplings (the unrolled 2, 4, 8 and the general
+// loop), tracking and fixed thresholds, and on the plane map. LsConventionalSensorKernel's
+// EventSkippingEqualsTicking then shows the bits themselves equal to the ticked latch.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scene/scene.h"
+#include "systemc/ls_conventional/scene_optics.h"
+#include "tests/skipping/exact_activation_helpers.h"
+#include "tests/systemc/sensor_test_helpers.h"
+
+using namespace exact_test;
+
+namespace {
+
+// Every row at every sampling of `frames` frame accesses: extent() == the bits' first and last.
+// Returns how many (row, sampling) pairs had an activation, so a test cannot pass on empty rows.
+long long check_extents(const LsConventionalConfig& c, const rs::PixelArrayOptions& o, rs::StimulusSource src,
+                        int frames, const std::string& what) {
+  rs::PixelArrayKernel px(c, o, std::move(src));
+  long long lit = 0;
+  for (int f = 0; f < frames; ++f) {
+    px.reset_frame(static_cast<std::uint64_t>(f));
+    for (int r = 0; r < px.rows(); ++r) {
+      EXPECT_EQ(px.extent(r), rs::ActivationExtent{}) << what;
+      EXPECT_FALSE(px.row(r).any()) << what;
+    }
+    for (int k = 1; k <= c.multisampling.samplings; ++k) {
+      px.sample(k);
+      for (int r = 0; r < px.rows(); ++r) {
+        const rs::ActivationExtent e = px.extent(r);
+        const rs::ActivationRow& bits = px.row(r);
+        if (e.first != bits.first() || e.last != bits.last()) {
+          ADD_FAILURE() << what << ": frame " << f << " sampling " << k << " row " << r << ": extent [" << e.first
+                        << ", " << e.last << "], bits [" << bits.first() << ", " << bits.last() << "]";
+          return lit;
+        }
+        lit += e.first >= 0;
+      }
+    }
+  }
+  return lit;
+}
+
+}  // namespace
+
+TEST(RowExtents, EqualTheLatchedBitsOnRandomRows) {
+  long long lit = 0;
+  for (const int samplings : {2, 3, 4, 8}) {
+    for (const rs::PixelNoiseConfig noise :
+         {rs::PixelNoiseConfig{}, rs::PixelNoiseConfig{true, false, false}, rs::PixelNoiseConfig{false, true, true},
+          rs::PixelNoiseConfig{true, true, false}, rs::PixelNoiseConfig::none()}) {
+      for (const bool intervals : {true, false}) {
+        for (const bool fixed : {false, true}) {
+          LsConventionalConfig c = rs::test::small_config(12, 64, samplings);
+          c.simulation.certain_intervals = intervals;
+          if (fixed) c.comparator.threshold_mode = rangesim::ThresholdMode::Fixed;
+          rs::PixelArrayOptions o;
+          o.noise = noise;
+          o.seed = 23;
+          const std::string what = "N=" + std::to_string(samplings) + " shot " + std::to_string(noise.shot) +
+                                   " ktc " + std::to_string(noise.reset_ktc) + " read " +
+                                   std::to_string(noise.read) + " intervals " + std::to_string(intervals) +
+                                   " fixed " + std::to_string(fixed);
+          lit += check_extents(c, o, rs::test::RandomStimulus{5, 0.005, 1.5, 1e-4, 0.2, 64}, 25, what);
+        }
+      }
+    }
+  }
+  EXPECT_GT(lit, 20000);
+  RecordProperty("lit_row_samplings", std::to_string(lit));
+}
+
+TEST(RowExtents, EqualTheLatchedBitsOnThePlaneMap) {
+  // The preset on scenes/plane.toml: rows share their shape, each with its own draws.
+  const LsConventionalConfig c = preset();
+  const rangesim::scene::SceneOptics optics(
+      c, rangesim::scene::load_scene(std::string(RANGESIM_SOURCE_DIR) + "/scenes/plane.toml", "ls-conventional"));
+  const long long lit = check_extents(
+      c, rs::PixelArrayOptions{}, [&optics](std::uint64_t f, rs::FrameStimulus& s) { optics.stimulus(f, s); }, 120,
+      "plane");
+  EXPECT_GT(lit, 120 * 300);
+}
