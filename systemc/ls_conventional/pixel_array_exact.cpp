@@ -7,6 +7,7 @@
 
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
+#include "systemc/common/keyed_uniforms.h"
 #include "systemc/common/random_stream.h"
 #include "systemc/ls_conventional/pixel_array_kernel.h"
 
@@ -22,14 +23,47 @@ void PixelArrayKernel::reset_row_exact(int r, const RowIllumination& in, RowStat
   row.first = s.first, row.last = s.last, row.threshold_V = s.threshold_V;
   pixels_simulated_ += std::max(0, s.last - s.first + 1);
   row.band_at = band_k_.size();
+  row.uniforms = 0;
   if (!intervals_) {  // every window pixel was looked at and decided in make_shape
     for (const BandPixel& p : s.band) band_k_.push_back(static_cast<std::uint8_t>(p.certain));
-  } else {
-    pixels_examined_ += static_cast<long long>(s.band.size());
-    for (const BandPixel& p : s.band)
-      band_k_.push_back(static_cast<std::uint8_t>(p.certain >= 0 ? p.certain : draw(r, s, p, *shape_entry_)));
+    return;
   }
-  fill_extents(r - first_row_, s, band_k_.data() + row.band_at);
+  pixels_examined_ += static_cast<long long>(s.band.size());
+  for (const BandPixel& p : s.band) {
+    int k = p.certain;
+    if (k < 0 && s.by_uniform) {  // drawn in finish_row_exact, once every row's uniform is made
+      draw_rc_.push_back(row_column(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(p.column)));
+      ++row.uniforms;
+      k = 0;
+    } else if (k < 0) {
+      k = draw(r, s, p, *shape_entry_);
+    }
+    band_k_.push_back(static_cast<std::uint8_t>(k));
+  }
+}
+
+void PixelArrayKernel::finish_row_exact(int r, const double*& u) {
+  // The row's uniforms (keyed_uniforms, in the order reset_row_exact asked for them) inverted, as
+  // draw() would one by one; then its extents.
+  const RowState& row = rows_[static_cast<std::size_t>(r)];
+  const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
+  std::uint8_t* fk = band_k_.data() + row.band_at;
+  if (row.uniforms > 0) {
+    if (row.shape != finish_shape_) {  // rows of one shape share its threshold entry
+      finish_shape_ = row.shape;
+      finish_entry_ = &exact_->entry(s.threshold_V);
+    }
+    ThresholdEntry& e = *finish_entry_;
+    pixels_drawn_ += row.uniforms;
+    for (std::size_t j = 0; j < s.band.size(); ++j) {
+      const BandPixel& p = s.band[j];
+      if (p.certain >= 0) continue;
+      fk[j] = static_cast<std::uint8_t>(p.prepared ? exact_->invert_prepared(p.drive, e, s.cut.data() + p.cut_at, *u)
+                                                   : exact_->invert_first_firing(p.drive, e, *u));
+      ++u;
+    }
+  }
+  fill_extents(r, s, fk);
 }
 
 namespace {
@@ -107,12 +141,17 @@ void PixelArrayKernel::fill_extents(int r, const RowShape& s, const std::uint8_t
     case 8: hole = widen_by_band<8>(N, first, last, hf, hl, cf, fk, n); break;
     default: hole = widen_by_band<0>(N, first, last, hf, hl, cf, fk, n);
   }
-  if (!hole) return;
+  if (hole) extents_from_bits(r, s, fk);
+}
+
+void PixelArrayKernel::extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk) {
+  const int N = config_.multisampling.samplings;
+  const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
   ActivationRow bits(columns());
   for (int k = 1; k <= N; ++k) {
     set_row_bits(bits, s, fk, k);
-    first[k - 1] = bits.first();
-    last[k - 1] = bits.last();
+    extent_first_[at + static_cast<std::size_t>(k - 1)] = bits.first();
+    extent_last_[at + static_cast<std::size_t>(k - 1)] = bits.last();
   }
 }
 
@@ -129,6 +168,7 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
   s.held_last.assign(static_cast<std::size_t>(N), -1);
   s.band.clear();
   s.cut.clear();
+  s.by_uniform = false;
   if (s.last >= s.first) {
     ThresholdEntry& e = exact_->entry(s.threshold_V);
     shape_entry_ = &e;
@@ -153,6 +193,7 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
       const int left_hi = col(std::ceil(x0 - inner));
       const int right_lo = std::max(col(std::floor(x0 + inner)), left_hi + 1);
       const int right_hi = outer == RowCertainty::kAll ? s.last : col(std::ceil(x0 + outer));
+      s.by_uniform = inversion_ && ExactActivation::inversion_applies(e);
       for (int i = left_lo; i <= right_hi; i = (i == left_hi && right_lo > i + 1) ? right_lo : i + 1) {
         if (c.classify(std::fabs(i - x0)) >= 0) continue;
         BandPixel p = look_at(i, in, e);

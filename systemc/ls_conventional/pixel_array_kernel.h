@@ -155,6 +155,7 @@ class PixelArrayKernel {
     std::vector<Pixel> pixels;  // window pixels (index i - first), per-sampling path
     int shape = -1;             // exact path: the row's RowShape in shapes_
     std::size_t band_at = 0;    // exact path: its band pixels' first firings from band_k_[band_at]
+    int uniforms = 0;           // exact path: of them, drawn by inversion of the frame's keyed uniforms
   };
   // Exact path: a pixel looked at one by one, with its certain first firing or its drive for a draw.
   struct BandPixel {
@@ -182,6 +183,7 @@ class PixelArrayKernel {
     // Per band pixel: its column and the first sampling whose held range covers it (N + 1: none).
     std::vector<int> band_column_from;
     std::vector<double> cut;  // the band pixels' prepared inversions (ExactActivation::prepare_inversion)
+    bool by_uniform = false;  // its random band pixels are drawn by inversion of a keyed uniform
   };
 
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
@@ -189,6 +191,8 @@ class PixelArrayKernel {
   void set_window(const RowIllumination& in, RowState& row);  // threshold and simulated window
   // The exact path (pixel_array_exact.cpp): a row's reset for frame_, and the latch of sampling k.
   void reset_row_exact(int r, const RowIllumination& in, RowState& row);
+  void finish_row_exact(int r, const double*& u);  // r within the band; u: its first uniform
+  void extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk);  // a row with a hole
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
   void hold_ranges(RowShape& shape) const;  // held_first / held_last and band_column_from
@@ -250,6 +254,10 @@ class PixelArrayKernel {
   int shapes_used_ = 0;                            // .. the first shapes_used_ of them (kept for reuse)
   ThresholdEntry* shape_entry_ = nullptr;          // the last shape's threshold entry
   std::vector<std::uint8_t> band_k_;               // exact path: first firing of every row's band pixels
+  std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each uniform the frame needs
+  std::vector<double> uniforms_;                   // .. and the uniforms (keyed_uniforms)
+  int finish_shape_ = -1;                          // finish_row_exact: the shape of finish_entry_
+  ThresholdEntry* finish_entry_ = nullptr;
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 

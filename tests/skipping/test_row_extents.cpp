@@ -5,12 +5,17 @@
 // (row(), made on demand from the same draws), under every noise configuration, with and without
 // the certain intervals, for several counts of samplings (the unrolled 2, 4, 8 and the general
 // loop), tracking and fixed thresholds, and on the plane map. LsConventionalSensorKernel's
-// EventSkippingEqualsTicking then shows the bits themselves equal to the ticked latch.
+// EventSkippingEqualsTicking then shows the bits themselves equal to the ticked latch. And the
+// frame's uniforms made in one batch (systemc/common/keyed_uniforms.h) are each pixel's own.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
+#include "systemc/common/keyed_uniforms.h"
+#include "systemc/common/random_stream.h"
 #include "systemc/ls_conventional/scene_optics.h"
 #include "tests/skipping/exact_activation_helpers.h"
 #include "tests/systemc/sensor_test_helpers.h"
@@ -86,4 +91,25 @@ TEST(RowExtents, EqualTheLatchedBitsOnThePlaneMap) {
       c, rs::PixelArrayOptions{}, [&optics](std::uint64_t f, rs::FrameStimulus& s) { optics.stimulus(f, s); }, 120,
       "plane");
   EXPECT_GT(lit, 120 * 300);
+}
+
+TEST(KeyedUniforms, EqualThePixelsKeyedUniformsOneByOne) {
+  // The batch (vectorised where the CPU allows) gives each pixel's own keyed_uniform bit for bit,
+  // at every length (the vector loop's tail) and for rows and columns across the 32-bit range.
+  std::mt19937_64 rng(11);
+  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{8}, std::size_t{9},
+                              std::size_t{1000}, std::size_t{4099}}) {
+    const std::uint64_t frame_key = rs::frame_stream_key(rng(), rng());
+    std::vector<std::uint64_t> rc(n);
+    for (auto& x : rc) x = rs::row_column(static_cast<std::uint32_t>(rng()), static_cast<std::uint32_t>(rng()));
+    std::vector<double> u(n, -1.0);
+    rs::keyed_uniforms(frame_key, rc.data(), u.data(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double one = rs::keyed_uniform(rs::pixel_key_in_frame(frame_key, static_cast<std::uint32_t>(rc[i] >> 32),
+                                                                   static_cast<std::uint32_t>(rc[i])));
+      ASSERT_EQ(u[i], one) << "n " << n << " i " << i;
+      ASSERT_GT(u[i], 0.0);
+      ASSERT_LT(u[i], 1.0);
+    }
+  }
 }

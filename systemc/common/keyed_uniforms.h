@@ -1,0 +1,21 @@
+#pragma once
+// Many pixels' keyed uniforms of one frame access at once (random_stream.h): the same bits as
+// keyed_uniform(pixel_key_in_frame(frame_key, row, column)) one by one, computed in a loop the
+// compiler vectorises. Where the CPU has AVX-512 (x86-64-v4) a clone with eight 64-bit lanes runs
+// (SplitMix64 needs 64-bit multiplies, which only AVX-512DQ has in vector form), picked once at
+// load time; elsewhere the plain loop. Integer arithmetic and an exact conversion: every clone
+// gives the same bits.
+#include <cstddef>
+#include <cstdint>
+
+namespace rangesim::systemc {
+
+// The row in the high and the column in the low 32 bits, as pixel_key_in_frame packs them.
+inline std::uint64_t row_column(std::uint32_t row, std::uint32_t column) {
+  return (static_cast<std::uint64_t>(row) << 32) | column;
+}
+
+// u[i] = keyed_uniform(pixel_key_in_frame(frame_key, row and column of rc[i])) for i < n.
+void keyed_uniforms(std::uint64_t frame_key, const std::uint64_t* rc, double* u, std::size_t n);
+
+}  // namespace rangesim::systemc
