@@ -3,6 +3,7 @@
 // (certain_intervals.h) only the band between them is looked at one by one.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "golden/common/pixel.h"
@@ -46,7 +47,7 @@ void PixelArrayKernel::finish_row_exact(int r, const double*& u) {
   // The row's uniforms (keyed_uniforms, in the order reset_row_exact asked for them) inverted, as
   // draw() would one by one; then its extents.
   const RowState& row = rows_[static_cast<std::size_t>(r)];
-  const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
+  RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
   std::uint8_t* fk = band_k_.data() + row.band_at;
   if (row.uniforms > 0) {
     if (row.shape != finish_shape_) {  // rows of one shape share its threshold entry
@@ -121,16 +122,32 @@ bool widen_by_band(int n, int* __restrict first, int* __restrict last, const int
 }
 }  // namespace
 
-void PixelArrayKernel::fill_extents(int r, const RowShape& s, const std::uint8_t* fk) {
+void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk) {
   // Per sampling: the held core range widened by the band pixels fired by then (without branches on
   // the random first firings: no range is first = INT_MAX, last = -1 here). A band pixel inside the
   // held range that has not fired (its draw fell in a 2^-56 tail of a certain outcome) punches a
   // hole that may be at the range's edge: such a row takes its extents from its bits.
+  // The extents are a function of the band's first firings, and the rows of a shape mostly repeat a
+  // few patterns of them (two rows in three on the plane map repeat the previous row's): a small
+  // memo per shape, keyed by the packed pattern, answers those.
   const int N = config_.multisampling.samplings;
   const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
   int* first = extent_first_.data() + at;
   int* last = extent_last_.data() + at;
   const std::size_t n = s.band.size();
+  std::uint64_t key = RowShape::kNoPattern;
+  std::size_t slot = 0;
+  if (n < 8) {
+    key = static_cast<std::uint64_t>(n) << 56;
+    std::memcpy(&key, fk, n);  // the first n bytes: a little-endian host puts them low, any host is consistent
+    slot = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % RowShape::kMemo;
+    if (s.memo_key[slot] == key) {
+      const std::size_t m = slot * static_cast<std::size_t>(N);
+      std::copy_n(s.memo_first.data() + m, N, first);
+      std::copy_n(s.memo_last.data() + m, N, last);
+      return;
+    }
+  }
   const int* hf = s.held_first.data();
   const int* hl = s.held_last.data();
   const int* cf = s.band_column_from.data();
@@ -142,6 +159,11 @@ void PixelArrayKernel::fill_extents(int r, const RowShape& s, const std::uint8_t
     default: hole = widen_by_band<0>(N, first, last, hf, hl, cf, fk, n);
   }
   if (hole) extents_from_bits(r, s, fk);
+  if (key == RowShape::kNoPattern) return;
+  s.memo_key[slot] = key;
+  const std::size_t m = slot * static_cast<std::size_t>(N);
+  std::copy_n(first, N, s.memo_first.data() + m);
+  std::copy_n(last, N, s.memo_last.data() + m);
 }
 
 void PixelArrayKernel::extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk) {
@@ -169,6 +191,9 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
   s.band.clear();
   s.cut.clear();
   s.by_uniform = false;
+  s.memo_key.fill(RowShape::kNoPattern);
+  s.memo_first.resize(RowShape::kMemo * static_cast<std::size_t>(N));
+  s.memo_last.resize(RowShape::kMemo * static_cast<std::size_t>(N));
   if (s.last >= s.first) {
     ThresholdEntry& e = exact_->entry(s.threshold_V);
     shape_entry_ = &e;

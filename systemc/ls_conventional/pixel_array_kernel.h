@@ -49,6 +49,7 @@
 // row_count) so that bands run on several cores; the keyed streams make each row's bits
 // independent of the band it runs in.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -184,6 +185,11 @@ class PixelArrayKernel {
     std::vector<int> band_column_from;
     std::vector<double> cut;  // the band pixels' prepared inversions (ExactActivation::prepare_inversion)
     bool by_uniform = false;  // its random band pixels are drawn by inversion of a keyed uniform
+    // fill_extents' memo: kMemo slots of extents (N per slot) by the band's packed first firings.
+    static constexpr std::size_t kMemo = 16;
+    static constexpr std::uint64_t kNoPattern = ~std::uint64_t{0};  // an empty slot (no key has 0xff on top)
+    std::array<std::uint64_t, kMemo> memo_key{};
+    std::vector<int> memo_first, memo_last;
   };
 
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
@@ -203,7 +209,7 @@ class PixelArrayKernel {
   // sampling from the first firings drawn at the reset.
   void build_row(int r) const;
   void set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const;
-  void fill_extents(int r, const RowShape& s, const std::uint8_t* fk);
+  void fill_extents(int r, RowShape& s, const std::uint8_t* fk);
   // A noisy pixel's comparator input at a sampling, the per-sampling path's expression (both
   // per-sampling paths share it): the swing from its electrons so far, one more Poisson step drawn
   // (shot noise on), or else `swing_V()`, the noise-free swing; then the frozen kTC offset,
