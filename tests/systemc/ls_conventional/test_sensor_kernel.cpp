@@ -259,7 +259,8 @@ TEST(LsConventionalSensorKernel, CycleBudgetIsEnforced) {
 
 TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
   // run_sensor_kernel splits the rows into bands, one thread each: the keyed streams make every
-  // row's bits the same in any band, so the merged frames equal the one-thread run's.
+  // row's bits the same in any band, so the merged frames (their activation extents too) equal the
+  // one-thread run's.
   const LsConventionalConfig c = small_config(23, 96, 4);
   RandomStimulus stim;
   stim.sig_lo = 0.011;
@@ -274,7 +275,10 @@ TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
       const auto many = rs::run_sensor_kernel(c, options(true, noise), stim, run);
       ASSERT_EQ(many.thread_cpu_s.size(), static_cast<std::size_t>(threads));
       ASSERT_EQ(many.frames.size(), one.frames.size());
-      for (std::size_t f = 0; f < one.frames.size(); ++f) EXPECT_TRUE(one.frames[f] == many.frames[f]) << f;
+      for (std::size_t f = 0; f < one.frames.size(); ++f) {
+        EXPECT_TRUE(one.frames[f] == many.frames[f]) << f;
+        EXPECT_TRUE(one.frames[f].extents == many.frames[f].extents) << f;  // every band's rows joined
+      }
       EXPECT_EQ(many.cycles, one.cycles);
       EXPECT_EQ(many.pixels_simulated, one.pixels_simulated);
       EXPECT_TRUE(many.errors.empty());
