@@ -150,7 +150,7 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk) 
   std::size_t slot = 0;
   if (n < 8) {
     key = static_cast<std::uint64_t>(n) << 56;
-    std::memcpy(&key, fk, n);  // the first n bytes: a little-endian host puts them low, any host is consistent
+    for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
     slot = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % RowShape::kMemo;
     if (s.memo_key[slot] == key) {
       const std::size_t m = slot * static_cast<std::size_t>(N);
