@@ -195,21 +195,22 @@ class PixelArrayKernel {
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
   double compute_cut_swing_V(double threshold_V) const;
   void set_window(const RowIllumination& in, RowState& row);  // threshold and simulated window
-  // The exact path (pixel_array_exact.cpp): a row's reset for frame_, and the latch of sampling k.
+  // The exact path (pixel_array_exact.cpp): a row's reset for frame_ in two passes around the
+  // frame's batch of uniforms, and the latch of sampling k.
   void reset_row_exact(int r, const RowIllumination& in, RowState& row);
   void finish_row_exact(int r, const double*& u);  // r within the band; u: its first uniform
-  void extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk);  // a row with a hole
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
-  void hold_ranges(RowShape& shape) const;  // held_first / held_last and band_column_from
   BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
   int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
   void sample_exact(int k);
-  // The exact path's bits of a row at the current sampling (row()), and its extents at every
-  // sampling from the first firings drawn at the reset.
+  // What the exact path's latch holds (pixel_array_extents.cpp): a row's extents at every sampling
+  // from the first firings drawn at the reset, and its bits at the current sampling (row()).
+  void hold_ranges(RowShape& shape) const;  // held_first / held_last and band_column_from
+  void fill_extents(int r, RowShape& s, const std::uint8_t* fk);
+  void extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk);  // a row with a hole
   void build_row(int r) const;
   void set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const;
-  void fill_extents(int r, RowShape& s, const std::uint8_t* fk);
   // A noisy pixel's comparator input at a sampling, the per-sampling path's expression (both
   // per-sampling paths share it): the swing from its electrons so far, one more Poisson step drawn
   // (shot noise on), or else `swing_V()`, the noise-free swing; then the frozen kTC offset,

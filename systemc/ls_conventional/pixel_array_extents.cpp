@@ -1,0 +1,158 @@
+// The pixel array's exact path, what the latch holds (pixel_array_kernel.h): from the first firings
+// drawn at the reset, a row's extent (lowest and highest activated column) at every sampling, which
+// is all the event-skipping address search reads, and its bits when row() asks for them. The held
+// core ranges are the union of the certain intervals' ranges by sampling k (hold_ranges); a band
+// pixel's own first firing decides it, even inside a held range.
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+#include "systemc/ls_conventional/pixel_array_kernel.h"
+
+namespace rangesim::systemc {
+
+void PixelArrayKernel::hold_ranges(RowShape& s) const {
+  // Core ranges are nested (all are |i - x0| <= r_k): their union by k is the widest so far. None:
+  // first = INT_MAX, last = -1 (fill_extents widens it without a branch).
+  const int N = config_.multisampling.samplings;
+  int a = std::numeric_limits<int>::max(), b = -1;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(N); ++k) {
+    if (s.core_first[k] <= s.core_last[k]) {
+      a = std::min(a, s.core_first[k]);
+      b = std::max(b, s.core_last[k]);
+    }
+    s.held_first[k] = a, s.held_last[k] = b;
+  }
+  s.band_column_from.clear();
+  for (const BandPixel& p : s.band) {
+    int from = N + 1;
+    for (int k = N; k >= 1; --k)
+      if (s.held_first[static_cast<std::size_t>(k - 1)] <= p.column && p.column <= s.held_last[static_cast<std::size_t>(k - 1)])
+        from = k;
+    s.band_column_from.push_back(p.column);
+    s.band_column_from.push_back(from);
+  }
+}
+
+namespace {
+// Fired by sampling k: first firing 1..k (0, never, wraps to the largest unsigned).
+inline bool fired_by(std::uint8_t first_firing, int k) {
+  return static_cast<unsigned>(first_firing) - 1U < static_cast<unsigned>(k);
+}
+}  // namespace
+
+void PixelArrayKernel::set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const {
+  // What the latch holds at sampling k: the core ranges of samplings 1..k, then each band pixel as
+  // its own first firing says (even inside a core range).
+  act.clear();
+  if (k == 0) return;
+  act.set_range(s.held_first[static_cast<std::size_t>(k - 1)], s.held_last[static_cast<std::size_t>(k - 1)]);
+  for (std::size_t j = 0; j < s.band.size(); ++j) act.set(s.band[j].column, fired_by(fk[j], k));
+}
+
+void PixelArrayKernel::build_row(int r) const {
+  const RowState& row = rows_[static_cast<std::size_t>(r)];
+  set_row_bits(act_[static_cast<std::size_t>(r)], shapes_[static_cast<std::size_t>(row.shape)],
+               band_k_.data() + row.band_at, sampling_);
+  act_at_[static_cast<std::size_t>(r)] = generation_;
+}
+
+namespace {
+// fill_extents' widening of one row, N samplings (a compile-time N keeps the k loop in vector
+// registers): the held ranges' first / last columns, then each band pixel fired by k. Returns
+// whether a band pixel sits in the held range before it fired (a hole).
+template <int N>
+bool widen_by_band(int n, int* __restrict first, int* __restrict last, const int* __restrict held_first,
+                   const int* __restrict held_last, const int* __restrict column_from, const std::uint8_t* fk,
+                   std::size_t band) {
+  const int samplings = N > 0 ? N : n;
+  int f1[N > 0 ? N : 1], l1[N > 0 ? N : 1];
+  int* F = N > 0 ? f1 : first;
+  int* L = N > 0 ? l1 : last;
+  for (int k = 0; k < samplings; ++k) F[k] = held_first[k], L[k] = held_last[k];
+  bool hole = false;
+  for (std::size_t j = 0; j < band; ++j) {
+    const int f = fk[j], c = column_from[2 * j], from = column_from[2 * j + 1];
+    hole |= (from <= samplings) & ((f == 0) | (f > from));
+    const unsigned f_1 = static_cast<unsigned>(f) - 1U;  // fired by k + 1: f - 1 < k + 1, unsigned
+    for (int k = 0; k < samplings; ++k) {
+      const bool on = f_1 < static_cast<unsigned>(k + 1);
+      F[k] = on && c < F[k] ? c : F[k];
+      L[k] = on && c > L[k] ? c : L[k];
+    }
+  }
+  for (int k = 0; k < samplings; ++k) {
+    first[k] = L[k] < 0 ? -1 : F[k];
+    last[k] = L[k];
+  }
+  return hole;
+}
+// A row's N extents copied: the usual counts with a constant size (a call to memcpy for 16 bytes
+// costs more than the rest of a memo hit).
+inline void copy_extents(int* to, const int* from, int n) {
+  if (n == 4) {
+    std::memcpy(to, from, 4 * sizeof(int));
+  } else if (n == 8) {
+    std::memcpy(to, from, 8 * sizeof(int));
+  } else {
+    std::copy_n(from, n, to);
+  }
+}
+}  // namespace
+
+void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk) {
+  // Per sampling: the held core range widened by the band pixels fired by then (without branches on
+  // the random first firings: no range is first = INT_MAX, last = -1 here). A band pixel inside the
+  // held range that has not fired (its draw fell in a 2^-56 tail of a certain outcome) punches a
+  // hole that may be at the range's edge: such a row takes its extents from its bits.
+  // The extents are a function of the band's first firings, and the rows of a shape mostly repeat a
+  // few patterns of them (two rows in three on the plane map repeat the previous row's): a small
+  // memo per shape, keyed by the packed pattern, answers those.
+  const int N = config_.multisampling.samplings;
+  const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
+  int* first = extent_first_.data() + at;
+  int* last = extent_last_.data() + at;
+  const std::size_t n = s.band.size();
+  std::uint64_t key = RowShape::kNoPattern;
+  std::size_t slot = 0;
+  if (n < 8) {
+    key = static_cast<std::uint64_t>(n) << 56;
+    for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
+    slot = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % RowShape::kMemo;
+    if (s.memo_key[slot] == key) {
+      const std::size_t m = slot * static_cast<std::size_t>(N);
+      copy_extents(first, s.memo_first.data() + m, N);
+      copy_extents(last, s.memo_last.data() + m, N);
+      return;
+    }
+  }
+  const int* hf = s.held_first.data();
+  const int* hl = s.held_last.data();
+  const int* cf = s.band_column_from.data();
+  bool hole;
+  switch (N) {  // the usual counts of samplings unrolled (the preset's is 4)
+    case 2: hole = widen_by_band<2>(N, first, last, hf, hl, cf, fk, n); break;
+    case 4: hole = widen_by_band<4>(N, first, last, hf, hl, cf, fk, n); break;
+    case 8: hole = widen_by_band<8>(N, first, last, hf, hl, cf, fk, n); break;
+    default: hole = widen_by_band<0>(N, first, last, hf, hl, cf, fk, n);
+  }
+  if (hole) extents_from_bits(r, s, fk);
+  if (key == RowShape::kNoPattern) return;
+  s.memo_key[slot] = key;
+  const std::size_t m = slot * static_cast<std::size_t>(N);
+  copy_extents(s.memo_first.data() + m, first, N);
+  copy_extents(s.memo_last.data() + m, last, N);
+}
+
+void PixelArrayKernel::extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk) {
+  const int N = config_.multisampling.samplings;
+  const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
+  ActivationRow bits(columns());
+  for (int k = 1; k <= N; ++k) {
+    set_row_bits(bits, s, fk, k);
+    extent_first_[at + static_cast<std::size_t>(k - 1)] = bits.first();
+    extent_last_[at + static_cast<std::size_t>(k - 1)] = bits.last();
+  }
+}
+
+}  // namespace rangesim::systemc
