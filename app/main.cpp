@@ -12,6 +12,7 @@
 #include "app/cmd_simulate.h"
 #include "app/command_data.h"
 #include "app/commands.h"
+#include "app/large_array_pages.h"
 #include "app/run_control.h"
 #include "core/user_error.h"
 #include "systemc/common/montecarlo.h"
@@ -63,6 +64,7 @@ RunBudget budget_of(const ParsedCommand& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  heap_on_huge_pages();
   install_stop_handlers();
   set_command_line(argc, argv);
   const CommandLine cl = parse_command_line(argc, argv, std::cout, std::cerr);
