@@ -15,8 +15,8 @@ struct Weights {
   double origin_s = 0;
 };
 
-Weights weights(const TdcBins& bins, int codes, const Window& w, bool subtract) {
-  Weights k;
+// Into k, whose vectors keep their capacity (estimate_time_s runs per pixel: no allocation).
+void fill_weights(const TdcBins& bins, int codes, const Window& w, bool subtract, Weights& k) {
   k.alpha.assign(static_cast<size_t>(codes), 0.0);
   k.gamma.assign(static_cast<size_t>(codes), 0.0);
   k.origin_s = bins.centre_s((w.lo + w.hi) / 2);
@@ -34,6 +34,11 @@ Weights weights(const TdcBins& bins, int codes, const Window& w, bool subtract) 
       k.gamma[static_cast<size_t>(i)] = -static_cast<double>(in) / out;
     }
   }
+}
+
+Weights weights(const TdcBins& bins, int codes, const Window& w, bool subtract) {
+  Weights k;
+  fill_weights(bins, codes, w, subtract, k);
   return k;
 }
 
@@ -48,14 +53,19 @@ Window peak_window(int peak_bin, int pw, int codes) {
   return w;
 }
 
-std::vector<double> coates_rates(const HistogramCounts& h) {
-  std::vector<double> r(h.events.size(), 0.0);
+void coates_rates(const HistogramCounts& h, std::vector<double>& r) {
+  r.assign(h.events.size(), 0.0);
   for (size_t i = 0; i < r.size(); ++i) {
     const double a = h.armed[i];
     if (a <= 0) continue;  // never armed: no information
     const double q = std::min(h.share * h.events[i] / a, 1.0 - 0.5 / a);
     r[i] = -std::log1p(-q) / h.share;
   }
+}
+
+std::vector<double> coates_rates(const HistogramCounts& h) {
+  std::vector<double> r;
+  coates_rates(h, r);
   return r;
 }
 
@@ -64,14 +74,20 @@ int peak_bin(const HistogramCounts& h, const EstimatorConfig& cfg) {
   return static_cast<int>(std::max_element(y.begin(), y.end()) - y.begin());
 }
 
-std::optional<double> estimate_time_s(const HistogramCounts& h, const TdcBins& bins, const EstimatorConfig& cfg) {
+std::optional<double> estimate_time_s(const HistogramCounts& h, const TdcBins& bins, const EstimatorConfig& cfg,
+                                      int* peak_bin_out) {
   const int codes = static_cast<int>(h.events.size());
   double total = 0;
   for (double e : h.events) total += e;
   if (total <= 0) return std::nullopt;
-  const std::vector<double> y = cfg.coates ? coates_rates(h) : h.events;
+  // Scratch kept per thread: the clock-level models call this for every pixel of a frame.
+  thread_local std::vector<double> rates;
+  thread_local Weights k;
+  if (cfg.coates) coates_rates(h, rates);
+  const std::vector<double>& y = cfg.coates ? rates : h.events;
   const int peak = static_cast<int>(std::max_element(y.begin(), y.end()) - y.begin());
-  const Weights k = weights(bins, codes, peak_window(peak, cfg.peak_window_bins, codes), cfg.subtract_background);
+  if (peak_bin_out) *peak_bin_out = peak;
+  fill_weights(bins, codes, peak_window(peak, cfg.peak_window_bins, codes), cfg.subtract_background, k);
   double num = 0, den = 0, scale = 0;
   for (int i = 0; i < codes; ++i) {
     num += k.alpha[static_cast<size_t>(i)] * y[static_cast<size_t>(i)];

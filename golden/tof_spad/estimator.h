@@ -37,6 +37,7 @@ struct HistogramCounts {
 // carry-over A_i = N - sum_{j<i} H_j, the textbook form). A bin that stopped every armed cycle is
 // capped at q = 1 - 1 / (2 A_i). Returns our pixel's estimated mean detections per cycle.
 std::vector<double> coates_rates(const HistogramCounts& h);
+void coates_rates(const HistogramCounts& h, std::vector<double>& out);  // the same into out (its capacity kept)
 
 // The code the estimator centres its window on: the maximum of the Coates rates (or of the raw
 // events without the correction).
@@ -44,7 +45,10 @@ int peak_bin(const HistogramCounts& h, const EstimatorConfig& cfg);
 
 // The estimator on one histogram: the round-trip time in s, or nothing when nothing is
 // detected (no events, or no counts above the background in the window).
-std::optional<double> estimate_time_s(const HistogramCounts& h, const TdcBins& bins, const EstimatorConfig& cfg);
+// peak_bin_out (if given) receives the code the window was centred on (peak_bin), for
+// peak_significance: the same code without the Coates rates made twice per pixel.
+std::optional<double> estimate_time_s(const HistogramCounts& h, const TdcBins& bins, const EstimatorConfig& cfg,
+                                      int* peak_bin_out = nullptr);
 
 // Closed-form moments of estimate_time_s for a histogram of `cycles` cycles with the expected
 // per-cycle law `h`, the peak taken at `peak_bin` (the detection criterion makes sure the peak

@@ -8,12 +8,19 @@
 namespace rangesim::golden::spad {
 
 PeakSignificance peak_significance(const HistogramCounts& h, const EstimatorConfig& cfg) {
+  double total = 0;
+  for (double e : h.events) total += e;
+  if (h.events.empty() || total <= 0) return {};
+  return peak_significance(h, cfg, peak_bin(h, cfg));
+}
+
+PeakSignificance peak_significance(const HistogramCounts& h, const EstimatorConfig& cfg, int peak) {
   PeakSignificance s;
   const int codes = static_cast<int>(h.events.size());
   double total = 0;
   for (double e : h.events) total += e;
   if (codes == 0 || total <= 0) return s;
-  s.peak_bin = peak_bin(h, cfg);
+  s.peak_bin = peak;
   s.window = peak_window(s.peak_bin, cfg.peak_window_bins, codes);
   double out_events = 0, out_armed = 0, in_armed = 0;
   for (int i = 0; i < codes; ++i) {

@@ -20,5 +20,7 @@ struct PeakSignificance {
 
 // One histogram. A histogram without events has significance 0.
 PeakSignificance peak_significance(const HistogramCounts& h, const EstimatorConfig& cfg);
+// The same with the peak code already known (peak_bin(h, cfg), e.g. from estimate_time_s).
+PeakSignificance peak_significance(const HistogramCounts& h, const EstimatorConfig& cfg, int peak);
 
 }  // namespace rangesim::golden::spad

@@ -187,9 +187,10 @@ PixelResult TofSpadKernel::make_pixel(int row, int column, const GroupHistogram&
   p.events = g.events[static_cast<size_t>(index)];
   p.armed = g.armed;
   const golden::spad::HistogramCounts h = counts(p.events, p.armed);
-  p.time_s = golden::spad::estimate_time_s(h, bins_, est_);
+  int peak = 0;
+  p.time_s = golden::spad::estimate_time_s(h, bins_, est_, &peak);
   p.range_m = p.time_s ? 0.5 * phys::kSpeedOfLight_m_per_s * *p.time_s : NAN;
-  if (p.time_s) p.significance = golden::spad::peak_significance(h, est_).sigma;
+  if (p.time_s) p.significance = golden::spad::peak_significance(h, est_, peak).sigma;
   return p;
 }
 
