@@ -3,7 +3,8 @@
 
 namespace rangesim::app {
 
-// Called first thing in main: the heap the process grows from here on is advised onto 2 MB pages.
+// Called by main before `simulate`: the heap the process grows from here on is advised onto 2 MB
+// pages.
 void heap_on_huge_pages();
 
 }  // namespace rangesim::app

@@ -37,7 +37,9 @@ int run(const ParsedCommand& c) {
                                                                                : run_evaluate(c.evaluate);
     case CommandKind::FrameRate: return run_frame_rate(c.frame_rate);
     case CommandKind::Table: return run_table(c.table);
-    case CommandKind::Simulate: return run_simulate(c.simulate);
+    case CommandKind::Simulate:
+      heap_on_huge_pages();  // a scene run's results are tens of MB of fresh heap
+      return run_simulate(c.simulate);
     case CommandKind::Bench: return run_bench(c.bench);
     case CommandKind::Cosim: return run_cosim(c.cosim);
     case CommandKind::Sweep: return run_sweep(c.sweep);
@@ -64,7 +66,6 @@ RunBudget budget_of(const ParsedCommand& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  heap_on_huge_pages();
   install_stop_handlers();
   set_command_line(argc, argv);
   const CommandLine cl = parse_command_line(argc, argv, std::cout, std::cerr);
