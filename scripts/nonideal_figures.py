@@ -46,63 +46,63 @@ def simulate(rs, sensor, scene, extra, out):
     return range_map(out)
 
 
+def plot_blur_pair(ax, maps, xs, value_at, sensor, where, title, xlabel):
+    # Point spread off ("sharp") and on ("blur") along xs; returns the CSV lines (sensor, blur, row,
+    # column or beam position, range) with `where(x)` giving the middle two.
+    lines = []
+    for name, style in (("sharp", "o-"), ("blur", "s--")):
+        vals = [value_at(maps[name], x) for x in xs]
+        ax.plot(xs, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
+        lines += [(sensor, name) + where(x) + (v,) for x, v in zip(xs, vals)]
+    ax.set(title=title, xlabel=xlabel, ylabel="range (m)")
+    ax.legend()
+    return lines
+
+
+def save_profile(fig, out, stem, header, lines):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, stem + ".png"), dpi=110)
+    with open(os.path.join(out, stem + ".csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(lines)
+
+
+def blur_pair(rs, sensor, scene, work, prefix, extra=()):
+    return {name: simulate(rs, sensor, scene, blur + list(extra), os.path.join(work, prefix + name))
+            for name, blur in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+
+
 def step_profiles(rs, work, out):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4))
-    lines = []
     # tof-lockin: the middle row across the column step (near 2 m | far 9 m at column 134.4).
-    lk = {name: simulate(rs, "tof-lockin", "tof-lockin-step.toml", extra, os.path.join(work, "lockin_" + name))
-          for name, extra in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+    lk = blur_pair(rs, "tof-lockin", "tof-lockin-step.toml", work, "lockin_")
     row = len(lk["sharp"]) // 2
-    cols = list(range(124, 146))
-    for name, style in (("sharp", "o-"), ("blur", "s--")):
-        vals = [lk[name][row][c] for c in cols]
-        axes[0].plot(cols, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
-        lines += [("tof-lockin", name, row, c, v) for c, v in zip(cols, vals)]
-    axes[0].set(title="tof-lockin, step 2 m | 9 m, row %d" % row, xlabel="column", ylabel="range (m)")
-    axes[0].legend()
+    lines = plot_blur_pair(axes[0], lk, list(range(124, 146)), lambda m, c: m[row][c], "tof-lockin",
+                           lambda c: (row, c), "tof-lockin, step 2 m | 9 m, row %d" % row, "column")
     # ls-demodulation: one beam position down the rows across the row step (0.9 m | 1.2 m).
-    dm = {name: simulate(rs, "ls-demodulation", "step.toml", extra, os.path.join(work, "demod_" + name))
-          for name, extra in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+    dm = blur_pair(rs, "ls-demodulation", "step.toml", work, "demod_")
     nrows = len(dm["sharp"])
     b = max(range(len(dm["sharp"][0])), key=lambda j: sum(not math.isnan(dm["sharp"][r][j]) for r in range(nrows)))
-    rows = list(range(nrows // 2 - 10, nrows // 2 + 10))
-    for name, style in (("sharp", "o-"), ("blur", "s--")):
-        vals = [dm[name][r][b] for r in rows]
-        axes[1].plot(rows, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
-        lines += [("ls-demodulation", name, r, b, v) for r, v in zip(rows, vals)]
-    axes[1].set(title="ls-demodulation, step 0.9 m | 1.2 m, beam position %d" % b, xlabel="row", ylabel="range (m)")
-    axes[1].legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "step_profile_blur.png"), dpi=110)
-    with open(os.path.join(out, "step_profile_blur.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["sensor", "blur", "row", "column_or_beam_position", "range_m"])
-        w.writerows(lines)
+    lines += plot_blur_pair(axes[1], dm, list(range(nrows // 2 - 10, nrows // 2 + 10)), lambda m, r: m[r][b],
+                            "ls-demodulation", lambda r: (r, b),
+                            "ls-demodulation, step 0.9 m | 1.2 m, beam position %d" % b, "row")
+    save_profile(fig, out, "step_profile_blur", ["sensor", "blur", "row", "column_or_beam_position", "range_m"],
+                 lines)
 
 
 def lsc_step_profile(rs, work, out):
     # ls-conventional: one beam position down the rows across the row step (0.9 m | 1.2 m); with the
     # point spread a row near the step sees the stripes of both depths (two spot profiles).
-    ls = {name: simulate(rs, "ls-conventional", "step.toml", extra + ["--csv"], os.path.join(work, "lsc_" + name))
-          for name, extra in (("sharp", BLUR_OFF), ("blur", BLUR_ON))}
+    ls = blur_pair(rs, "ls-conventional", "step.toml", work, "lsc_", ["--csv"])
     nrows, npos = len(ls["sharp"]), len(ls["sharp"][0])
     # The middle beam position (a stripe near an array edge is spread against the edge's clamp).
     b = npos // 2
-    rows = list(range(nrows // 2 - 8, nrows // 2 + 9))
     fig, ax = plt.subplots(figsize=(6, 4))
-    lines = []
-    for name, style in (("sharp", "o-"), ("blur", "s--")):
-        vals = [ls[name][r][b] for r in rows]
-        ax.plot(rows, vals, style, label="blur.psf = none" if name == "sharp" else "gaussian, sigma 1 px")
-        lines += [("ls-conventional", name, r, b, v) for r, v in zip(rows, vals)]
-    ax.set(title="ls-conventional, step 0.9 m | 1.2 m, beam position %d" % b, xlabel="row", ylabel="range (m)")
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "lsc_step_profile_blur.png"), dpi=110)
-    with open(os.path.join(out, "lsc_step_profile_blur.csv"), "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["sensor", "blur", "row", "beam_position", "range_m"])
-        w.writerows(lines)
+    lines = plot_blur_pair(ax, ls, list(range(nrows // 2 - 8, nrows // 2 + 9)), lambda m, r: m[r][b],
+                           "ls-conventional", lambda r: (r, b),
+                           "ls-conventional, step 0.9 m | 1.2 m, beam position %d" % b, "row")
+    save_profile(fig, out, "lsc_step_profile_blur", ["sensor", "blur", "row", "beam_position", "range_m"], lines)
 
 
 def frames_floor(rs, work, out, trials):
