@@ -1,15 +1,68 @@
 #include "systemc/common/keyed_uniforms.h"
 
+#include <cstring>
+
 #include "systemc/common/random_stream.h"
 
 namespace rangesim::systemc {
 
-// GCC's function clones are an x86 ELF feature (an ifunc resolver); other targets get the loop.
+// GCC's function clones and target attributes are an x86 ELF feature; other targets get the loop.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define RANGESIM_KEYED_UNIFORMS_X86 1
+#endif
+
+namespace {
+
+#ifdef RANGESIM_KEYED_UNIFORMS_X86
 __attribute__((target_clones("arch=x86-64-v4", "default")))
 #endif
-void keyed_uniforms(std::uint64_t frame_key, const std::uint64_t* rc, double* u, std::size_t n) {
+void plain_loop(std::uint64_t frame_key, const std::uint64_t* rc, double* u, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) u[i] = keyed_uniform(splitmix64(frame_key ^ rc[i]));
+}
+
+#ifdef RANGESIM_KEYED_UNIFORMS_X86
+// AVX2 without AVX-512: four 64-bit lanes, the multiplies made of 32-bit ones (by the compiler),
+// and the 53-bit integer converted to double exactly in two halves (AVX2 has no 64-bit integer to
+// double conversion): hi 2^32 + lo with each half put into a double's mantissa under a fixed
+// exponent (2^84 and 2^52) and those taken off again; every step is exact, so the bits are the
+// plain loop's.
+typedef std::uint64_t U64x4 __attribute__((vector_size(32)));
+typedef double F64x4 __attribute__((vector_size(32)));
+
+__attribute__((target("avx2"))) inline U64x4 splitmix64x4(U64x4 x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+__attribute__((target("avx2"))) void avx2_loop(std::uint64_t frame_key, const std::uint64_t* rc, double* u,
+                                               std::size_t n) {
+  constexpr double kTwo84Plus52 = 19342813118337666422669312.0;  // 2^84 + 2^52
+  std::size_t i = 0;
+  for (; i + 4 <= n; i += 4) {
+    U64x4 x;
+    std::memcpy(&x, rc + i, sizeof x);
+    x = splitmix64x4(splitmix64x4(x ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;  // keyed_uniform's
+    const U64x4 hi = (x >> 32) | 0x4530000000000000ULL, lo = (x & 0xffffffffULL) | 0x4330000000000000ULL;
+    F64x4 h, l;
+    std::memcpy(&h, &hi, sizeof h);
+    std::memcpy(&l, &lo, sizeof l);
+    const F64x4 v = ((h - kTwo84Plus52) + l + 0.5) * (1.0 / 9007199254740992.0);
+    std::memcpy(u + i, &v, sizeof v);
+  }
+  plain_loop(frame_key, rc + i, u + i, n - i);
+}
+#endif
+
+}  // namespace
+
+void keyed_uniforms(std::uint64_t frame_key, const std::uint64_t* rc, double* u, std::size_t n) {
+#ifdef RANGESIM_KEYED_UNIFORMS_X86
+  static const bool avx2 = __builtin_cpu_supports("avx2") && !__builtin_cpu_supports("avx512dq");
+  if (avx2) return avx2_loop(frame_key, rc, u, n);
+#endif
+  plain_loop(frame_key, rc, u, n);
 }
 
 }  // namespace rangesim::systemc

@@ -3,8 +3,14 @@
 // (certain_intervals.h) only the band between them is looked at one by one. What the latch then
 // holds (extents and bits): pixel_array_extents.cpp.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "golden/common/pixel.h"
 #include "golden/common/spot.h"
@@ -14,57 +20,211 @@
 
 namespace rangesim::systemc {
 
-void PixelArrayKernel::reset_row_exact(int r, const RowIllumination& in, RowState& row) {
-  // A row with the previous row's drive has its shape; anything else makes a new one.
-  const bool same = intervals_ && shapes_used_ > 0 && shapes_[shapes_used_ - 1].signal_V == in.signal_V &&
-                    shapes_[shapes_used_ - 1].background_V == in.background_V &&
-                    shapes_[shapes_used_ - 1].centre_px == in.centre_px;
-  row.shape = same ? shapes_used_ - 1 : make_shape(r, in, row);
-  const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
-  row.first = s.first, row.last = s.last, row.threshold_V = s.threshold_V;
-  pixels_simulated_ += std::max(0, s.last - s.first + 1);
-  row.band_at = band_k_.size();
-  row.uniforms = 0;
-  if (!intervals_) {  // every window pixel was looked at and decided in make_shape
-    for (const BandPixel& p : s.band) band_k_.push_back(static_cast<std::uint8_t>(p.certain));
-    return;
+void PixelArrayKernel::reset_exact() {
+  // Three passes: every row's shape (a run of rows with one drive shares it), then per run the rows'
+  // certain first firings and the keys of the uniforms their random ones need; the frame's uniforms
+  // in one vectorised loop; per run the rows' draws and extents.
+  const int N = config_.multisampling.samplings;
+  shapes_used_ = 0;
+  extent_first_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+  extent_last_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+  std::size_t band_total = 0, draws = 0;
+  for (int r = 0; r < rows(); ++r) {
+    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r)];
+    RowState& row = rows_[static_cast<std::size_t>(r)];
+    // A row with the previous row's drive has its shape; anything else makes a new one.
+    const bool same = intervals_ && shapes_used_ > 0 && shapes_[shapes_used_ - 1].signal_V == in.signal_V &&
+                      shapes_[shapes_used_ - 1].background_V == in.background_V &&
+                      shapes_[shapes_used_ - 1].centre_px == in.centre_px;
+    row.shape = same ? shapes_used_ - 1 : make_shape(first_row_ + r, in, row);
+    const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
+    row.first = s.first, row.last = s.last, row.threshold_V = s.threshold_V;
+    pixels_simulated_ += std::max(0, s.last - s.first + 1);
+    // Without certain intervals every window pixel was looked at and decided in make_shape.
+    if (intervals_) pixels_examined_ += static_cast<long long>(s.band.size());
+    row.band_at = band_total;
+    row.uniforms = intervals_ && !s.one_by_one ? static_cast<int>(s.drawn_column.size()) : 0;
+    band_total += s.band.size();
+    draws += static_cast<std::size_t>(row.uniforms);
   }
-  pixels_examined_ += static_cast<long long>(s.band.size());
-  for (const BandPixel& p : s.band) {
-    int k = p.certain;
-    if (k < 0 && s.by_uniform) {  // drawn in finish_row_exact, once every row's uniform is made
-      draw_rc_.push_back(row_column(static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(p.column)));
-      ++row.uniforms;
-      k = 0;
-    } else if (k < 0) {
-      k = draw(r, s, p, *shape_entry_);
+  band_k_.resize(band_total + 8);  // 8 to spare (start_run)
+  draw_rc_.resize(draws);
+  std::uint64_t* rc = draw_rc_.data();
+  for_each_run([&](int r0, int r1) { start_run(r0, r1, rc); });
+  uniforms_.resize(draws);
+  keyed_uniforms(frame_key_, draw_rc_.data(), uniforms_.data(), draws);
+  const double* u = uniforms_.data();
+  for_each_run([&](int r0, int r1) {
+    switch (N) {  // the usual counts unrolled (the preset's is 4)
+      case 2: finish_run<2>(r0, r1, u); break;
+      case 4: finish_run<4>(r0, r1, u); break;
+      case 8: finish_run<8>(r0, r1, u); break;
+      default: finish_run<0>(r0, r1, u);
     }
-    band_k_.push_back(static_cast<std::uint8_t>(k));
+  });
+}
+
+template <class F>
+void PixelArrayKernel::for_each_run(F f) {
+  for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
+    r1 = r0 + 1;
+    while (r1 < rows() && rows_[static_cast<std::size_t>(r1)].shape == rows_[static_cast<std::size_t>(r0)].shape) ++r1;
+    f(r0, r1);
   }
 }
 
-void PixelArrayKernel::finish_row_exact(int r, const double*& u) {
-  // The row's uniforms (keyed_uniforms, in the order reset_row_exact asked for them) inverted, as
-  // draw() would one by one; then its extents.
-  const RowState& row = rows_[static_cast<std::size_t>(r)];
-  RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
-  std::uint8_t* fk = band_k_.data() + row.band_at;
-  if (row.uniforms > 0) {
-    if (row.shape != finish_shape_) {  // rows of one shape share its threshold entry
-      finish_shape_ = row.shape;
-      finish_entry_ = &exact_->entry(s.threshold_V);
-    }
-    ThresholdEntry& e = *finish_entry_;
-    pixels_drawn_ += row.uniforms;
-    for (std::size_t j = 0; j < s.band.size(); ++j) {
-      const BandPixel& p = s.band[j];
-      if (p.certain >= 0) continue;
-      fk[j] = static_cast<std::uint8_t>(p.prepared ? exact_->invert_prepared(p.drive, e, s.cut.data() + p.cut_at, *u)
-                                                   : exact_->invert_first_firing(p.drive, e, *u));
-      ++u;
+void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t*& rc) {
+  // Rows r0..r1 - 1 (within the band) of one shape: its certain first firings, and the keys of the
+  // uniforms finish_run inverts (or, without inversion, the Gamma draws pixel by pixel).
+  const RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
+  const std::size_t n = s.band.size();
+  std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
+  for (int r = r0; r < r1; ++r, fk += n) {
+    // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
+    // pixels is one 8-byte move (a copy of a run-time size is a library call per row).
+    if (n <= 8)
+      std::memcpy(fk, s.base_k.data(), 8);
+    else
+      std::memcpy(fk, s.base_k.data(), n);
+    if (rows_[static_cast<std::size_t>(r)].uniforms > 0) {
+      const std::uint64_t row_key = static_cast<std::uint64_t>(first_row_ + r) << 32;
+      for (const std::uint32_t c : s.drawn_column) *rc++ = row_key | c;  // row_column(row, c)
+    } else if (intervals_ && s.one_by_one) {
+      ThresholdEntry& e = exact_->entry(s.threshold_V);
+      for (std::size_t j = 0; j < n; ++j)
+        if (s.band[j].certain < 0) fk[j] = static_cast<std::uint8_t>(draw(first_row_ + r, s, s.band[j], e));
     }
   }
-  fill_extents(r, s, fk);
+}
+
+namespace {
+// invert_prepared's comparisons without a branch on u, which is random (their mispredictions were
+// most of the draws' time): the first sampling whose upper cut exceeds u decides; there u below the
+// lower cut fires (returns k, 1-based), else u sits between the cuts and golden's f must decide
+// (sets `between`; ~2e-5 of the draws). No sampling decides: never fired (0). N = 0: n samplings at
+// run time (n <= 30 with SSE2, else 62).
+template <int N>
+inline int first_firing_by_cuts(const double* cut, double u, int n, bool& between) {
+  const int samplings = N > 0 ? N : n;
+#if defined(__SSE2__)
+  // One compare per sampling against its (lower, upper) pair: bit 2k is u < lower_k (fires), bit
+  // 2k + 1 is u < upper_k (decides).
+  const __m128d uu = _mm_set1_pd(u);
+  std::uint64_t bits = 0;
+  for (int k = 0; k < samplings; ++k)
+    bits |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_cmplt_pd(uu, _mm_loadu_pd(cut + 2 * k)))) << (2 * k);
+  const int j = __builtin_ctzll((bits & 0xaaaaaaaaaaaaaaaaULL) | (std::uint64_t{1} << (2 * samplings + 1)));
+  const std::uint64_t fires = (bits >> (j - 1)) & 1U;  // bit 2k of the deciding k = j / 2 (0 past the end)
+  between = ((bits >> j) & ~fires) & 1U;
+  return ((j >> 1) + 1) & -static_cast<int>(fires);
+#else
+  std::uint64_t open = 0, fire = 0;
+  for (int k = 0; k < samplings; ++k) {
+    open |= static_cast<std::uint64_t>(u < cut[2 * k + 1]) << k;
+    fire |= static_cast<std::uint64_t>(u < cut[2 * k]) << k;
+  }
+  const int k = __builtin_ctzll(open | (std::uint64_t{1} << samplings));  // bit `samplings` of both is 0
+  between = ((open & ~fire) >> k) & 1U;
+  return (k + 1) & -static_cast<int>((fire >> k) & 1U);
+#endif
+}
+}  // namespace
+
+template <int N>
+inline void PixelArrayKernel::invert_row(const RowShape& s, std::uint8_t* fk, std::uint64_t& key, const double* u) {
+  // Locals: the stores through fk (bytes) may alias anything the compiler would otherwise reload.
+  const int n = config_.multisampling.samplings;
+  const std::size_t stride = 2 * static_cast<std::size_t>(n), m = s.drawn_at.size();
+  const int* at = s.drawn_at.data();
+  const double *lo = s.drawn_lo.data(), *hi = s.drawn_hi.data();
+  const std::uint8_t *single = s.drawn_single.data(), *k_fire = s.drawn_fire.data(), *k_else = s.drawn_else.data();
+  std::uint64_t k_bits = key;
+  for (std::size_t t = 0; t < m; ++t) {
+    const double x = u[t];
+    int K;
+    bool between;
+    if (single[t]) {  // the same for every row of the shape: predicted
+      const int fire = -static_cast<int>(x < lo[t]);  // selected by a mask: a branch here is random
+      K = k_else[t] ^ ((k_fire[t] ^ k_else[t]) & fire);
+      between = (fire == 0) & (x < hi[t]);
+    } else {
+      between = true;
+      K = N == 0 && n > 30 ? 0 : first_firing_by_cuts<N>(s.cut.data() + t * stride, x, n, between);
+    }
+    if (__builtin_expect(between, 0))  // (and every draw with more samplings than a mask holds)
+      K = exact_->invert_prepared(s.band[static_cast<std::size_t>(at[t])].drive, *finish_entry_,
+                                  s.cut.data() + t * stride, x);
+    fk[at[t]] = static_cast<std::uint8_t>(K);
+    k_bits |= static_cast<std::uint64_t>(K) << (8 * (at[t] & 7));
+  }
+  key = k_bits;
+}
+
+template <int N>
+void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
+  // Rows r0..r1 - 1 of one shape: each row's uniforms (keyed_uniforms, in the order start_run asked
+  // for them) inverted as draw() would one by one, the memo key of its first firings, its extents.
+  RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
+  const std::size_t n = s.band.size();
+  std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
+  const int m = rows_[static_cast<std::size_t>(r0)].uniforms;
+  if (m > 0) {
+    finish_entry_ = &exact_->entry(s.threshold_V);  // for the rare draws between the cuts
+    pixels_drawn_ += static_cast<long long>(m) * (r1 - r0);
+  }
+  for (int r = r0; r < r1; ++r, fk += n) {
+    std::uint64_t key = s.base_key;
+    if (m > 0) {
+      invert_row<N>(s, fk, key, u);
+      u += m;
+    } else if (s.one_by_one && key != RowShape::kNoPattern) {  // drawn in start_run
+      for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
+    }
+    fill_extents(r, s, fk, key);
+  }
+}
+
+void PixelArrayKernel::plan_draws(RowShape& s) const {
+  // What every row of the shape repeats (reset_row_exact, finish_row_exact).
+  const std::size_t n = s.band.size();
+  s.base_k.assign(n + 8, 0);  // 8 to spare (start_run)
+  s.drawn_at.clear();
+  s.drawn_column.clear();
+  s.one_by_one = false;
+  for (std::size_t j = 0; j < n; ++j) {
+    const BandPixel& p = s.band[j];
+    s.base_k[j] = static_cast<std::uint8_t>(std::max(p.certain, 0));
+    if (p.certain >= 0) continue;
+    if (!s.by_uniform) {
+      s.one_by_one = true;
+    } else {
+      assert(p.prepared && p.cut_at == s.drawn_at.size() * 2 * static_cast<std::size_t>(config_.multisampling.samplings));
+      s.drawn_at.push_back(static_cast<int>(j));
+      s.drawn_column.push_back(static_cast<std::uint32_t>(p.column));
+    }
+  }
+  // The drawn pixels with one random sampling (cuts other than f = 0: 0, 0 and f = 1: 2, 2).
+  const int N = config_.multisampling.samplings;
+  const std::size_t m = s.drawn_at.size();
+  s.drawn_lo.assign(m, 0.0), s.drawn_hi.assign(m, 0.0);
+  s.drawn_single.assign(m, 0), s.drawn_fire.assign(m, 0), s.drawn_else.assign(m, 0);
+  for (std::size_t t = 0; t < m; ++t) {
+    const double* cut = s.cut.data() + t * 2 * static_cast<std::size_t>(N);
+    int k = 0;
+    while (k < N && cut[2 * k] == 0 && cut[2 * k + 1] == 0) ++k;  // f = 0
+    if (k == N) continue;
+    const bool rest_certain = k + 1 == N || (cut[2 * k + 2] == 2 && cut[2 * k + 3] == 2);  // f = 1 after
+    if (!rest_certain) continue;
+    s.drawn_single[t] = 1;
+    s.drawn_lo[t] = cut[2 * k], s.drawn_hi[t] = cut[2 * k + 1];
+    s.drawn_fire[t] = static_cast<std::uint8_t>(k + 1);
+    s.drawn_else[t] = static_cast<std::uint8_t>(k + 1 == N ? 0 : k + 2);
+  }
+  s.base_key = RowShape::kNoPattern;
+  if (n < 8) {
+    s.base_key = static_cast<std::uint64_t>(n) << 56;
+    for (std::size_t j = 0; j < n; ++j) s.base_key |= static_cast<std::uint64_t>(s.base_k[j]) << (8 * j);
+  }
 }
 
 int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row) {
@@ -86,7 +246,6 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
   s.memo_last.resize(RowShape::kMemo * static_cast<std::size_t>(N));
   if (s.last >= s.first) {
     ThresholdEntry& e = exact_->entry(s.threshold_V);
-    shape_entry_ = &e;
     if (!intervals_) {
       // Every window pixel one by one; the certain ones draw nothing. Only those that fire are kept.
       pixels_examined_ += s.last - s.first + 1;
@@ -124,6 +283,7 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
     }
   }
   hold_ranges(s);
+  plan_draws(s);
   return shapes_used_++;
 }
 

@@ -100,24 +100,22 @@ inline void copy_extents(int* to, const int* from, int n) {
 }
 }  // namespace
 
-void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk) {
+void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, std::uint64_t key) {
   // Per sampling: the held core range widened by the band pixels fired by then (without branches on
   // the random first firings: no range is first = INT_MAX, last = -1 here). A band pixel inside the
   // held range that has not fired (its draw fell in a 2^-56 tail of a certain outcome) punches a
   // hole that may be at the range's edge: such a row takes its extents from its bits.
   // The extents are a function of the band's first firings, and the rows of a shape mostly repeat a
   // few patterns of them (two rows in three on the plane map repeat the previous row's): a small
-  // memo per shape, keyed by the packed pattern, answers those.
+  // memo per shape answers those, keyed by the packed pattern (n << 56 | fk[j] << 8 j, n < 8 band
+  // pixels; kNoPattern: none), which finish_row_exact assembles as it draws.
   const int N = config_.multisampling.samplings;
   const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
   int* first = extent_first_.data() + at;
   int* last = extent_last_.data() + at;
   const std::size_t n = s.band.size();
-  std::uint64_t key = RowShape::kNoPattern;
   std::size_t slot = 0;
-  if (n < 8) {
-    key = static_cast<std::uint64_t>(n) << 56;
-    for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
+  if (key != RowShape::kNoPattern) {
     slot = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % RowShape::kMemo;
     if (s.memo_key[slot] == key) {
       const std::size_t m = slot * static_cast<std::size_t>(N);

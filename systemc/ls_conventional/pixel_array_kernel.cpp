@@ -149,21 +149,7 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
     return;
   }
   if (exact_) {
-    shapes_used_ = 0;
-    band_k_.clear();
-    extent_first_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
-    extent_last_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
-    // Three passes: every row's shape and certain first firings (asking for the uniforms its
-    // random ones need), the frame's uniforms in one vectorised loop, the rows' draws and extents.
-    draw_rc_.clear();
-    for (int r = 0; r < rows(); ++r)
-      reset_row_exact(first_row_ + r, stimulus_.rows[static_cast<std::size_t>(first_row_ + r)],
-                      rows_[static_cast<std::size_t>(r)]);
-    uniforms_.resize(draw_rc_.size());
-    keyed_uniforms(frame_key_, draw_rc_.data(), uniforms_.data(), draw_rc_.size());
-    const double* u = uniforms_.data();
-    finish_shape_ = -1;
-    for (int r = 0; r < rows(); ++r) finish_row_exact(r, u);
+    reset_exact();
     return;
   }
   for (int r = 0; r < rows(); ++r) {

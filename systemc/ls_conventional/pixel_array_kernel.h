@@ -185,6 +185,20 @@ class PixelArrayKernel {
     std::vector<int> band_column_from;
     std::vector<double> cut;  // the band pixels' prepared inversions (ExactActivation::prepare_inversion)
     bool by_uniform = false;  // its random band pixels are drawn by inversion of a keyed uniform
+    // What every row of the shape repeats (plan_draws): the band's first firings with 0 at the pixels
+    // drawn by a keyed uniform, their band positions and columns (ascending; their cuts follow one
+    // another in `cut`), and base_k as a memo key (kNoPattern: a band of 8 or more pixels). A shape
+    // with random band pixels and no inversion draws them one by one (one_by_one).
+    std::vector<std::uint8_t> base_k;  // (8 bytes to spare at the end)
+    std::vector<int> drawn_at;
+    std::vector<std::uint32_t> drawn_column;
+    // Per drawn pixel, when one sampling k alone is random (the usual case: the samplings before
+    // fire with f = 0, those after with f = 1): its cuts (fires below lo, not at or above hi) and its
+    // first firing either way (k, and k + 1 or never); drawn_single[t] = 0: several are random.
+    std::vector<double> drawn_lo, drawn_hi;
+    std::vector<std::uint8_t> drawn_single, drawn_fire, drawn_else;
+    std::uint64_t base_key = 0;
+    bool one_by_one = false;
     // fill_extents' memo: kMemo slots of extents (N per slot) by the band's packed first firings.
     static constexpr std::size_t kMemo = 16;
     static constexpr std::uint64_t kNoPattern = ~std::uint64_t{0};  // an empty slot (no key has 0xff on top)
@@ -195,11 +209,18 @@ class PixelArrayKernel {
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
   double compute_cut_swing_V(double threshold_V) const;
   void set_window(const RowIllumination& in, RowState& row);  // threshold and simulated window
-  // The exact path (pixel_array_exact.cpp): a row's reset for frame_ in two passes around the
-  // frame's batch of uniforms, and the latch of sampling k.
-  void reset_row_exact(int r, const RowIllumination& in, RowState& row);
-  void finish_row_exact(int r, const double*& u);  // r within the band; u: its first uniform
+  // The exact path (pixel_array_exact.cpp): the frame access's reset in passes over the rows and
+  // their runs of one shape, around the frame's batch of uniforms; and the latch of sampling k.
+  void reset_exact();
+  template <class F>
+  void for_each_run(F f);  // f(r0, r1) for each run of rows r0..r1 - 1 (within the band) of one shape
+  void start_run(int r0, int r1, std::uint64_t*& rc);  // rc: the run's first uniform key
+  template <int N>  // N samplings (0: any count)
+  void finish_run(int r0, int r1, const double*& u);  // u: the run's first uniform
+  template <int N>
+  void invert_row(const RowShape& s, std::uint8_t* fk, std::uint64_t& key, const double* u);
   int make_shape(int r, const RowIllumination& in, RowState& row);
+  void plan_draws(RowShape& s) const;
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
   BandPixel look_at(int i, const RowIllumination& in, ThresholdEntry& e) const;
   int draw(int r, const RowShape& s, const BandPixel& p, ThresholdEntry& e);
@@ -207,7 +228,7 @@ class PixelArrayKernel {
   // What the exact path's latch holds (pixel_array_extents.cpp): a row's extents at every sampling
   // from the first firings drawn at the reset, and its bits at the current sampling (row()).
   void hold_ranges(RowShape& shape) const;  // held_first / held_last and band_column_from
-  void fill_extents(int r, RowShape& s, const std::uint8_t* fk);
+  void fill_extents(int r, RowShape& s, const std::uint8_t* fk, std::uint64_t key);  // key: the memo's
   void extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk);  // a row with a hole
   void build_row(int r) const;
   void set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const;
@@ -259,12 +280,10 @@ class PixelArrayKernel {
   bool inversion_ = false;                         // uncertain pixels drawn by inversion where it applies
   std::vector<RowShape> shapes_;                   // exact path: this frame access's row shapes ..
   int shapes_used_ = 0;                            // .. the first shapes_used_ of them (kept for reuse)
-  ThresholdEntry* shape_entry_ = nullptr;          // the last shape's threshold entry
   std::vector<std::uint8_t> band_k_;               // exact path: first firing of every row's band pixels
   std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each uniform the frame needs
   std::vector<double> uniforms_;                   // .. and the uniforms (keyed_uniforms)
-  int finish_shape_ = -1;                          // finish_row_exact: the shape of finish_entry_
-  ThresholdEntry* finish_entry_ = nullptr;
+  ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 

@@ -132,3 +132,33 @@ TEST(CertainIntervals, RandomRowsBitIdenticalUnderEveryNoiseConfiguration) {
     }
   }
 }
+
+TEST(CertainIntervals, RandomRowsBitIdenticalAtEverySamplingCount) {
+  // The inversions with intervals on run per sampling count (2, 4, 8 unrolled, the rest general;
+  // pixel_array_exact.cpp) against prepared cuts; without intervals every window pixel is drawn one
+  // by one against golden's f (4 samplings: the test above). 25 frames of 12 rows, random drives.
+  for (const int samplings : {1, 2, 3, 8, 13}) {
+    std::vector<rs::FrameResult> runs[2];
+    long long drawn[2] = {0, 0};
+    for (int on = 0; on < 2; ++on) {
+      LsConventionalConfig c = rs::test::small_config(12, 64, samplings);
+      c.simulation.certain_intervals = on == 1;
+      rs::SensorKernelOptions o;
+      o.pixel.seed = 29;
+      // One background: one threshold, so its table is made and the draws meet the prepared cuts
+      // (with a threshold per row they would all go to golden's f).
+      rs::test::RandomStimulus stim{7, 0.005, 1.5, 0.01, 0.01, 64};
+      rs::LsConventionalSensorKernel k(c, o, stim);
+      k.reset();
+      runs[on] = k.run_frames(25);
+      drawn[on] = k.pixels().pixels_drawn();
+    }
+    ASSERT_EQ(runs[0].size(), runs[1].size());
+    EXPECT_EQ(drawn[0], drawn[1]) << "samplings " << samplings;
+    EXPECT_GT(drawn[1], 0) << "samplings " << samplings;
+    for (std::size_t f = 0; f < runs[0].size(); ++f) {
+      ASSERT_EQ(runs[0][f], runs[1][f]) << "frame " << f << " samplings " << samplings;
+      ASSERT_EQ(runs[0][f].extents, runs[1][f].extents) << "frame " << f << " samplings " << samplings;
+    }
+  }
+}
