@@ -21,36 +21,43 @@
 namespace rangesim::systemc {
 
 void PixelArrayKernel::reset_exact() {
-  // Three passes: every row's shape (a run of rows with one drive shares it), then per run the rows'
-  // certain first firings and the keys of the uniforms their random ones need; the frame's uniforms
-  // in one vectorised loop; per run the rows' draws and extents.
+  // Two passes around the frame's uniforms (made in one vectorised loop): per run of rows with one
+  // drive (every row of a plane), its shape, the rows' certain first firings and the keys of the
+  // uniforms their random ones need; then per run the rows' draws and extents.
   const int N = config_.multisampling.samplings;
   shapes_used_ = 0;
   extent_first_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   extent_last_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   std::size_t band_total = 0, draws = 0;
-  for (int r = 0; r < rows(); ++r) {
-    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r)];
-    RowState& row = rows_[static_cast<std::size_t>(r)];
-    // A row with the previous row's drive has its shape; anything else makes a new one.
-    const bool same = intervals_ && shapes_used_ > 0 && shapes_[shapes_used_ - 1].signal_V == in.signal_V &&
-                      shapes_[shapes_used_ - 1].background_V == in.background_V &&
-                      shapes_[shapes_used_ - 1].centre_px == in.centre_px;
-    row.shape = same ? shapes_used_ - 1 : make_shape(first_row_ + r, in, row);
-    const RowShape& s = shapes_[static_cast<std::size_t>(row.shape)];
-    row.first = s.first, row.last = s.last, row.threshold_V = s.threshold_V;
-    pixels_simulated_ += std::max(0, s.last - s.first + 1);
-    // Without certain intervals every window pixel was looked at and decided in make_shape.
-    if (intervals_) pixels_examined_ += static_cast<long long>(s.band.size());
-    row.band_at = band_total;
-    row.uniforms = intervals_ && !s.one_by_one ? static_cast<int>(s.drawn_column.size()) : 0;
-    band_total += s.band.size();
-    draws += static_cast<std::size_t>(row.uniforms);
+  for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
+    // The run: the rows with r0's drive. Without certain intervals every row makes its own shape
+    // from every window pixel, and decides them there.
+    const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r0)];
+    r1 = r0 + 1;
+    if (intervals_)
+      for (const RowIllumination* x = &in + 1; r1 < rows() && x->signal_V == in.signal_V &&
+                                               x->background_V == in.background_V && x->centre_px == in.centre_px;
+           ++x)
+        ++r1;
+    const int shape = make_shape(first_row_ + r0, in, rows_[static_cast<std::size_t>(r0)]);
+    const RowShape& s = shapes_[static_cast<std::size_t>(shape)];
+    const std::size_t count = static_cast<std::size_t>(r1 - r0), n = s.band.size();
+    const int m = intervals_ && !s.one_by_one ? static_cast<int>(s.drawn_column.size()) : 0;
+    pixels_simulated_ += static_cast<long long>(count) * std::max(0, s.last - s.first + 1);
+    if (intervals_) pixels_examined_ += static_cast<long long>(count * n);
+    for (int r = r0; r < r1; ++r) {
+      RowState& row = rows_[static_cast<std::size_t>(r)];
+      row.shape = shape;
+      row.first = s.first, row.last = s.last, row.threshold_V = s.threshold_V;
+      row.band_at = band_total + static_cast<std::size_t>(r - r0) * n;
+      row.uniforms = m;
+    }
+    band_k_.resize(band_total + count * n + 8);  // 8 to spare (start_run)
+    draw_rc_.resize(draws + count * static_cast<std::size_t>(m));
+    start_run(r0, r1, draw_rc_.data() + draws);
+    band_total += count * n;
+    draws += count * static_cast<std::size_t>(m);
   }
-  band_k_.resize(band_total + 8);  // 8 to spare (start_run)
-  draw_rc_.resize(draws);
-  std::uint64_t* rc = draw_rc_.data();
-  for_each_run([&](int r0, int r1) { start_run(r0, r1, rc); });
   uniforms_.resize(draws);
   keyed_uniforms(frame_key_, draw_rc_.data(), uniforms_.data(), draws);
   const double* u = uniforms_.data();
@@ -73,7 +80,7 @@ void PixelArrayKernel::for_each_run(F f) {
   }
 }
 
-void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t*& rc) {
+void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t* rc) {
   // Rows r0..r1 - 1 (within the band) of one shape: its certain first firings, and the keys of the
   // uniforms finish_run inverts (or, without inversion, the Gamma draws pixel by pixel).
   const RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
@@ -179,6 +186,15 @@ void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
       u += m;
     } else if (s.one_by_one && key != RowShape::kNoPattern) {  // drawn in start_run
       for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
+    }
+    if (N > 0 && key != RowShape::kNoPattern) {  // fill_extents' memo, here where N is a constant
+      const std::size_t slot = RowShape::memo_slot(key);
+      if (s.memo_key[slot] == key) {
+        const std::size_t at = static_cast<std::size_t>(r) * N, from = slot * N;
+        std::memcpy(extent_first_.data() + at, s.memo_first.data() + from, N * sizeof(int));
+        std::memcpy(extent_last_.data() + at, s.memo_last.data() + from, N * sizeof(int));
+        continue;
+      }
     }
     fill_extents(r, s, fk, key);
   }

@@ -116,7 +116,7 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
   const std::size_t n = s.band.size();
   std::size_t slot = 0;
   if (key != RowShape::kNoPattern) {
-    slot = static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % RowShape::kMemo;
+    slot = RowShape::memo_slot(key);
     if (s.memo_key[slot] == key) {
       const std::size_t m = slot * static_cast<std::size_t>(N);
       copy_extents(first, s.memo_first.data() + m, N);

@@ -114,6 +114,15 @@ class PixelArrayKernel {
                           static_cast<std::size_t>(sampling_ - 1);
     return {extent_first_[i], extent_last_[i]};
   }
+  // The extents of every row at the current sampling, row r's at first[r * stride] and
+  // last[r * stride], where the exact path has them (false: ask extent(r)).
+  bool extents_at_sampling(const int*& first, const int*& last, std::size_t& stride) const {
+    if (!lazy_bits_ || sampling_ == 0) return false;
+    stride = static_cast<std::size_t>(config_.multisampling.samplings);
+    first = extent_first_.data() + (sampling_ - 1);
+    last = extent_last_.data() + (sampling_ - 1);
+    return true;
+  }
   int rows() const { return static_cast<int>(rows_.size()); }
   int first_row() const { return first_row_; }
   int columns() const { return config_.pixel.columns; }
@@ -204,17 +213,20 @@ class PixelArrayKernel {
     static constexpr std::uint64_t kNoPattern = ~std::uint64_t{0};  // an empty slot (no key has 0xff on top)
     std::array<std::uint64_t, kMemo> memo_key{};
     std::vector<int> memo_first, memo_last;
+    static std::size_t memo_slot(std::uint64_t key) {
+      return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % kMemo;
+    }
   };
 
   double cut_swing_V(double threshold_V);  // smallest mean swing at t_N worth simulating (memoised)
   double compute_cut_swing_V(double threshold_V) const;
   void set_window(const RowIllumination& in, RowState& row);  // threshold and simulated window
-  // The exact path (pixel_array_exact.cpp): the frame access's reset in passes over the rows and
-  // their runs of one shape, around the frame's batch of uniforms; and the latch of sampling k.
+  // The exact path (pixel_array_exact.cpp): the frame access's reset in passes over the runs of rows
+  // of one shape, around the frame's batch of uniforms; and the latch of sampling k.
   void reset_exact();
   template <class F>
   void for_each_run(F f);  // f(r0, r1) for each run of rows r0..r1 - 1 (within the band) of one shape
-  void start_run(int r0, int r1, std::uint64_t*& rc);  // rc: the run's first uniform key
+  void start_run(int r0, int r1, std::uint64_t* rc);  // rc: the run's first uniform key
   template <int N>  // N samplings (0: any count)
   void finish_run(int r0, int r1, const double*& u);  // u: the run's first uniform
   template <int N>

@@ -58,16 +58,25 @@ void LsConventionalSensorKernel::account(const MultisamplingSequencerPins& p, lo
 void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& p) {
   FrameResult fr;
   fr.frame = p.frame;
-  // Sized first and written in place (a push_back of a struct built on the stack costs a failed
-  // store-to-load forward per row), with room for the whole array's rows: a row band's results are
-  // joined to the others' (run_sensor_kernel) without a new allocation.
+  // The rows are gathered into scratch kept by the kernel and copied in one piece (a push_back of a
+  // struct built on the stack costs a failed store-to-load forward per row; a resize first writes
+  // every element twice), with room for the whole array's rows: a row band's results are joined to
+  // the others' (run_sensor_kernel) without a new allocation.
   const std::size_t rows = centre_.size();
+  pins_scratch_.resize(rows);
+  extents_scratch_.resize(rows);
+  for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
+  const int *first = nullptr, *last = nullptr;
+  std::size_t stride = 0;
+  if (pixels_.extents_at_sampling(first, last, stride)) {
+    for (std::size_t r = 0; r < rows; ++r) extents_scratch_[r] = ActivationExtent{first[r * stride], last[r * stride]};
+  } else {
+    for (std::size_t r = 0; r < rows; ++r) extents_scratch_[r] = pixels_.extent(static_cast<int>(r));
+  }
   fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
   fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
-  fr.rows.resize(rows);
-  fr.extents.resize(rows);
-  for (std::size_t r = 0; r < rows; ++r) fr.rows[r] = centre_[r].pins();
-  for (std::size_t r = 0; r < rows; ++r) fr.extents[r] = pixels_.extent(static_cast<int>(r));
+  fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
+  fr.extents.assign(extents_scratch_.begin(), extents_scratch_.end());
   fr.end_cycle = sequencer_.cycle() + 1;
   fr.phase_cycles = phase_cycles_;
   for (long long c : phase_cycles_) fr.cycles += c;
@@ -115,7 +124,15 @@ void LsConventionalSensorKernel::step() {
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
     const std::size_t rows = search_.size();
-    for (std::size_t r = 0; r < rows; ++r) centre_[r].accumulate(search_[r].evaluate(pixels_.extent(static_cast<int>(r))));
+    const int *first = nullptr, *last = nullptr;
+    std::size_t stride = 0;
+    if (pixels_.extents_at_sampling(first, last, stride)) {  // the exact path's extents, read in place
+      for (std::size_t r = 0; r < rows; ++r)
+        centre_[r].accumulate(search_[r].evaluate(ActivationExtent{first[r * stride], last[r * stride]}));
+    } else {
+      for (std::size_t r = 0; r < rows; ++r)
+        centre_[r].accumulate(search_[r].evaluate(pixels_.extent(static_cast<int>(r))));
+    }
   }
   sequencer_.advance_to(next);
   settle();

@@ -96,6 +96,8 @@ class LsConventionalSensorKernel {
   std::vector<AddressSearchKernel> search_;               // per row
   std::vector<CentreProcessorKernel> centre_;             // per row
   std::vector<AddressSearchPins> search_pins_;            // scratch: pins of the ending cycle
+  std::vector<CentreProcessorPins> pins_scratch_;         // scratch: finish_frame's rows ..
+  std::vector<ActivationExtent> extents_scratch_;         // .. and extents
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;
   std::vector<std::string> errors_;
