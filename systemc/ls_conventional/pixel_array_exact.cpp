@@ -82,7 +82,8 @@ void PixelArrayKernel::for_each_run(F f) {
 
 void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t* rc) {
   // Rows r0..r1 - 1 (within the band) of one shape: its certain first firings, and the keys of the
-  // uniforms finish_run inverts (or, without inversion, the Gamma draws pixel by pixel).
+  // uniforms finish_run inverts, drawn pixel by drawn pixel and row by row within (or, without
+  // inversion, the Gamma draws pixel by pixel).
   const RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
   const std::size_t n = s.band.size();
   std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
@@ -94,8 +95,10 @@ void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t* rc) {
     else
       std::memcpy(fk, s.base_k.data(), n);
     if (rows_[static_cast<std::size_t>(r)].uniforms > 0) {
+      // Pixel by pixel, each pixel's rows in a row (finish_run compares them with one pixel's cuts).
       const std::uint64_t row_key = static_cast<std::uint64_t>(first_row_ + r) << 32;
-      for (const std::uint32_t c : s.drawn_column) *rc++ = row_key | c;  // row_column(row, c)
+      const std::size_t R = static_cast<std::size_t>(r1 - r0), i = static_cast<std::size_t>(r - r0);
+      for (std::size_t t = 0; t < s.drawn_column.size(); ++t) rc[t * R + i] = row_key | s.drawn_column[t];
     } else if (intervals_ && s.one_by_one) {
       ThresholdEntry& e = exact_->entry(s.threshold_V);
       for (std::size_t j = 0; j < n; ++j)
@@ -138,55 +141,87 @@ inline int first_firing_by_cuts(const double* cut, double u, int n, bool& betwee
 }  // namespace
 
 template <int N>
-inline void PixelArrayKernel::invert_row(const RowShape& s, std::uint8_t* fk, std::uint64_t& key, const double* u) {
-  // Locals: the stores through fk (bytes) may alias anything the compiler would otherwise reload.
+void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* K) {
+  // K[t R + i]: the first firing of drawn pixel t on the run's row i, from u[t R + i]. A pixel with
+  // one random sampling is a compare a row, over the rows in one vector loop (K selected by the
+  // compare's mask: a branch on u mispredicts every other draw); u between its
+  // cuts (~2e-5 of the draws) is decided afterwards by golden's f. A pixel with several is one
+  // vector compare a sampling (first_firing_by_cuts).
   const int n = config_.multisampling.samplings;
   const std::size_t stride = 2 * static_cast<std::size_t>(n), m = s.drawn_at.size();
-  const int* at = s.drawn_at.data();
-  const double *lo = s.drawn_lo.data(), *hi = s.drawn_hi.data();
-  const std::uint8_t *single = s.drawn_single.data(), *k_fire = s.drawn_fire.data(), *k_else = s.drawn_else.data();
-  std::uint64_t k_bits = key;
   for (std::size_t t = 0; t < m; ++t) {
-    const double x = u[t];
-    int K;
-    bool between;
-    if (single[t]) {  // the same for every row of the shape: predicted
-      const int fire = -static_cast<int>(x < lo[t]);  // selected by a mask: a branch here is random
-      K = k_else[t] ^ ((k_fire[t] ^ k_else[t]) & fire);
-      between = (fire == 0) & (x < hi[t]);
-    } else {
-      between = true;
-      K = N == 0 && n > 30 ? 0 : first_firing_by_cuts<N>(s.cut.data() + t * stride, x, n, between);
+    const double* __restrict ut = u + t * R;
+    std::uint64_t* __restrict kt = K + t * R;
+    const double* cut = s.cut.data() + t * stride;
+    const PixelDrive& drive = s.band[static_cast<std::size_t>(s.drawn_at[t])].drive;
+    if (s.drawn_single[t]) {
+      const double lo = s.drawn_lo[t], hi = s.drawn_hi[t];
+      const std::uint64_t kf = s.drawn_fire[t], ke = s.drawn_else[t];
+      std::uint64_t between = 0;
+      std::size_t i = 0;
+#if defined(__SSE2__)
+      // Two rows a step (the compiler does not vectorise the loop below by itself).
+      const __m128d v_lo = _mm_set1_pd(lo), v_hi = _mm_set1_pd(hi);
+      const __m128i v_ke = _mm_set1_epi64x(static_cast<long long>(ke));
+      const __m128i v_diff = _mm_set1_epi64x(static_cast<long long>(kf ^ ke));
+      __m128i v_between = _mm_setzero_si128();
+      for (; i + 2 <= R; i += 2) {
+        const __m128d x = _mm_loadu_pd(ut + i);
+        const __m128i fire = _mm_castpd_si128(_mm_cmplt_pd(x, v_lo));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(kt + i), _mm_xor_si128(v_ke, _mm_and_si128(v_diff, fire)));
+        v_between = _mm_or_si128(v_between, _mm_andnot_si128(fire, _mm_castpd_si128(_mm_cmplt_pd(x, v_hi))));
+      }
+      between = static_cast<std::uint64_t>(_mm_movemask_pd(_mm_castsi128_pd(v_between)));
+#endif
+      for (; i < R; ++i) {
+        const std::uint64_t fire = -static_cast<std::uint64_t>(ut[i] < lo);
+        kt[i] = ke ^ ((kf ^ ke) & fire);
+        between |= ~fire & -static_cast<std::uint64_t>(ut[i] < hi);
+      }
+      if (__builtin_expect(between != 0, 0))
+        for (std::size_t i = 0; i < R; ++i)
+          if (ut[i] >= lo && ut[i] < hi)
+            kt[i] = static_cast<std::uint64_t>(exact_->invert_prepared(drive, *finish_entry_, cut, ut[i]));
+      continue;
     }
-    if (__builtin_expect(between, 0))  // (and every draw with more samplings than a mask holds)
-      K = exact_->invert_prepared(s.band[static_cast<std::size_t>(at[t])].drive, *finish_entry_,
-                                  s.cut.data() + t * stride, x);
-    fk[at[t]] = static_cast<std::uint8_t>(K);
-    k_bits |= static_cast<std::uint64_t>(K) << (8 * (at[t] & 7));
+    for (std::size_t i = 0; i < R; ++i) {
+      bool between = true;
+      int k = N == 0 && n > 30 ? 0 : first_firing_by_cuts<N>(cut, ut[i], n, between);
+      if (__builtin_expect(between, 0))  // (and every draw with more samplings than a mask holds)
+        k = exact_->invert_prepared(drive, *finish_entry_, cut, ut[i]);
+      kt[i] = static_cast<std::uint64_t>(k);
+    }
   }
-  key = k_bits;
 }
 
 template <int N>
 void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
-  // Rows r0..r1 - 1 of one shape: each row's uniforms (keyed_uniforms, in the order start_run asked
-  // for them) inverted as draw() would one by one, the memo key of its first firings, its extents.
+  // Rows r0..r1 - 1 of one shape: their uniforms (keyed_uniforms, in the order start_run asked for
+  // them) inverted as draw() would one by one, then row by row its first firings, the memo key of
+  // them and its extents.
   RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
-  const std::size_t n = s.band.size();
+  const std::size_t n = s.band.size(), R = static_cast<std::size_t>(r1 - r0);
   std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
-  const int m = rows_[static_cast<std::size_t>(r0)].uniforms;
+  const std::size_t m = static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].uniforms);
   if (m > 0) {
     finish_entry_ = &exact_->entry(s.threshold_V);  // for the rare draws between the cuts
-    pixels_drawn_ += static_cast<long long>(m) * (r1 - r0);
+    pixels_drawn_ += static_cast<long long>(m * R);
+    k_scratch_.resize(m * R);
+    invert_run<N>(s, R, u, k_scratch_.data());
+    u += m * R;
   }
-  for (int r = r0; r < r1; ++r, fk += n) {
+  const std::uint64_t* K = k_scratch_.data();
+  const int* at = s.drawn_at.data();
+  for (std::size_t i = 0; i < R; ++i, fk += n) {
+    const int r = r0 + static_cast<int>(i);
     std::uint64_t key = s.base_key;
-    if (m > 0) {
-      invert_row<N>(s, fk, key, u);
-      u += m;
-    } else if (s.one_by_one && key != RowShape::kNoPattern) {  // drawn in start_run
-      for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
+    for (std::size_t t = 0; t < m; ++t) {
+      const std::uint64_t k = K[t * R + i];
+      fk[at[t]] = static_cast<std::uint8_t>(k);
+      key |= k << (8 * (at[t] & 7));  // (a band of 8 or more has no key: kNoPattern stays)
     }
+    if (m == 0 && s.one_by_one && key != RowShape::kNoPattern)  // drawn in start_run
+      for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
     if (N > 0 && key != RowShape::kNoPattern) {  // fill_extents' memo, here where N is a constant
       const std::size_t slot = RowShape::memo_slot(key);
       if (s.memo_key[slot] == key) {
@@ -201,7 +236,7 @@ void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
 }
 
 void PixelArrayKernel::plan_draws(RowShape& s) const {
-  // What every row of the shape repeats (reset_row_exact, finish_row_exact).
+  // What every row of the shape repeats (start_run, finish_run).
   const std::size_t n = s.band.size();
   s.base_k.assign(n + 8, 0);  // 8 to spare (start_run)
   s.drawn_at.clear();

@@ -108,7 +108,7 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
   // The extents are a function of the band's first firings, and the rows of a shape mostly repeat a
   // few patterns of them (two rows in three on the plane map repeat the previous row's): a small
   // memo per shape answers those, keyed by the packed pattern (n << 56 | fk[j] << 8 j, n < 8 band
-  // pixels; kNoPattern: none), which finish_row_exact assembles as it draws.
+  // pixels; kNoPattern: none), which finish_run assembles as it draws.
   const int N = config_.multisampling.samplings;
   const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
   int* first = extent_first_.data() + at;

@@ -230,7 +230,7 @@ class PixelArrayKernel {
   template <int N>  // N samplings (0: any count)
   void finish_run(int r0, int r1, const double*& u);  // u: the run's first uniform
   template <int N>
-  void invert_row(const RowShape& s, std::uint8_t* fk, std::uint64_t& key, const double* u);
+  void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* K);
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void plan_draws(RowShape& s) const;
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
@@ -295,7 +295,8 @@ class PixelArrayKernel {
   std::vector<std::uint8_t> band_k_;               // exact path: first firing of every row's band pixels
   std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each uniform the frame needs
   std::vector<double> uniforms_;                   // .. and the uniforms (keyed_uniforms)
-  ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry
+  ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry ..
+  std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run)
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 
