@@ -85,25 +85,25 @@ void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t* rc) {
   // uniforms finish_run inverts, drawn pixel by drawn pixel and row by row within (or, without
   // inversion, the Gamma draws pixel by pixel).
   const RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
-  const std::size_t n = s.band.size();
+  const std::size_t n = s.band.size(), R = static_cast<std::size_t>(r1 - r0);
   std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
-  for (int r = r0; r < r1; ++r, fk += n) {
-    // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
-    // pixels is one 8-byte move (a copy of a run-time size is a library call per row).
-    if (n <= 8)
-      std::memcpy(fk, s.base_k.data(), 8);
-    else
-      std::memcpy(fk, s.base_k.data(), n);
-    if (rows_[static_cast<std::size_t>(r)].uniforms > 0) {
-      // Pixel by pixel, each pixel's rows in a row (finish_run compares them with one pixel's cuts).
-      const std::uint64_t row_key = static_cast<std::uint64_t>(first_row_ + r) << 32;
-      const std::size_t R = static_cast<std::size_t>(r1 - r0), i = static_cast<std::size_t>(r - r0);
-      for (std::size_t t = 0; t < s.drawn_column.size(); ++t) rc[t * R + i] = row_key | s.drawn_column[t];
-    } else if (intervals_ && s.one_by_one) {
-      ThresholdEntry& e = exact_->entry(s.threshold_V);
+  // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
+  // pixels is one 8-byte move (a copy of a run-time size is a library call per row).
+  if (n <= 8) {
+    for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), 8);
+  } else {
+    for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), n);
+  }
+  if (rows_[static_cast<std::size_t>(r0)].uniforms > 0) {
+    const std::uint64_t row0 = static_cast<std::uint64_t>(first_row_ + r0);
+    for (std::size_t t = 0; t < s.drawn_column.size(); ++t, rc += R)
+      for (std::size_t i = 0; i < R; ++i) rc[i] = ((row0 + i) << 32) | s.drawn_column[t];  // row_column()
+  } else if (intervals_ && s.one_by_one) {
+    ThresholdEntry& e = exact_->entry(s.threshold_V);
+    for (std::size_t i = 0; i < R; ++i, fk += n)
       for (std::size_t j = 0; j < n; ++j)
-        if (s.band[j].certain < 0) fk[j] = static_cast<std::uint8_t>(draw(first_row_ + r, s, s.band[j], e));
-    }
+        if (s.band[j].certain < 0)
+          fk[j] = static_cast<std::uint8_t>(draw(first_row_ + r0 + static_cast<int>(i), s, s.band[j], e));
   }
 }
 
