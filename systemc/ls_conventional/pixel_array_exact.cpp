@@ -236,9 +236,12 @@ void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
 }
 
 void PixelArrayKernel::plan_draws(RowShape& s) const {
-  // What every row of the shape repeats (start_run, finish_run).
+  // What every row of the shape repeats (start_run, finish_run). Sized, then every entry written:
+  // on a scene where every row has its own drive this runs once a row.
   const std::size_t n = s.band.size();
-  s.base_k.assign(n + 8, 0);  // 8 to spare (start_run)
+  const int N = config_.multisampling.samplings;
+  s.base_k.resize(n + 8);  // 8 to spare (start_run)
+  std::memset(s.base_k.data() + n, 0, 8);
   s.drawn_at.clear();
   s.drawn_column.clear();
   s.one_by_one = false;
@@ -249,27 +252,24 @@ void PixelArrayKernel::plan_draws(RowShape& s) const {
     if (!s.by_uniform) {
       s.one_by_one = true;
     } else {
-      assert(p.prepared && p.cut_at == s.drawn_at.size() * 2 * static_cast<std::size_t>(config_.multisampling.samplings));
+      assert(p.prepared && p.cut_at == s.drawn_at.size() * 2 * static_cast<std::size_t>(N));
       s.drawn_at.push_back(static_cast<int>(j));
       s.drawn_column.push_back(static_cast<std::uint32_t>(p.column));
     }
   }
   // The drawn pixels with one random sampling (cuts other than f = 0: 0, 0 and f = 1: 2, 2).
-  const int N = config_.multisampling.samplings;
   const std::size_t m = s.drawn_at.size();
-  s.drawn_lo.assign(m, 0.0), s.drawn_hi.assign(m, 0.0);
-  s.drawn_single.assign(m, 0), s.drawn_fire.assign(m, 0), s.drawn_else.assign(m, 0);
+  s.drawn_lo.resize(m), s.drawn_hi.resize(m);
+  s.drawn_single.resize(m), s.drawn_fire.resize(m), s.drawn_else.resize(m);
   for (std::size_t t = 0; t < m; ++t) {
     const double* cut = s.cut.data() + t * 2 * static_cast<std::size_t>(N);
     int k = 0;
     while (k < N && cut[2 * k] == 0 && cut[2 * k + 1] == 0) ++k;  // f = 0
-    if (k == N) continue;
-    const bool rest_certain = k + 1 == N || (cut[2 * k + 2] == 2 && cut[2 * k + 3] == 2);  // f = 1 after
-    if (!rest_certain) continue;
-    s.drawn_single[t] = 1;
-    s.drawn_lo[t] = cut[2 * k], s.drawn_hi[t] = cut[2 * k + 1];
-    s.drawn_fire[t] = static_cast<std::uint8_t>(k + 1);
-    s.drawn_else[t] = static_cast<std::uint8_t>(k + 1 == N ? 0 : k + 2);
+    const bool single = k < N && (k + 1 == N || (cut[2 * k + 2] == 2 && cut[2 * k + 3] == 2));  // f = 1 after
+    s.drawn_single[t] = single;
+    s.drawn_lo[t] = single ? cut[2 * k] : 0.0, s.drawn_hi[t] = single ? cut[2 * k + 1] : 0.0;
+    s.drawn_fire[t] = static_cast<std::uint8_t>(single ? k + 1 : 0);
+    s.drawn_else[t] = static_cast<std::uint8_t>(single && k + 1 < N ? k + 2 : 0);
   }
   s.base_key = RowShape::kNoPattern;
   if (n < 8) {
