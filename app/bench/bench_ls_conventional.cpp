@@ -68,8 +68,8 @@ TimedRun run_kernel(const Setup& s, bool sparse, bool skip, long long frames, in
 }
 
 // Runs of the full map a figure takes the fastest of. A map takes 5-15 ms, and on a shared virtual
-// machine one run in three can be 1.5x slower than the steady state (another tenant's load on the
-// core): 10 runs cost 0.1 s and find the steady state.
+// machine one run in three can be 1.5x slower than the steady state (other tenants' load on the
+// core and its caches): 10 runs cost 0.1 s and find the steady state.
 constexpr int kMapRuns = 10;
 
 // The fastest of `reps` runs. The heap is kept between them (M_TRIM_THRESHOLD): a map's freshly
@@ -208,7 +208,7 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
   // The rows split into two bands, one thread each (run_sensor_kernel; the same frame results). On
   // a shared machine the wall time depends on the others' load; the slower thread's CPU time (its
   // band, and for the calling thread the set-up and merge too) is what the run takes on two free
-  // cores. Fastest of 3 runs.
+  // cores. Fastest of kMapRuns runs.
   progress(fmt::format("ls-conventional: full map on two cores (row bands), fastest of {}", kMapRuns));
   const TimedRun two = fastest_kernel(s, true, map_frames, 2, kMapRuns);
   const double critical_s = two.critical_s;
