@@ -222,16 +222,17 @@ void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
     }
     if (m == 0 && s.one_by_one && key != RowShape::kNoPattern)  // drawn in start_run
       for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
-    if (N > 0 && key != RowShape::kNoPattern) {  // fill_extents' memo, here where N is a constant
+    if (key != RowShape::kNoPattern) {  // the shape's memo (fill_extents), here where N is a constant
       const std::size_t slot = RowShape::memo_slot(key);
       if (s.memo_key[slot] == key) {
-        const std::size_t at = static_cast<std::size_t>(r) * N, from = slot * N;
-        std::memcpy(extent_first_.data() + at, s.memo_first.data() + from, N * sizeof(int));
-        std::memcpy(extent_last_.data() + at, s.memo_last.data() + from, N * sizeof(int));
+        const std::size_t samplings = N > 0 ? N : static_cast<std::size_t>(config_.multisampling.samplings);
+        const std::size_t at = static_cast<std::size_t>(r) * samplings, from = slot * samplings;
+        std::memcpy(extent_first_.data() + at, s.memo_first.data() + from, samplings * sizeof(int));
+        std::memcpy(extent_last_.data() + at, s.memo_last.data() + from, samplings * sizeof(int));
         continue;
       }
     }
-    fill_extents(r, s, fk, key);
+    fill_extents(r, s, fk, key);  // not in the memo: worked out, and kept there
   }
 }
 

@@ -107,23 +107,14 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
   // hole that may be at the range's edge: such a row takes its extents from its bits.
   // The extents are a function of the band's first firings, and the rows of a shape mostly repeat a
   // few patterns of them (two rows in three on the plane map repeat the previous row's): a small
-  // memo per shape answers those, keyed by the packed pattern (n << 56 | fk[j] << 8 j, n < 8 band
-  // pixels; kNoPattern: none), which finish_run assembles as it draws.
+  // memo per shape keeps them, keyed by the packed pattern (n << 56 | fk[j] << 8 j, n < 8 band
+  // pixels; kNoPattern: none), which finish_run assembles as it draws and looks up before it calls
+  // this for a pattern the memo does not hold.
   const int N = config_.multisampling.samplings;
   const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
   int* first = extent_first_.data() + at;
   int* last = extent_last_.data() + at;
   const std::size_t n = s.band.size();
-  std::size_t slot = 0;
-  if (key != RowShape::kNoPattern) {
-    slot = RowShape::memo_slot(key);
-    if (s.memo_key[slot] == key) {
-      const std::size_t m = slot * static_cast<std::size_t>(N);
-      copy_extents(first, s.memo_first.data() + m, N);
-      copy_extents(last, s.memo_last.data() + m, N);
-      return;
-    }
-  }
   const int* hf = s.held_first.data();
   const int* hl = s.held_last.data();
   const int* cf = s.band_column_from.data();
@@ -136,6 +127,7 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
   }
   if (hole) extents_from_bits(r, s, fk);
   if (key == RowShape::kNoPattern) return;
+  const std::size_t slot = RowShape::memo_slot(key);
   s.memo_key[slot] = key;
   const std::size_t m = slot * static_cast<std::size_t>(N);
   copy_extents(s.memo_first.data() + m, first, N);

@@ -55,6 +55,19 @@ void LsConventionalSensorKernel::account(const MultisamplingSequencerPins& p, lo
   phase_cycles_[static_cast<std::size_t>(p.phase)] += cycles;
 }
 
+template <class F>
+void LsConventionalSensorKernel::for_each_extent(F f) const {
+  // The exact path's extents read in place (a loop without extent()'s tests per row); else extent().
+  const std::size_t rows = centre_.size();
+  const int *first = nullptr, *last = nullptr;
+  std::size_t stride = 0;
+  if (pixels_.extents_at_sampling(first, last, stride)) {
+    for (std::size_t r = 0; r < rows; ++r) f(r, ActivationExtent{first[r * stride], last[r * stride]});
+  } else {
+    for (std::size_t r = 0; r < rows; ++r) f(r, pixels_.extent(static_cast<int>(r)));
+  }
+}
+
 void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& p) {
   FrameResult fr;
   fr.frame = p.frame;
@@ -66,13 +79,7 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
   pins_scratch_.resize(rows);
   extents_scratch_.resize(rows);
   for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
-  const int *first = nullptr, *last = nullptr;
-  std::size_t stride = 0;
-  if (pixels_.extents_at_sampling(first, last, stride)) {
-    for (std::size_t r = 0; r < rows; ++r) extents_scratch_[r] = ActivationExtent{first[r * stride], last[r * stride]};
-  } else {
-    for (std::size_t r = 0; r < rows; ++r) extents_scratch_[r] = pixels_.extent(static_cast<int>(r));
-  }
+  for_each_extent([&](std::size_t r, const ActivationExtent& e) { extents_scratch_[r] = e; });
   fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
   fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
   fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
@@ -123,16 +130,8 @@ void LsConventionalSensorKernel::step() {
   if (p.pix_reset)
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
-    const std::size_t rows = search_.size();
-    const int *first = nullptr, *last = nullptr;
-    std::size_t stride = 0;
-    if (pixels_.extents_at_sampling(first, last, stride)) {  // the exact path's extents, read in place
-      for (std::size_t r = 0; r < rows; ++r)
-        centre_[r].accumulate(search_[r].evaluate(ActivationExtent{first[r * stride], last[r * stride]}));
-    } else {
-      for (std::size_t r = 0; r < rows; ++r)
-        centre_[r].accumulate(search_[r].evaluate(pixels_.extent(static_cast<int>(r))));
-    }
+    for_each_extent(
+        [&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
   }
   sequencer_.advance_to(next);
   settle();

@@ -88,6 +88,8 @@ class LsConventionalSensorKernel {
   void settle();  // pixel array follows the sequencer's pins
   void account(const MultisamplingSequencerPins& p, long long cycles);
   void finish_frame(const MultisamplingSequencerPins& p);  // in the frame_done cycle
+  template <class F>
+  void for_each_extent(F f) const;  // f(r, extent of row r at the current sampling), every row
 
   LsConventionalConfig config_;
   SensorKernelOptions options_;
