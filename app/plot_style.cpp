@@ -58,10 +58,14 @@ std::string series_style(std::size_t i) {
 std::string series_colour(std::size_t i) { return kLineColours[i % (sizeof(kLineColours) / sizeof(*kLineColours))]; }
 
 std::pair<double, double> finite_range(const std::vector<std::vector<double>>& rows) {
-  double lo = NAN, hi = NAN;
+  double lo = INFINITY, hi = -INFINITY;
   for (const auto& r : rows)
-    for (double v : r)
-      if (std::isfinite(v)) lo = std::isnan(lo) ? v : std::min(lo, v), hi = std::isnan(hi) ? v : std::max(hi, v);
+    for (double v : r) {
+      const bool finite = std::isfinite(v);  // no branch on the value: a map's NaNs come in any pattern
+      lo = finite && v < lo ? v : lo;
+      hi = finite && v > hi ? v : hi;
+    }
+  if (lo > hi) return {NAN, NAN};
   return {lo, hi};
 }
 

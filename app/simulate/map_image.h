@@ -29,9 +29,9 @@ class MapImageWriter {
  public:
   MapImageWriter();
   ~MapImageWriter();
-  // value(row, column) of a rows x columns map; throws std::runtime_error naming the path when it
-  // cannot be written.
-  void write(const std::string& path, int rows, int columns, const std::function<double(int, int)>& value,
+  // A rows x columns map whose row r row_values(r, v) puts in v[0 .. columns); throws
+  // std::runtime_error naming the path when it cannot be written.
+  void write(const std::string& path, int rows, int columns, const std::function<void(int, double*)>& row_values,
              const MapImageSpec& spec);
 
  private:

@@ -2,47 +2,53 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 namespace rangesim::app {
 
 namespace {
 
+// Bits, least significant first, into `out` sized beforehand for the worst case (4 bytes at a time
+// without a capacity check); finish() cuts it to what was written.
 class BitWriter {
  public:
-  explicit BitWriter(std::string& out) : out_(out) {}
-  void put(std::uint32_t value, int bits) {  // least significant bit first, bits <= 32
+  BitWriter(std::string& out, std::size_t max_bytes) : out_(out), at_(out.size()) { out_.resize(at_ + max_bytes + 8); }
+  void put(std::uint32_t value, int bits) {  // bits <= 32
     acc_ |= static_cast<std::uint64_t>(value) << n_;
     n_ += bits;
-    if (n_ >= 32) {  // four bytes at a time
-      const char b[4] = {static_cast<char>(acc_), static_cast<char>(acc_ >> 8), static_cast<char>(acc_ >> 16),
-                         static_cast<char>(acc_ >> 24)};
-      out_.append(b, 4);
+    if (n_ >= 32) {
+      for (int k = 0; k < 4; ++k) out_[at_ + static_cast<std::size_t>(k)] = static_cast<char>(acc_ >> (8 * k));
+      at_ += 4;
       acc_ >>= 32;
       n_ -= 32;
     }
   }
-  void put_code(std::uint32_t code, int bits) {  // a Huffman code: most significant bit first
-    std::uint32_t r = 0;
-    for (int i = 0; i < bits; ++i) r |= ((code >> i) & 1U) << (bits - 1 - i);
-    put(r, bits);
-  }
-  void flush() {  // the last bits, padded to a whole byte
-    for (; n_ > 0; n_ -= 8, acc_ >>= 8) out_ += static_cast<char>(acc_ & 0xff);
+  void finish() {  // the last bits, padded to a whole byte
+    for (; n_ > 0; n_ -= 8, acc_ >>= 8) out_[at_++] = static_cast<char>(acc_ & 0xff);
     n_ = 0;
+    out_.resize(at_);
   }
 
  private:
   std::string& out_;
+  std::size_t at_;
   std::uint64_t acc_ = 0;
   int n_ = 0;
 };
 
-// The fixed Huffman code of every literal/length symbol (RFC 1951, 3.2.6), bit-reversed for the
-// least-significant-first writer.
+std::uint32_t reversed(std::uint32_t code, int bits) {  // a Huffman code is sent most significant bit first
+  std::uint32_t r = 0;
+  for (int i = 0; i < bits; ++i) r |= ((code >> i) & 1U) << (bits - 1 - i);
+  return r;
+}
+
+// The fixed Huffman code of every literal/length symbol (RFC 1951, 3.2.6) and the 5-bit distance
+// codes, bit-reversed for the least-significant-first writer.
 struct FixedCode {
   std::uint16_t bits[288];
   std::uint8_t length[288];
+  std::uint8_t distance[30];
   FixedCode() {
     for (int sym = 0; sym < 288; ++sym) {
       int code, n;
@@ -54,18 +60,16 @@ struct FixedCode {
         code = sym - 256, n = 7;
       else
         code = 0xC0 + sym - 280, n = 8;
-      int r = 0;
-      for (int i = 0; i < n; ++i) r |= ((code >> i) & 1) << (n - 1 - i);
-      bits[sym] = static_cast<std::uint16_t>(r);
+      bits[sym] = static_cast<std::uint16_t>(reversed(static_cast<std::uint32_t>(code), n));
       length[sym] = static_cast<std::uint8_t>(n);
     }
+    for (int d = 0; d < 30; ++d) distance[d] = static_cast<std::uint8_t>(reversed(static_cast<std::uint32_t>(d), 5));
   }
 };
 
-void put_symbol(BitWriter& w, int sym) {
-  static const FixedCode code;
-  w.put(code.bits[sym], code.length[sym]);
-}
+const FixedCode kCode;
+
+void put_symbol(BitWriter& w, int sym) { w.put(kCode.bits[sym], kCode.length[sym]); }
 
 constexpr int kLengthBase[] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
                                31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
@@ -75,36 +79,70 @@ constexpr int kDistBase[] = {1,   2,   3,   4,   5,   7,    9,    13,   17,   25
 constexpr int kDistExtra[] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
                               6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
 
-void put_match(BitWriter& w, int length, int distance) {
-  int l = 28;
-  while (kLengthBase[l] > length) --l;
+// A match distance as its bit-reversed 5-bit code and extra bits, worked out once per distance.
+struct Distance {
+  std::uint32_t code = 0, extra = 0;
+  int extra_bits = 0;
+  explicit Distance(int distance) {
+    int d = 29;
+    while (kDistBase[d] > distance) --d;
+    code = kCode.distance[d];
+    extra_bits = kDistExtra[d];
+    extra = static_cast<std::uint32_t>(distance - kDistBase[d]);
+  }
+};
+
+// The length symbol's index (0..28) of every match length 3..258.
+struct LengthIndex {
+  std::uint8_t of[259] = {};
+  LengthIndex() {
+    for (int len = 3, l = 0; len <= 258; ++len) {
+      while (l < 28 && kLengthBase[l + 1] <= len) ++l;
+      of[len] = static_cast<std::uint8_t>(l);
+    }
+  }
+};
+
+const LengthIndex kLength;
+
+void put_match(BitWriter& w, int length, const Distance& d) {
+  const int l = kLength.of[length];
   put_symbol(w, 257 + l);
   if (kLengthExtra[l]) w.put(static_cast<std::uint32_t>(length - kLengthBase[l]), kLengthExtra[l]);
-  int d = 29;
-  while (kDistBase[d] > distance) --d;
-  w.put_code(static_cast<std::uint32_t>(d), 5);
-  if (kDistExtra[d]) w.put(static_cast<std::uint32_t>(distance - kDistBase[d]), kDistExtra[d]);
+  w.put(d.code, 5);
+  if (d.extra_bits) w.put(d.extra, d.extra_bits);
+}
+
+// How many bytes from i on (at most 258, not past n) equal those `distance` before them; eight at
+// a time (the first differing byte is the lowest set byte of the XOR on a little-endian host).
+std::size_t match_length(const std::uint8_t* data, std::size_t n, std::size_t i, std::size_t distance) {
+  if (i < distance) return 0;
+  const std::size_t end = std::min(n, i + 258);
+  std::size_t j = i;
+  for (; j + 8 <= end; j += 8) {
+    std::uint64_t x, y;
+    std::memcpy(&x, data + j, 8);
+    std::memcpy(&y, data + j - distance, 8);
+    if (x != y) return j - i + static_cast<std::size_t>(__builtin_ctzll(x ^ y) / 8);
+  }
+  while (j < end && data[j] == data[j - distance]) ++j;
+  return j - i;
 }
 
 // One fixed-Huffman block appended to `out`: literals, runs (distance 1) and copies of the
-// scanline above.
-void deflate(const std::vector<std::uint8_t>& data, std::size_t stride, std::string& out) {
-  BitWriter w(out);
-  w.put(1, 1);  // BFINAL
-  w.put(1, 2);  // BTYPE = 01, fixed Huffman
-  const std::size_t n = data.size();
-  auto run = [&](std::size_t i, std::size_t distance) {
-    if (i < distance) return std::size_t{0};
-    const std::size_t end = std::min(n, i + 258);
-    std::size_t j = i;
-    while (j < end && data[j] == data[j - distance]) ++j;
-    return j - i;
-  };
+// scanline above, the longer of the two where one reaches 3 bytes.
+void deflate(const std::vector<std::uint8_t>& image, std::size_t stride, std::string& out) {
+  const std::size_t n = image.size();
+  const std::uint8_t* data = image.data();
+  BitWriter w(out, n * 9 / 8 + 8);  // 9 bits a literal at most; a match is shorter than its bytes
+  w.put(1, 1);                      // BFINAL
+  w.put(1, 2);                      // BTYPE = 01, fixed Huffman
+  const Distance run(1), above(static_cast<int>(std::min<std::size_t>(stride, 32768)));
   for (std::size_t i = 0; i < n;) {
-    const std::size_t a = run(i, 1), b = stride <= 32768 ? run(i, stride) : 0;
+    const std::size_t a = match_length(data, n, i, 1), b = stride <= 32768 ? match_length(data, n, i, stride) : 0;
     const std::size_t len = std::max(a, b);
     if (len >= 3) {
-      put_match(w, static_cast<int>(len), static_cast<int>(b >= a ? stride : 1));
+      put_match(w, static_cast<int>(len), b >= a ? above : run);
       i += len;
     } else {
       put_symbol(w, data[i]);
@@ -112,15 +150,29 @@ void deflate(const std::vector<std::uint8_t>& data, std::size_t stride, std::str
     }
   }
   put_symbol(w, 256);
-  w.flush();
+  w.finish();
 }
 
+// Adler-32 (RFC 1950) 16 bytes at a time: over a block x_0..x_15, a gains sum x_i and b gains
+// 16 a + sum (16 - i) x_i, sums without a carried dependency that the compiler vectorises.
 std::uint32_t adler32(const std::vector<std::uint8_t>& data) {
   std::uint32_t a = 1, b = 0;
-  for (std::size_t i = 0; i < data.size();) {
-    const std::size_t end = std::min(data.size(), i + 5552);  // no overflow before the modulo
-    for (; i < end; ++i) {
-      a += data[i];
+  const std::uint8_t* p = data.data();
+  std::size_t left = data.size();
+  while (left > 0) {
+    std::size_t n = std::min<std::size_t>(left, 5552);  // no overflow before the modulo
+    left -= n;
+    for (; n >= 16; n -= 16, p += 16) {
+      std::uint32_t sum = 0, weighted = 0;
+      for (int i = 0; i < 16; ++i) {
+        sum += p[i];
+        weighted += static_cast<std::uint32_t>(16 - i) * p[i];
+      }
+      b += 16 * a + weighted;
+      a += sum;
+    }
+    for (; n > 0; --n, ++p) {
+      a += *p;
       b += a;
     }
     a %= 65521;
@@ -129,19 +181,34 @@ std::uint32_t adler32(const std::vector<std::uint8_t>& data) {
   return (b << 16) | a;
 }
 
-std::uint32_t crc32(const std::string& bytes, std::size_t from) {
-  static const auto table = [] {
-    std::array<std::uint32_t, 256> t{};
+// CRC-32 of PNG chunks (ISO 3309), eight bytes a step through eight tables: t[k][n] is the CRC
+// of byte n followed by k zero bytes.
+struct CrcTables {
+  std::uint32_t t[8][256];
+  CrcTables() {
     for (std::uint32_t n = 0; n < 256; ++n) {
       std::uint32_t c = n;
       for (int k = 0; k < 8; ++k) c = (c & 1U) ? 0xedb88320U ^ (c >> 1) : c >> 1;
-      t[n] = c;
+      t[0][n] = c;
     }
-    return t;
-  }();
+    for (std::uint32_t n = 0; n < 256; ++n)
+      for (int k = 1; k < 8; ++k) t[k][n] = (t[k - 1][n] >> 8) ^ t[0][t[k - 1][n] & 0xff];
+  }
+};
+
+const CrcTables kCrc;
+
+std::uint32_t crc32(const std::string& bytes, std::size_t from) {
+  const auto& t = kCrc.t;
+  const auto* p = reinterpret_cast<const std::uint8_t*>(bytes.data()) + from;
+  std::size_t n = bytes.size() - from;
   std::uint32_t c = 0xffffffffU;
-  for (std::size_t i = from; i < bytes.size(); ++i)
-    c = table[(c ^ static_cast<std::uint8_t>(bytes[i])) & 0xff] ^ (c >> 8);
+  for (; n >= 8; n -= 8, p += 8) {
+    const std::uint32_t lo = c ^ (p[0] | p[1] << 8 | p[2] << 16 | static_cast<std::uint32_t>(p[3]) << 24);
+    c = t[7][lo & 0xff] ^ t[6][(lo >> 8) & 0xff] ^ t[5][(lo >> 16) & 0xff] ^ t[4][lo >> 24] ^ t[3][p[4]] ^ t[2][p[5]] ^
+        t[1][p[6]] ^ t[0][p[7]];
+  }
+  for (; n > 0; --n, ++p) c = t[0][(c ^ *p) & 0xff] ^ (c >> 8);
   return c ^ 0xffffffffU;
 }
 

@@ -45,7 +45,11 @@ std::string render_range_map(OutputDir& out, const systemc::RangeMap& m) {
   MapImageWriter images;
   images.write(
       out.staged("range_map.png"), rows, cols,
-      [&m](int r, int c) { return m.range_m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)]; }, spec);
+      [&m](int r, double* v) {
+        const std::vector<double>& row = m.range_m[static_cast<std::size_t>(r)];
+        std::copy(row.begin(), row.end(), v);
+      },
+      spec);
   // The error where both the range and the truth exist, symmetric about 0 to the 99th percentile of
   // |error|: a few edge pixels must not wash the rest out; beyond it the end colours show.
   const double q99 = abs_quantile(m, 0.99);
@@ -57,9 +61,12 @@ std::string render_range_map(OutputDir& out, const systemc::RangeMap& m) {
     spec.palette = MapPalette::Diverging;
     images.write(
         out.staged("range_error.png"), rows, cols,
-        [&m](int r, int c) {
-          const std::size_t i = static_cast<std::size_t>(r), j = static_cast<std::size_t>(c);
-          return i < m.truth_m.size() && j < m.truth_m[i].size() ? m.range_m[i][j] - m.truth_m[i][j] : NAN;
+        [&m](int r, double* v) {
+          const std::vector<double>& range = m.range_m[static_cast<std::size_t>(r)];
+          const std::vector<double>* truth =
+              static_cast<std::size_t>(r) < m.truth_m.size() ? &m.truth_m[static_cast<std::size_t>(r)] : nullptr;
+          for (std::size_t j = 0; j < range.size(); ++j)
+            v[j] = truth && j < truth->size() ? range[j] - (*truth)[j] : NAN;
         },
         spec);
   }

@@ -62,15 +62,16 @@ SceneOptics::SceneOptics(const LsConventionalConfig& config, const Scene& scene)
   taps_ = systemc::ls_conventional_blur_taps(config);
   // The beam must actually sweep: every position must leave the projector in front (0 < a_p < pi)
   // — always true for cot finite — and not run parallel to a tilted target.
+  cot_.resize(static_cast<std::size_t>(beam_positions()));
   for (int b = 0; b < beam_positions(); ++b) {
-    const double c = cot_beam(b);
+    const double c = cot_[static_cast<std::size_t>(b)] = beam_cot(b);
     if (!std::isfinite(c))
       throw UserError(fmt::format("{}: beam.reference_distance_m = {:g} gives a degenerate beam angle at position {}",
                                   scene.file, scene.reference_distance_m, b));
   }
 }
 
-double SceneOptics::cot_beam(int b) const {
+double SceneOptics::beam_cot(int b) const {
   const double f = config_.optics.focal_length_m, d = config_.optics.baseline_m, p = config_.pixel.pitch_m;
   const double u = static_cast<double>(b) * columns() / beam_positions() + scene_.column_offset_px;
   const double x_e = (u - principal_column_px()) * p;

@@ -78,7 +78,10 @@ class SceneOptics {
   double range_from_centre_m(int b, double centre_px) const;
 
  private:
-  double cot_beam(int b) const;
+  // cot(a_p) of beam position b, made once per position: truth(), stimulus() and
+  // range_from_centre_m() ask for it at every row of every frame access.
+  double cot_beam(int b) const { return cot_[static_cast<std::size_t>(b)]; }
+  double beam_cot(int b) const;                           // what cot_beam(b) holds
   RowTruth truth(int b, double cot_beam, int row) const;  // truth(b, row) with cot_beam(b) made once
   double depth_map_z(int b, int row) const;               // depth_map: depth of the lit point on a row (< 0: none)
 
@@ -86,6 +89,7 @@ class SceneOptics {
   Scene scene_;
   double signal_per_inv_z2_V_ = 0;                        // spot-peak swing times z^2 (V m^2) at reflectance rho
   double background_V_ = 0;                               // background swing
+  std::vector<double> cot_;                               // cot_beam(b) of every beam position
   std::vector<double> depth_grid_m_;                      // depth_map: the map resampled to the pixel grid, row-major
   std::shared_ptr<const systemc::PixelPattern> pattern_;  // the chip's fixed pattern (null: off)
   std::vector<systemc::BlurTap> taps_;                    // the spread (empty: none)

@@ -4,9 +4,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <fmt/format.h>
 #include <stdexcept>
+#include <vector>
 
 #include "core/ls_conventional/config.h"
 #include "core/params.h"
@@ -131,22 +133,46 @@ void add_point(Reconstruction& out, const Point& x, int r, std::size_t f) {
 
 Table points_table() { return row_points_table(true); }
 
+// What a points row takes from its Point besides the frame's pins, kept by reconstruct() so that
+// writing the table does not work the truth and the range out again (their divisions were most
+// of the writing's time): rows x frames cells, frame by frame, 26 bytes a cell where the table's
+// doubles would be 104.
+struct PointCells {
+  std::vector<double> truth_centre_px, truth_range_m;  // NaN where the beam misses the target
+  std::vector<double> range_m;                         // NaN where the centre is not valid
+  std::vector<std::uint8_t> visible, valid;
+  explicit PointCells(std::size_t n)
+      : truth_centre_px(n, NAN), truth_range_m(n, NAN), range_m(n, NAN), visible(n, 0), valid(n, 0) {}
+  void keep(std::size_t i, const Point& x) {
+    truth_centre_px[i] = x.t.hit ? x.t.centre_px : NAN;
+    truth_range_m[i] = x.t.hit ? x.t.range_m : NAN;
+    range_m[i] = x.range;
+    visible[i] = x.t.visible;
+    valid[i] = x.valid;
+  }
+};
+
 // The points table's rows made when it is written, block by block (a full map's 137,000 points
-// are never held whole): the same points in the same order as reconstruct() counts them.
-void produce_points(const SensorRunResult& res, const scene::SceneOptics& optics, const LsConventionalConfig& cfg,
-                    const Table::BlockSink& sink) {
+// are never held whole as doubles): the same points in the same order as reconstruct() counts them.
+void produce_points(const SensorRunResult& res, const PointCells& cells, const scene::SceneOptics& optics,
+                    const LsConventionalConfig& cfg, const Table::BlockSink& sink) {
   constexpr std::size_t kBlockRows = 2048, kColumns = 13;
   std::vector<double> block;
   block.reserve(kBlockRows * kColumns);
+  std::size_t i = 0;
   for (const FrameResult& fr : res.frames) {
-    const int b = optics.beam_position(fr.frame);
-    for (int r = 0; r < cfg.pixel.rows; ++r) {
-      const Point x = point_of(optics, fr, b, r, cfg);
-      if (!x.listed()) continue;
-      block.insert(block.end(), {static_cast<double>(fr.frame), static_cast<double>(b), static_cast<double>(r),
-                                 x.t.visible ? 1.0 : 0.0, x.t.hit ? x.t.centre_px : NAN, x.t.hit ? x.t.range_m : NAN,
-                                 x.p.valid ? 1.0 : 0.0, x.p.valid ? x.p.centre_px() : NAN, x.range, x.err_px, x.err_m,
-                                 x.valid ? 1.0 : 0.0, x.fraction});
+    const double frame = static_cast<double>(fr.frame), b = optics.beam_position(fr.frame);
+    for (int r = 0; r < cfg.pixel.rows; ++r, ++i) {
+      const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
+      const bool visible = cells.visible[i], valid = cells.valid[i];
+      if (!visible && !p.valid) continue;  // Point::listed()
+      const double centre = p.valid ? p.centre_px() : NAN;
+      const bool both = visible && valid;
+      block.insert(block.end(), {frame, b, static_cast<double>(r), visible ? 1.0 : 0.0, cells.truth_centre_px[i],
+                                 cells.truth_range_m[i], p.valid ? 1.0 : 0.0, centre, cells.range_m[i],
+                                 both ? p.centre_px() - cells.truth_centre_px[i] : NAN,
+                                 both ? cells.range_m[i] - cells.truth_range_m[i] : NAN, valid ? 1.0 : 0.0,
+                                 static_cast<double>(p.count) / cfg.multisampling.samplings});
       if (block.size() == kBlockRows * kColumns) {
         sink(block.data(), kBlockRows);
         block.clear();
@@ -173,6 +199,7 @@ Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
       cfg.validity.min_detecting_fraction, samplings, cfg.validity.edge_margin_px);
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   std::size_t listed = 0;
+  auto cells = std::make_shared<PointCells>(res.frames.size() * static_cast<std::size_t>(rows));
   for (std::size_t f = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
     const int b = optics.beam_position(fr.frame);
@@ -185,14 +212,15 @@ Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
     for (int r = 0; r < rows; ++r) {
       const Point x = point_of(optics, fr, b, r, cfg);
       add_point(out, x, r, f);
+      cells->keep(f * static_cast<std::size_t>(rows) + static_cast<std::size_t>(r), x);
       listed += x.listed() ? 1 : 0;
     }
   }
   for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
   out.points = points_table();
   out.points.produced_rows = listed;
-  out.points.produce = [run, optics_ptr, cfg](const Table::BlockSink& sink) {
-    produce_points(*run, *optics_ptr, cfg, sink);
+  out.points.produce = [run, cells, optics_ptr, cfg](const Table::BlockSink& sink) {
+    produce_points(*run, *cells, *optics_ptr, cfg, sink);
   };
   return out;
 }
