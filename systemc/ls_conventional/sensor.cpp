@@ -3,8 +3,10 @@
 #include <time.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <exception>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -148,31 +150,43 @@ double thread_cpu_now() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-// One band of rows run to the end on the calling thread.
-struct BandRun {
+// One part of a run on the calling thread: rows [first_row, first_row + rows) of the frame
+// accesses [first_frame, first_frame + frames).
+struct Part {
+  int first_row = 0, rows = 0;
+  long long first_frame = 0, frames = 0;
+};
+
+struct PartRun {
   std::vector<FrameResult> frames;
   std::vector<std::string> errors;
   long long cycles = 0, pixels_simulated = 0, ticks = 0;
+  long long first_reset_pixels = 0;  // pixels_simulated by the reset of its first frame access
   double cpu_s = 0;
   std::exception_ptr failure;
 };
 
-void run_band(const LsConventionalConfig& config, SensorKernelOptions options, int first_row, int rows,
-              const StimulusSource& source, const SensorRunOptions& run, bool report, BandRun& out) {
+// `done` counts the frame accesses finished by every part; the reporting part passes it to
+// run.progress.
+void run_part(const LsConventionalConfig& config, SensorKernelOptions options, const Part& part,
+              const StimulusSource& source, const SensorRunOptions& run, std::atomic<long long>& done, bool report,
+              PartRun& out) {
   const double c0 = thread_cpu_now();
   try {
-    options.pixel.first_row = first_row;
-    options.pixel.row_count = rows;
+    options.pixel.first_row = part.first_row;
+    options.pixel.row_count = part.rows;
     LsConventionalSensorKernel k(config, options, source);
-    k.reserve_results(run.frames);
-    k.reset();
+    k.reserve_results(part.frames);
+    k.reset_at_frame(static_cast<std::uint64_t>(part.first_frame));
+    out.first_reset_pixels = k.pixels().pixels_simulated();
     const long long budget = run.cycle_budget > 0 ? run.cycle_budget : default_budget(config, run.frames);
-    for (long long f = 0; f < run.frames; ++f) {
+    for (long long f = 0; f < part.frames; ++f) {
       const long long left = budget - k.cycle();
       if (left <= 0)
         throw std::runtime_error("simulation cycle budget of " + std::to_string(budget) + " cycles exhausted");
       k.advance_frames(1, left);
-      if (report && run.progress) run.progress(f + 1);
+      const long long all = ++done;
+      if (report && run.progress) run.progress(all);
     }
     out.cycles = k.cycle();
     out.errors = k.errors();
@@ -184,50 +198,83 @@ void run_band(const LsConventionalConfig& config, SensorKernelOptions options, i
   }
   out.cpu_s = thread_cpu_now() - c0;
 }
+
+// The run's parts, one a thread: consecutive frame accesses, or bands of rows.
+std::vector<Part> parts_of(const LsConventionalConfig& config, const SensorRunOptions& run) {
+  const int rows = config.pixel.rows;
+  const bool by_frames = run.split == SensorRunOptions::Split::FrameAccesses ||
+                         (run.split == SensorRunOptions::Split::Auto && run.frames >= run.threads);
+  const long long n = by_frames ? std::clamp<long long>(run.threads, 1, std::max(1LL, run.frames))
+                                : std::clamp(run.threads, 1, std::max(1, rows));
+  std::vector<Part> parts(static_cast<std::size_t>(n));
+  for (long long i = 0; i < n; ++i) {
+    Part& p = parts[static_cast<std::size_t>(i)];
+    if (by_frames) {
+      p.rows = rows;
+      p.first_frame = run.frames * i / n;
+      p.frames = run.frames * (i + 1) / n - p.first_frame;
+    } else {
+      p.first_row = static_cast<int>(rows * i / n);
+      p.rows = static_cast<int>(rows * (i + 1) / n) - p.first_row;
+      p.frames = run.frames;
+    }
+  }
+  return parts;
+}
+
+// Part o's results after those of `to` (an earlier part): its frame accesses after, or its rows
+// joined to each frame access's.
+void join(PartRun& to, PartRun& o, const Part& part) {
+  if (part.first_frame > 0) {  // later frame accesses
+    to.frames.insert(to.frames.end(), std::make_move_iterator(o.frames.begin()),
+                     std::make_move_iterator(o.frames.end()));
+    to.cycles = o.cycles;
+    to.ticks += o.ticks;
+    // A kernel resets the next frame access in the cycle after its last frame_done: the part before
+    // has counted this part's first reset already.
+    to.pixels_simulated -= o.first_reset_pixels;
+  } else {  // a band of rows: the same schedule, other rows
+    if (o.frames.size() != to.frames.size() || o.cycles != to.cycles)
+      throw std::logic_error("run_sensor_kernel: row bands disagree on the frame schedule");
+    for (std::size_t f = 0; f < to.frames.size(); ++f) {
+      FrameResult& into = to.frames[f];
+      const FrameResult& from = o.frames[f];
+      into.rows.insert(into.rows.end(), from.rows.begin(), from.rows.end());
+      into.extents.insert(into.extents.end(), from.extents.begin(), from.extents.end());
+    }
+  }
+  to.errors.insert(to.errors.end(), o.errors.begin(), o.errors.end());
+  to.pixels_simulated += o.pixels_simulated;
+}
 }  // namespace
 
 SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const SensorKernelOptions& options,
                                   StimulusSource source, const SensorRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
   const double c0 = thread_cpu_now();
-  const int rows = config.pixel.rows, bands = std::clamp(run.threads, 1, std::max(1, rows));
-  std::vector<BandRun> band(static_cast<std::size_t>(bands));
-  auto first_row = [&](int b) { return static_cast<int>(static_cast<long long>(rows) * b / bands); };
+  const std::vector<Part> parts = parts_of(config, run);
+  std::vector<PartRun> out(parts.size());
+  std::atomic<long long> done{0};
   {
     std::vector<std::thread> workers;
-    for (int b = 1; b < bands; ++b)
-      workers.emplace_back([&, b] {
-        run_band(config, options, first_row(b), first_row(b + 1) - first_row(b), source, run, false,
-                 band[static_cast<std::size_t>(b)]);
-      });
-    run_band(config, options, 0, first_row(1), source, run, true, band[0]);
+    for (std::size_t i = 1; i < parts.size(); ++i)
+      workers.emplace_back([&, i] { run_part(config, options, parts[i], source, run, done, false, out[i]); });
+    run_part(config, options, parts[0], source, run, done, true, out[0]);
     for (auto& w : workers) w.join();
   }
-  for (const BandRun& b : band)
-    if (b.failure) std::rethrow_exception(b.failure);
-  // The bands share the sequencer's schedule: frame results differ only in their rows.
+  for (const PartRun& p : out)
+    if (p.failure) std::rethrow_exception(p.failure);
+  for (std::size_t i = 1; i < parts.size(); ++i) join(out[0], out[i], parts[i]);
+  if (run.progress && parts.size() > 1) run.progress(run.frames);
   SensorRunResult r;
-  r.frames = std::move(band[0].frames);
-  for (int b = 1; b < bands; ++b) {
-    BandRun& o = band[static_cast<std::size_t>(b)];
-    if (o.frames.size() != r.frames.size() || o.cycles != band[0].cycles)
-      throw std::logic_error("run_sensor_kernel: row bands disagree on the frame schedule");
-    for (std::size_t f = 0; f < r.frames.size(); ++f) {
-      FrameResult& to = r.frames[f];
-      const FrameResult& from = o.frames[f];
-      to.rows.insert(to.rows.end(), from.rows.begin(), from.rows.end());
-      to.extents.insert(to.extents.end(), from.extents.begin(), from.extents.end());
-    }
-  }
-  r.cycles = band[0].cycles;
+  r.frames = std::move(out[0].frames);
+  r.cycles = out[0].cycles;
   r.simulated_time_s = static_cast<double>(r.cycles) / config.timing.clock_Hz;
-  r.ticks = band[0].ticks;
-  for (BandRun& b : band) {
-    r.errors.insert(r.errors.end(), b.errors.begin(), b.errors.end());
-    r.pixels_simulated += b.pixels_simulated;
-    r.thread_cpu_s.push_back(b.cpu_s);
-  }
-  r.thread_cpu_s[0] = thread_cpu_now() - c0;  // band 0 with the set-up and the merge
+  r.ticks = out[0].ticks;
+  r.errors = std::move(out[0].errors);
+  r.pixels_simulated = out[0].pixels_simulated;
+  for (const PartRun& p : out) r.thread_cpu_s.push_back(p.cpu_s);
+  r.thread_cpu_s[0] = thread_cpu_now() - c0;  // part 0 with the set-up and the merge
   r.wall_time_s = seconds_since(t0);
   return r;
 }

@@ -98,7 +98,12 @@ struct SensorRunOptions {
   std::vector<int> traced_rows;             // rows whose search and centre pins are traced
   std::vector<TracePixel> traced_pixels;    // pixels whose comparator output is traced
   std::function<void(long long)> progress;  // after each frame access (frames done so far)
-  int threads = 1;  // bare kernel: the rows split into this many bands, one thread each (same results)
+  int threads = 1;  // bare kernel: this many threads, each with a part of the run (same results)
+  // How the bare kernel's threads share the run: consecutive frame accesses each (Auto, when there
+  // are at least as many as threads: nothing is done twice), or bands of rows (every thread makes
+  // every frame access's schedule and row shapes for its rows).
+  enum class Split { Auto, FrameAccesses, RowBands };
+  Split split = Split::Auto;
 };
 
 struct SensorRunResult {
@@ -111,13 +116,13 @@ struct SensorRunResult {
   std::vector<std::string> errors;  // kernel protocol violations
   long long pixels_simulated = 0;   // pixels simulated one by one (sparse windows)
   long long ticks = 0;              // clock edges evaluated (kernel; SystemC: = cycles)
-  // Bare kernel: CPU time of each band's thread (CLOCK_THREAD_CPUTIME_ID); [0] is the calling
-  // thread, which also sets up, runs band 0 and merges. Their maximum is the run's critical path.
+  // Bare kernel: CPU time of each part's thread (CLOCK_THREAD_CPUTIME_ID); [0] is the calling
+  // thread, which also sets up, runs part 0 and merges. Their maximum is the run's critical path.
   std::vector<double> thread_cpu_s;
 };
 
-// Bare kernel, on run.threads threads (row bands; the keyed streams make the result the same for
-// any thread count). Throws std::runtime_error if the cycle budget runs out.
+// Bare kernel, on run.threads threads (run.split; the keyed streams make the result the same for
+// any thread count and split). Throws std::runtime_error if the cycle budget runs out.
 SensorRunResult run_sensor_kernel(const LsConventionalConfig& config, const SensorKernelOptions& options,
                                   StimulusSource source, const SensorRunOptions& run);
 

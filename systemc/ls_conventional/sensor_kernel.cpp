@@ -43,8 +43,11 @@ void LsConventionalSensorKernel::settle() {
   pixels_.control(p.pix_reset, p.frame, p.sampling);
 }
 
-void LsConventionalSensorKernel::reset() {
+void LsConventionalSensorKernel::reset() { reset_at_frame(0); }
+
+void LsConventionalSensorKernel::reset_at_frame(std::uint64_t frame) {
   sequencer_.tick(true);
+  sequencer_.advance_to(static_cast<long long>(frame) * sequencer_.frame_cycles());
   for (auto& s : search_) s.tick(true, false, ActivationRow{});
   for (auto& c : centre_) c.clear();
   phase_cycles_ = {};
@@ -130,8 +133,7 @@ void LsConventionalSensorKernel::step() {
   if (p.pix_reset)
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
-    for_each_extent(
-        [&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
+    for_each_extent([&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
   }
   sequencer_.advance_to(next);
   settle();

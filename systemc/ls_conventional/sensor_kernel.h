@@ -59,8 +59,13 @@ class LsConventionalSensorKernel {
                              StimulusSource source);
 
   void reset();  // synchronous reset edge (held 1 edge), then the pixel array settles
-  void tick();   // one clock edge of every block
-  void step();   // tick(), or with event skipping a jump to the next pin change of the sequencer
+  // reset(), then on to the first cycle of frame access `frame` as if the ones before it had run.
+  // Every frame access starts from the same state (pixels and centre processors reset, searches
+  // idle) and its noise is keyed by its number, so its result does not depend on them: a thread
+  // can simulate a later part of a run (run_sensor_kernel).
+  void reset_at_frame(std::uint64_t frame);
+  void tick();  // one clock edge of every block
+  void step();  // tick(), or with event skipping a jump to the next pin change of the sequencer
 
   // Runs until `frames` more frame results exist; throws std::runtime_error if that takes more
   // than `cycle_budget` cycles (0: 2 frame accesses' worth per frame). Returns the new results.

@@ -268,6 +268,7 @@ TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
   for (const bool noise : {true, false}) {
     rs::SensorRunOptions run;
     run.frames = 20;
+    run.split = rs::SensorRunOptions::Split::RowBands;
     const auto one = rs::run_sensor_kernel(c, options(true, noise), stim, run);
     ASSERT_EQ(one.thread_cpu_s.size(), 1u);
     for (const int threads : {2, 3}) {
@@ -284,6 +285,46 @@ TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
       EXPECT_TRUE(many.errors.empty());
     }
   }
+}
+
+TEST(LsConventionalSensorKernel, FrameAccessesOnThreadsEqualOneThread) {
+  // run_sensor_kernel gives each thread consecutive frame accesses, a later part starting with
+  // reset_at_frame: every frame access starts from the same state and its noise is keyed by its
+  // number, so the joined frames equal the one-thread run's, ticked or event-skipping, sparse or
+  // dense, for frame counts that do not split evenly; the cycles, clock edges and pixels add up.
+  const LsConventionalConfig c = small_config(23, 96, 4);
+  RandomStimulus stim;
+  stim.sig_lo = 0.011;
+  stim.sig_hi = 0.05;  // near the threshold: noise decides
+  for (const bool skip : {true, false})
+    for (const bool noise : {true, false})
+      for (const bool sparse : {true, false}) {
+        rs::SensorRunOptions run;
+        run.frames = skip ? 13 : 5;
+        const auto one = rs::run_sensor_kernel(c, options(skip, noise, sparse), stim, run);
+        for (const int threads : {2, 3}) {
+          run.threads = threads;
+          run.split = rs::SensorRunOptions::Split::Auto;  // frame accesses: as many as threads or more
+          long long last_progress = 0;
+          run.progress = [&](long long done) {
+            EXPECT_GE(done, last_progress);
+            last_progress = done;
+          };
+          const auto many = rs::run_sensor_kernel(c, options(skip, noise, sparse), stim, run);
+          run.progress = nullptr;
+          ASSERT_EQ(many.thread_cpu_s.size(), static_cast<std::size_t>(threads));
+          ASSERT_EQ(many.frames.size(), one.frames.size());
+          for (std::size_t f = 0; f < one.frames.size(); ++f) {
+            EXPECT_TRUE(one.frames[f] == many.frames[f]) << f;
+            EXPECT_TRUE(one.frames[f].extents == many.frames[f].extents) << f;
+          }
+          EXPECT_EQ(many.cycles, one.cycles);
+          EXPECT_EQ(many.ticks, one.ticks);
+          EXPECT_EQ(many.pixels_simulated, one.pixels_simulated);
+          EXPECT_EQ(many.errors, one.errors);
+          EXPECT_EQ(last_progress, run.frames);
+        }
+      }
 }
 
 TEST(CentreProcessorKernel, BitSerialDecodeEqualsClosedFormAndRoundsToNearest) {
