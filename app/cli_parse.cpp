@@ -290,6 +290,11 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                 "Run the periods or laser cycles the sensor's model aggregates (correlation periods, accumulation\n"
                 "periods, laser cycles: docs/simulate.md) one by one instead of in one exact jump or draw;\n"
                 "a sensor without aggregation refuses it");
+  sim->add_option("--threads", sim_opt.threads,
+                  "With --kernel-only: threads the kernel runs on, 1..1024 (default: all cores), each with\n"
+                  "consecutive frame accesses; the results are bit-identical for any count. ls-conventional;\n"
+                  "the other sensors' kernels run on one thread and refuse more")
+      ->transform(integer_in(1, 1024));
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png and range_error.png");
   auto* csv_flag =
       sim->add_flag("--csv", sim_opt.csv,

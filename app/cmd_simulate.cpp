@@ -102,6 +102,16 @@ const SimulateEntry& simulate_entry_for(const ParamSet& params, const SimulateOp
                     "trace_pixels");
   if (!opt.trace_pixels.empty() && opt.trace.empty())
     throw UserError("--trace-pixels chooses what --trace writes; add --trace", "trace_pixels");
+  if (opt.threads) {
+    if (*opt.threads < 1 || *opt.threads > 1024)
+      throw UserError(fmt::format("--threads {}: allowed 1 .. 1024", *opt.threads), "threads");
+    if (*opt.threads > 1 && !opt.kernel_only)
+      throw UserError("--threads: the SystemC model runs on one thread; add --kernel-only (or --threads 1)", "threads");
+    if (*opt.threads > 1 && !entry->threads)
+      throw UserError(fmt::format("--threads {}: the {} kernel runs on one thread; allowed with {} (or 1)",
+                                  *opt.threads, params.sensor_id(), allowed(&SimulateEntry::threads)),
+                      "threads");
+  }
   return *entry;
 }
 

@@ -37,6 +37,7 @@ struct SimulateOptions {
   bool csv = false;
   bool npy = false;
   double time_step_s = 0;  // --time-step S: tof-lockin pulse/gate overlaps integrated at step S (0 = exact closed form)
+  std::optional<int> threads;  // --threads N: the bare kernel's threads (default: all cores where the sensor can)
 };
 
 // Returns the exit code; throws UserError (exit 2) for bad input, NotModelled (exit 3) for a

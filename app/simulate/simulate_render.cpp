@@ -4,10 +4,12 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 #include "app/cli_common.h"
 #include "app/output_dir.h"
@@ -31,6 +33,7 @@ systemc::SimulationRequest simulation_request(const SimulateOptions& opt) {
   r.dense = opt.dense;
   r.no_aggregate = opt.no_aggregate;
   r.time_step_s = opt.time_step_s;
+  r.threads = opt.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   r.trace_rows = opt.trace_rows;
   r.trace_pixels = opt.trace_pixels;
   return r;

@@ -32,6 +32,7 @@ struct SimulateEntry {
   bool time_step;      // has a continuous-time integration that --time-step coarsens
   bool trace_rows;     // its waveform shows per-row blocks, chosen with --trace-rows
   bool trace_pixels;   // its waveform shows chosen pixels (--trace-pixels)
+  bool threads;        // its bare kernel runs on several threads (--threads with --kernel-only)
 };
 
 }  // namespace rangesim::systemc

@@ -30,6 +30,7 @@ struct SimulationRequest {
   bool dense = false;               // --dense: every pixel (no sparse window)
   bool no_aggregate = false;        // --no-aggregate: periods / laser cycles one by one
   double time_step_s = 0;           // --time-step S (0 = exact closed form)
+  int threads = 1;                  // --threads N with --kernel-only (default: all cores), where the sensor can
   std::vector<int> trace_rows;      // --trace-rows: rows whose blocks the waveform shows (empty: the sensor's choice)
   std::vector<TracePixel> trace_pixels;  // --trace-pixels: pixels the waveform shows (empty: the sensor's choice)
 };

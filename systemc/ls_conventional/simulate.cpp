@@ -2,6 +2,7 @@
 #include "systemc/common/row_points.h"
 #include "systemc/ls_conventional/simulate.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -68,6 +69,7 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
   run.traced_pixels = req.trace_pixels;
   if (run.traced_pixels.empty()) run.traced_pixels.push_back({cfg.pixel.rows / 2, cfg.pixel.columns / 2});
   run.progress = host.progress("frame access", frames);
+  if (req.kernel_only) run.threads = req.threads;  // consecutive frame accesses each: the same results
   const StimulusSource source = [&optics](std::uint64_t f, FrameStimulus& s) { optics.stimulus(f, s); };
   SensorRunResult res =
       req.kernel_only ? run_sensor_kernel(cfg, kopt, source, run) : run_sensor_systemc(cfg, kopt, source, run);
@@ -273,6 +275,7 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
       {"simulation_wall_time_s", res.wall_time_s},
       {"simulated_cycles_per_s", res.cycles / res.wall_time_s},
       {"sc_errors", res.sc_errors},
+      {"threads", static_cast<long long>(std::max<std::size_t>(res.thread_cpu_s.size(), 1))},
   };
   add_timing_json(j, report, gt);
   add_validity_json(j, rec.map);
@@ -283,10 +286,13 @@ nlohmann::json summary(const Run& run, const SimulationReport& report) {
 SimulationReport report(const Run& run) {
   const auto& [req, params, cfg, sc, res, gt, rec, wall_s] = run;
   SimulationReport r;
-  r.headline = fmt::format("{} on scene '{}' ({}): {} frame access{}, {}, {}", params.sensor_id(), sc.name,
-                           scene::shape_name(sc.shape), res.frames.size(), res.frames.size() == 1 ? "" : "es",
-                           req.kernel_only ? "bare kernels" : "SystemC",
-                           req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
+  r.headline =
+      fmt::format("{} on scene '{}' ({}): {} frame access{}, {}, {}", params.sensor_id(), sc.name,
+                  scene::shape_name(sc.shape), res.frames.size(), res.frames.size() == 1 ? "" : "es",
+                  !req.kernel_only              ? "SystemC"
+                  : res.thread_cpu_s.size() > 1 ? fmt::format("bare kernels on {} threads", res.thread_cpu_s.size())
+                                                : "bare kernels",
+                  req.noise_free ? "noise-free" : fmt::format("noise seed {}", req.seed));
   r.frame_label = "frame access";
   set_timing(r, gt, phases_json(run), res.frames.front().cycles, run.frame_time_s(), cfg.timing.beam_positions,
              rec.timing_matches);
@@ -334,7 +340,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_conventional_simulate_entry() {
-  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false, true, true};
+  static const SimulateEntry e{"ls-conventional", &simulate_ls_conventional, false, false, true, true, true};
   return e;
 }
 

@@ -264,7 +264,7 @@ SimulationResult simulate_ls_demodulation(const SimulationRequest& req, const Pa
 }  // namespace
 
 const SimulateEntry& ls_demodulation_simulate_entry() {
-  static const SimulateEntry e{"ls-demodulation", &simulate_ls_demodulation, true, false, false, true};
+  static const SimulateEntry e{"ls-demodulation", &simulate_ls_demodulation, true, false, false, true, false};
   return e;
 }
 

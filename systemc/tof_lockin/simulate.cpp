@@ -352,7 +352,7 @@ SimulationResult simulate_tof_lockin(const SimulationRequest& req, const ParamSe
 }  // namespace
 
 const SimulateEntry& tof_lockin_simulate_entry() {
-  static const SimulateEntry e{"tof-lockin", &simulate_tof_lockin, true, true, false, true};
+  static const SimulateEntry e{"tof-lockin", &simulate_tof_lockin, true, true, false, true, false};
   return e;
 }
 

@@ -341,7 +341,7 @@ SimulationResult simulate_tof_spad(const SimulationRequest& req, const ParamSet&
 }  // namespace
 
 const SimulateEntry& tof_spad_simulate_entry() {
-  static const SimulateEntry e{"tof-spad", &simulate_tof_spad, true, false, false, true};
+  static const SimulateEntry e{"tof-spad", &simulate_tof_spad, true, false, false, true, false};
   return e;
 }
 

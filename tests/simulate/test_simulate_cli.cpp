@@ -127,3 +127,36 @@ TEST(SimulateCommand, TickingEqualsEventSkippingEndToEnd) {
   EXPECT_EQ(slurp(dir + "/a/points.csv"), slurp(dir + "/d/points.csv"));
   fs::remove_all(dir);
 }
+
+TEST(SimulateCommand, ThreadsGiveTheSameFilesAndAreCheckedPerSensor) {
+  // --threads N gives each kernel thread consecutive frame accesses: the files are byte-identical
+  // for any count (including one that does not divide the frames); summary.json says how many ran.
+  const std::string dir = make_temp_dir();
+  const std::string base = "--scene " + kScenes + "/tilted.toml --frames 7 --kernel-only --no-plots --npy --json";
+  const CommandResult one = simulate(base + " --threads 1 --out " + dir + "/one");
+  const CommandResult three = simulate(base + " --threads 3 --out " + dir + "/three");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  ASSERT_EQ(three.exit_code, 0) << three.err;
+  EXPECT_EQ(nlohmann::json::parse(one.out)["threads"].get<int>(), 1);
+  EXPECT_EQ(nlohmann::json::parse(three.out)["threads"].get<int>(), 3);
+  for (const char* f : {"range_map.npy", "confidence_map.npy", "points.npy", "frames.csv"})
+    EXPECT_EQ(slurp(dir + "/one/" + f), slurp(dir + "/three/" + f)) << f;
+  struct Case {
+    std::string command, message;
+  };
+  const std::string plane = " --scene " + kScenes + "/plane.toml --frames 2 --out " + dir + "/o";
+  const Case cases[] = {
+      {"ls-conventional --kernel-only --threads 0" + plane, "--threads"},
+      {"ls-conventional --kernel-only --threads 2000" + plane, "--threads"},
+      {"ls-conventional --threads 2" + plane, "--threads: the SystemC model runs on one thread; add --kernel-only"},
+      {"tof-spad --kernel-only --threads 2" + plane,
+       "--threads 2: the tof-spad kernel runs on one thread; allowed with ls-conventional (or 1)"},
+  };
+  for (const Case& c : cases) {
+    const CommandResult r = run_command(kDriver + " simulate " + c.command);
+    EXPECT_EQ(r.exit_code, 2) << c.command << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/o")) << c.command;
+  }
+  fs::remove_all(dir);
+}
