@@ -6,15 +6,19 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "app/cli_common.h"
 #include "app/output_dir.h"
 #include "app/resource_estimate.h"
 #include "app/simulate/npy_writer.h"
+#include "app/simulate/png_writer.h"
 #include "app/simulate/simulate_output.h"
 #include "app/simulate/simulate_report.h"
 #include "app/simulate/trace_output.h"
@@ -94,31 +98,73 @@ double cpu_with_children_s() {
 // A table of `values` numbers goes out as .npy (true) or CSV.
 bool as_npy(const SimulateOptions& opt, std::size_t values) { return opt.npy || (!opt.csv && values > kNpyMinValues); }
 
+// One output written on a thread of its own while the caller writes the others; joined (and its
+// failure rethrown) by join(), or on the way out of a failed caller.
+class Background {
+ public:
+  void start(std::function<void()> job) {
+    thread_ = std::thread([this, job = std::move(job)] {
+      try {
+        job();
+      } catch (...) {
+        failure_ = std::current_exception();
+      }
+    });
+  }
+  void join() {
+    if (thread_.joinable()) thread_.join();
+    if (failure_) std::rethrow_exception(std::exchange(failure_, nullptr));
+  }
+  ~Background() {
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::thread thread_;
+  std::exception_ptr failure_;
+};
+
 // range_map.{csv,npy}, confidence_map.{csv,npy} (where the sensor's validity rule measures one),
 // points.{csv,npy} (where the sensor has points), frames.csv, range_map.png and range_error.png;
-// returns the plot's warning ("" when none).
-std::string write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r) {
+// returns the plot's warning ("" when none). With more than one thread (--threads) the points,
+// the largest file, are made and written beside the others.
+std::string write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r, int threads) {
   const systemc::RangeMap& m = r.range_map;
   const std::size_t columns = m.column_names.size();
-  if (as_npy(opt, m.range_m.size() * columns))
-    write_npy_matrix(out.staged("range_map.npy"), m.range_m, columns);
-  else
-    out.write("range_map.csv", systemc::range_map_csv(m));
-  if (!m.confidence.empty()) {
-    if (as_npy(opt, m.confidence.size() * columns))
-      write_npy_matrix(out.staged("confidence_map.npy"), m.confidence, columns);
-    else
-      out.write("confidence_map.csv", systemc::confidence_map_csv(m));
-  }
+  // Named first, in the order the run lists them.
+  const bool map_npy = as_npy(opt, m.range_m.size() * columns);
+  const std::string map_path = out.staged(map_npy ? "range_map.npy" : "range_map.csv");
+  const bool conf_npy = as_npy(opt, m.confidence.size() * columns);
+  const std::string conf_path =
+      m.confidence.empty() ? "" : out.staged(conf_npy ? "confidence_map.npy" : "confidence_map.csv");
+  Background points;
   if (!r.points.empty()) {
-    if (as_npy(opt, r.points.values()))
-      write_npy_table(out.staged("points.npy"), r.points);
+    const bool npy = as_npy(opt, r.points.values());
+    auto job = [npy, path = out.staged(npy ? "points.npy" : "points.csv"), &r] {
+      if (npy)
+        write_npy_table(path, r.points);
+      else
+        write_file(path, systemc::table_csv(r.points));
+    };
+    if (threads > 1)
+      points.start(job);
     else
-      out.write("points.csv", systemc::table_csv(r.points));
+      job();
+  }
+  if (map_npy)
+    write_npy_matrix(map_path, m.range_m, columns);
+  else
+    write_file(map_path, systemc::range_map_csv(m));
+  if (!conf_path.empty()) {
+    if (conf_npy)
+      write_npy_matrix(conf_path, m.confidence, columns);
+    else
+      write_file(conf_path, systemc::confidence_map_csv(m));
   }
   out.write("frames.csv", r.frames_csv);
-  if (opt.no_plots) return "";
-  return render_range_map(out, m);
+  const std::string warning = opt.no_plots ? "" : render_range_map(out, m);
+  points.join();
+  return warning;
 }
 
 // summary.json (with any warnings), the trace, the commit, then the JSON (--json) or the summary
@@ -149,7 +195,7 @@ int run_and_render(const SimulateOptions& opt, const ParamSet& params, const Sim
   systemc::SimulationResult r = entry.run(simulation_request(opt), params, host);
   const auto t0 = Progress::Clock::now();
   const double c0 = cpu_with_children_s();
-  const std::string warning = write_files(opt, host.out(), r);
+  const std::string warning = write_files(opt, host.out(), r, simulation_request(opt).threads);
   // What the outputs cost (files and plot, gnuplot's CPU included), for `bench`'s output_share.
   r.summary["output_wall_time_s"] = std::chrono::duration<double>(Progress::Clock::now() - t0).count();
   r.summary["output_cpu_s"] = cpu_with_children_s() - c0;
