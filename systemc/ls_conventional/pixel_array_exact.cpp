@@ -20,6 +20,15 @@
 
 namespace rangesim::systemc {
 
+namespace {
+// Grows v to hold n, never shrinks it: on a scene where every row has its own drive the buffers
+// below are sized once a run, and a resize down then up again cleared and grew them every time.
+template <class V>
+void at_least(V& v, std::size_t n) {
+  if (v.size() < n) v.resize(std::max(n, 2 * v.size()));
+}
+}  // namespace
+
 void PixelArrayKernel::reset_exact() {
   // Two passes around the frame's uniforms (made in one vectorised loop): per run of rows with one
   // drive (every row of a plane), its shape, the rows' certain first firings and the keys of the
@@ -52,8 +61,8 @@ void PixelArrayKernel::reset_exact() {
       row.band_at = band_total + static_cast<std::size_t>(r - r0) * n;
       row.uniforms = m;
     }
-    band_k_.resize(band_total + count * n + 8);  // 8 to spare (start_run)
-    draw_rc_.resize(draws + count * static_cast<std::size_t>(m));
+    at_least(band_k_, band_total + count * n + 8);  // 8 to spare (start_run)
+    at_least(draw_rc_, draws + count * static_cast<std::size_t>(m));
     start_run(r0, r1, draw_rc_.data() + draws);
     band_total += count * n;
     draws += count * static_cast<std::size_t>(m);
@@ -206,7 +215,7 @@ void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
   if (m > 0) {
     finish_entry_ = &exact_->entry(s.threshold_V);  // for the rare draws between the cuts
     pixels_drawn_ += static_cast<long long>(m * R);
-    k_scratch_.resize(m * R);
+    at_least(k_scratch_, m * R);
     invert_run<N>(s, R, u, k_scratch_.data());
     u += m * R;
   }
