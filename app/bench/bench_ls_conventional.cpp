@@ -279,12 +279,20 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
                                        "--out",
                                        opt.scratch_dir + (plots ? "/output-share" : "/output-share-no-plots")};
       if (!plots) args.push_back("--no-plots");
+      // The run with the least CPU of kOutputRuns: the first is the bench's first `simulate`, whose
+      // binary pages and folder are cold (up to twice the CPU of the next).
+      constexpr int kOutputRuns = 3;
       std::string text;
-      const auto w0 = Clock::now();
-      const double c0 = children_cpu_now();
-      const int rc = run_self(args, text);
-      const double wall = seconds_since(w0), cpu = children_cpu_now() - c0;
-      if (rc != 0) throw std::runtime_error(fmt::format("bench: simulate for output_share exited with {}", rc));
+      double wall = 0, cpu = 0;
+      for (int i = 0; i < kOutputRuns; ++i) {
+        std::string t;
+        const auto w0 = Clock::now();
+        const double c0 = children_cpu_now();
+        const int rc = run_self(args, t);
+        const double w = seconds_since(w0), c = children_cpu_now() - c0;
+        if (rc != 0) throw std::runtime_error(fmt::format("bench: simulate for output_share exited with {}", rc));
+        if (i == 0 || c < cpu) text = t, wall = w, cpu = c;
+      }
       const json sj = json::parse(text);
       // CPU times, as every figure here: on a shared machine the wall time of file writes and of
       // gnuplot depends on everybody else's load (the wall share is in details).
