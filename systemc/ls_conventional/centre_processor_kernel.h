@@ -45,6 +45,12 @@ class CentreProcessorKernel {
     sum_ += result.found ? static_cast<std::uint32_t>(result.left + result.right) : 0U;
     count_ += result.found ? 1 : 0;
   }
+  // accumulate() of several results at once: their sum of (left + right) over the found ones and
+  // how many were found.
+  void accumulate_total(std::uint32_t sum, int found) {
+    sum_ += sum;
+    count_ += found;
+  }
   void clear() { sum_ = 0, count_ = 0, shift_ = 0, bits_ = 0; }
 
   // Inline, and the usual counts divided by constants: read for every row of every frame.

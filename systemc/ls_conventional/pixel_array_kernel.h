@@ -123,6 +123,14 @@ class PixelArrayKernel {
     last = extent_last_.data() + (sampling_ - 1);
     return true;
   }
+  // The same for every sampling of the frame access at once (the exact path makes them at the
+  // reset): row r's at sampling k (1-based) at first[r * samplings + k - 1].
+  bool extents_of_frame(const int*& first, const int*& last) const {
+    if (!lazy_bits_ || sampling_ == 0) return false;
+    first = extent_first_.data();
+    last = extent_last_.data();
+    return true;
+  }
   int rows() const { return static_cast<int>(rows_.size()); }
   int first_row() const { return first_row_; }
   int columns() const { return config_.pixel.columns; }

@@ -81,8 +81,30 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
   const std::size_t rows = centre_.size();
   pins_scratch_.resize(rows);
   extents_scratch_.resize(rows);
-  for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
-  for_each_extent([&](std::size_t r, const ActivationExtent& e) { extents_scratch_[r] = e; });
+  const int *first = nullptr, *last = nullptr;
+  if (centres_deferred_ && pixels_.extents_of_frame(first, last)) {
+    // Row by row: every sampling's search result into the centre processor (the extents of one row
+    // sit side by side), then its pins and the last sampling's extent.
+    const std::size_t N = static_cast<std::size_t>(config_.multisampling.samplings);
+    for (std::size_t r = 0; r < rows; ++r, first += N, last += N) {
+      // AddressSearchKernel::evaluate's found, left and right of each sampling, summed in registers
+      // without a branch on found (rows come and go at random near the threshold).
+      std::uint32_t sum = 0;
+      int found = 0;
+      for (std::size_t k = 0; k < N; ++k) {
+        const int hit = first[k] >= 0;
+        sum += static_cast<std::uint32_t>(hit * (first[k] + last[k]));
+        found += hit;
+      }
+      centre_[r].accumulate_total(sum, found);
+      pins_scratch_[r] = centre_[r].pins();
+      extents_scratch_[r] = ActivationExtent{first[N - 1], last[N - 1]};
+    }
+  } else {
+    for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
+    for_each_extent([&](std::size_t r, const ActivationExtent& e) { extents_scratch_[r] = e; });
+  }
+  centres_deferred_ = false;
   fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
   fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
   fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
@@ -133,7 +155,11 @@ void LsConventionalSensorKernel::step() {
   if (p.pix_reset)
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
-    for_each_extent([&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
+    const int *first = nullptr, *last = nullptr;
+    if (pixels_.extents_of_frame(first, last))
+      centres_deferred_ = true;  // finish_frame accumulates every sampling's results at once
+    else
+      for_each_extent([&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
   }
   sequencer_.advance_to(next);
   settle();

@@ -107,6 +107,10 @@ class LsConventionalSensorKernel {
   std::vector<ActivationExtent> extents_scratch_;         // .. and extents
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;
+  // Event skipping on the exact path: the searches' results go into the centre processors at the
+  // frame's end, every sampling's in one pass over the rows (finish_frame), instead of one pass a
+  // sampling; nothing reads the centres in between.
+  bool centres_deferred_ = false;
   std::vector<std::string> errors_;
   long long ticks_ = 0;
 };

@@ -131,6 +131,35 @@ TEST(LsConventionalSensorKernel, EventSkippingEqualsTicking) {
   }
 }
 
+TEST(LsConventionalSensorKernel, EventSkippingEqualsTickingWithTheSpotOnTheEdgeColumns) {
+  // The spot centred on column 0 or the last column, strong or near the threshold: activation
+  // extents that start at column 0 (found with left = 0) or end at the last, which the skipping
+  // kernel's centre processors take from the extents of every sampling at the frame's end.
+  const LsConventionalConfig c = small_config(16, 96, 4);
+  for (const double signal_V : {0.6, 0.02}) {
+    for (const bool noise : {false, true}) {
+      const rs::StimulusSource edges = [signal_V](std::uint64_t, rs::FrameStimulus& out) {
+        for (std::size_t r = 0; r < out.rows.size(); ++r) {
+          out.rows[r].signal_V = signal_V;
+          out.rows[r].background_V = 0.01;
+          out.rows[r].centre_px = r % 2 ? 0.0 : 95.0;
+        }
+      };
+      const auto ticked = run(c, options(false, noise), 4, edges);
+      const auto skipped = run(c, options(true, noise), 4, edges);
+      ASSERT_EQ(ticked.size(), skipped.size());
+      int at_zero = 0;
+      for (std::size_t f = 0; f < ticked.size(); ++f) {
+        EXPECT_TRUE(ticked[f] == skipped[f]) << "frame " << f << ", signal " << signal_V << ", noise " << noise;
+        for (const auto& e : skipped[f].extents) at_zero += e.first == 0 ? 1 : 0;
+      }
+      if (signal_V > 0.1) {
+        EXPECT_GT(at_zero, 0);  // the case this test is for happened
+      }
+    }
+  }
+}
+
 TEST(LsConventionalSensorKernel, SparsePixelsEqualDensePixels) {
   const LsConventionalConfig c = small_config(30, 96, 4);
   for (bool noise : {false, true}) {
