@@ -91,26 +91,42 @@ struct Reconstruction {
 
 // One row of one frame access: its truth, its centre and what follows: the range counts when enough
 // of the samplings found the spot and its centre lies inside the edge margin (cfg.validity).
+// A row has a points.csv line where the stripe is on it or its centre processor found a centre.
+bool listed(bool visible, bool detected) { return visible || detected; }
+
+// The share of the samplings that found the spot on a row.
+double detecting_fraction(const CentreProcessorPins& p, int samplings) {
+  return static_cast<double>(p.count) / samplings;
+}
+
+// A row's errors against its truth, where the stripe is visible and the centre valid (else NaN).
+struct RowErrors {
+  double px = NAN, m = NAN;
+};
+RowErrors row_errors(bool visible, bool valid, double centre_px, double truth_centre_px, double range_m,
+                     double truth_range_m) {
+  if (!(visible && valid)) return {};
+  return {centre_px - truth_centre_px, range_m - truth_range_m};
+}
+
 struct Point {
   scene::RowTruth t;
   CentreProcessorPins p;
   double fraction = 0, range = NAN, err_px = NAN, err_m = NAN;
   bool valid = false;
-  bool listed() const { return t.visible || p.valid; }  // has a points.csv line
+  bool listed() const { return systemc::listed(t.visible, p.valid); }
 };
 
 Point point_of(const scene::SceneOptics& optics, const FrameResult& fr, int b, int r, const LsConventionalConfig& cfg) {
   Point x;
   x.t = optics.truth(b, r);
   x.p = fr.rows[static_cast<std::size_t>(r)];
-  x.fraction = static_cast<double>(x.p.count) / cfg.multisampling.samplings;
+  x.fraction = detecting_fraction(x.p, cfg.multisampling.samplings);
   x.valid = centre_valid(x.p.count, cfg.multisampling.samplings, x.p.centre_px(), cfg.pixel.columns,
                          cfg.validity.min_detecting_fraction, cfg.validity.edge_margin_px);
   if (x.valid) x.range = optics.range_from_centre_m(b, x.p.centre_px());
-  if (x.t.visible && x.valid) {
-    x.err_px = x.p.centre_px() - x.t.centre_px;
-    x.err_m = x.range - x.t.range_m;
-  }
+  const RowErrors e = row_errors(x.t.visible, x.valid, x.p.centre_px(), x.t.centre_px, x.range, x.t.range_m);
+  x.err_px = e.px, x.err_m = e.m;
   return x;
 }
 
@@ -167,14 +183,13 @@ void produce_points(const SensorRunResult& res, const PointCells& cells, const s
     for (int r = 0; r < cfg.pixel.rows; ++r, ++i) {
       const CentreProcessorPins& p = fr.rows[static_cast<std::size_t>(r)];
       const bool visible = cells.visible[i], valid = cells.valid[i];
-      if (!visible && !p.valid) continue;  // Point::listed()
-      const double centre = p.valid ? p.centre_px() : NAN;
-      const bool both = visible && valid;
-      block.insert(block.end(), {frame, b, static_cast<double>(r), visible ? 1.0 : 0.0, cells.truth_centre_px[i],
-                                 cells.truth_range_m[i], p.valid ? 1.0 : 0.0, centre, cells.range_m[i],
-                                 both ? p.centre_px() - cells.truth_centre_px[i] : NAN,
-                                 both ? cells.range_m[i] - cells.truth_range_m[i] : NAN, valid ? 1.0 : 0.0,
-                                 static_cast<double>(p.count) / cfg.multisampling.samplings});
+      if (!listed(visible, p.valid)) continue;
+      const RowErrors e =
+          row_errors(visible, valid, p.centre_px(), cells.truth_centre_px[i], cells.range_m[i], cells.truth_range_m[i]);
+      block.insert(block.end(),
+                   {frame, b, static_cast<double>(r), visible ? 1.0 : 0.0, cells.truth_centre_px[i],
+                    cells.truth_range_m[i], p.valid ? 1.0 : 0.0, p.valid ? p.centre_px() : NAN, cells.range_m[i], e.px,
+                    e.m, valid ? 1.0 : 0.0, detecting_fraction(p, cfg.multisampling.samplings)});
       if (block.size() == kBlockRows * kColumns) {
         sink(block.data(), kBlockRows);
         block.clear();
