@@ -103,11 +103,19 @@ void table_bytes(const systemc::Table& t, const double* cells, std::size_t n, ch
 // 3 KB) the file system's work per call cost several times the copying (9.3 against 2.5 ms for
 // 9.6 MB, measured). Small pieces gather in a 256 KB buffer; a large one goes out as it is (stdio
 // would copy it into its buffer first).
+//
+// The file's blocks are reserved in one call before the writes (`bytes`, the size it will have):
+// without it ext4 reserves and maps them page by page as the writes arrive (9.6 MB written in
+// 256 KB calls and renamed over the previous file: 3.6 and 4.2 against 2.7 and 3.1 ms of CPU,
+// medians of 15 in two runs, measured). The reservation does not change the file's size, so a file
+// written short shows no zeros; where the file system cannot reserve, the writes go on without it.
 class File {
  public:
-  explicit File(const std::string& path) : path_(path), fd_(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666)) {
+  File(const std::string& path, std::size_t bytes)
+      : path_(path), fd_(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666)) {
     if (fd_ < 0) fail();
     buffer_.reserve(kBuffer);
+    if (bytes > 0) (void)::fallocate(fd_, FALLOC_FL_KEEP_SIZE, 0, static_cast<off_t>(bytes));
   }
   ~File() {
     if (fd_ >= 0) ::close(fd_);
@@ -154,7 +162,7 @@ class File {
 
 void write_npy_matrix(const std::string& path, const std::vector<std::vector<double>>& rows, std::size_t columns) {
   const std::string h = matrix_header(rows, columns);
-  File f(path);
+  File f(path, h.size() + rows.size() * columns * 8);
   f.put(h.data(), h.size());
   for (const auto& r : rows) f.put(r.data(), columns * 8);
   f.close();
@@ -162,12 +170,12 @@ void write_npy_matrix(const std::string& path, const std::vector<std::vector<dou
 
 void write_npy_table(const std::string& path, const systemc::Table& t) {
   const std::string h = table_header(t);
-  File f(path);
+  const std::size_t R = record_bytes(t);
+  File f(path, h.size() + t.rows() * R);
   f.put(h.data(), h.size());
   // Whole rows at a time, about 256 KB of cells (180 KB of records for 13 columns) a piece: the
   // converted records never exist whole in memory.
   const std::size_t C = std::max<std::size_t>(t.columns.size(), 1), chunk_rows = std::max<std::size_t>(32768 / C, 1);
-  const std::size_t R = record_bytes(t);
   std::vector<char> buf(chunk_rows * R);
   std::size_t written = 0;
   t.for_each_block([&](const double* cells, std::size_t rows) {

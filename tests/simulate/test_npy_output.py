@@ -30,6 +30,20 @@ def text(v):
     return "" if not np.isfinite(v) else "%.9g" % v
 
 
+def check_exact_size(path, arr):
+    """The file is its header and the array's bytes, nothing more: numpy.load would not notice
+    bytes after the array (the writer reserves the file's blocks before writing, app/simulate/npy_writer.cpp)."""
+    with open(path, "rb") as f:
+        major, _ = np.lib.format.read_magic(f)
+        if major == 1:
+            np.lib.format.read_array_header_1_0(f)
+        else:
+            np.lib.format.read_array_header_2_0(f)
+        start = f.tell()
+    size = os.path.getsize(path)
+    assert size == start + arr.nbytes, f"{path}: {size} bytes, header {start} + array {arr.nbytes}"
+
+
 def check_equal(csv_rows, got, what):
     assert len(csv_rows) == len(got), f"{what}: {len(csv_rows)} CSV lines, {len(got)} .npy rows"
     for i, (a, b) in enumerate(zip(csv_rows, got)):
@@ -54,6 +68,7 @@ def main():
             assert m.dtype == np.float64 and m.ndim == 2, f"{sensor}: range_map.npy {m.dtype} {m.shape}"
             assert m.shape == (len(rows) - 1, len(rows[0]) - 1), f"{sensor}: shape {m.shape}"
             assert np.isfinite(m).any(), f"{sensor}: the map has no range"
+            check_exact_size(os.path.join(a, "range_map.npy"), m)
             nan_cells += int(np.isnan(m).sum())
             check_equal([r[1:] for r in rows[1:]], [[text(v) for v in line] for line in m], sensor + " range_map")
             points_csv = os.path.join(b, "points.csv")
@@ -64,6 +79,7 @@ def main():
             with open(points_csv) as f:
                 prow = list(csv.reader(f))
             p = np.load(os.path.join(a, "points.npy"))
+            check_exact_size(os.path.join(a, "points.npy"), p)
             assert list(p.dtype.names) == prow[0], f"{sensor}: fields {p.dtype.names} against {prow[0]}"
             ints = [n for n in p.dtype.names if p.dtype[n].kind in "ib"]
             assert p.dtype["frame"] == np.int32 and p.dtype["row"] == np.int32, f"{sensor}: index fields {p.dtype}"
