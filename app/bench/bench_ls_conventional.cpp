@@ -244,21 +244,28 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
   rt["maps_per_s"] = 1.0 / critical_s;
   out["realtime_factor"] = rt;
 
-  // ---- the uncertain-draw floor ----
-  progress("ls-conventional: uncertain-draw floor");
+  // ---- the uncertain-draw floor, paired with the map ----
+  // Map and floor alternate, round by round, the fastest of each kept: on a shared virtual machine
+  // the speed moves by half from minute to minute, and a ratio of two figures timed minutes apart
+  // measures that drift as much as the code.
+  progress(fmt::format("ls-conventional: uncertain-draw floor, paired with the map ({} rounds)", kMapRuns));
   const std::vector<double> uncertain = uncertain_samplings(s, map_frames);
-  // The loop takes about a millisecond: repeat it, keep the fastest.
-  double best = 1e30;
+  double best = 1e30, map_best = 1e30;
   long long act = 0;
-  for (int i = 0; i < 20; ++i) {
-    const double c0 = cpu_now();
-    act = floor_loop(uncertain);
-    best = std::min(best, cpu_now() - c0);
+  for (int i = 0; i < kMapRuns; ++i) {
+    map_best = std::min(map_best, run_kernel(s, true, true, map_frames).cpu_s);
+    // The loop takes about a millisecond: twice a round.
+    for (int k = 0; k < 2; ++k) {
+      const double c0 = cpu_now();
+      act = floor_loop(uncertain);
+      best = std::min(best, cpu_now() - c0);
+    }
   }
   best = std::max(best, 1e-9);
-  json tj = ratio(sparse.cpu_s / best, "<= 4", sparse.cpu_s / best <= 4);
+  json tj = ratio(map_best / best, "<= 4", map_best / best <= 4);
   tj["floor_s"] = best;
-  tj["model_s"] = sparse.cpu_s;
+  tj["model_s"] = map_best;
+  tj["rounds"] = kMapRuns;
   tj["uncertain_samplings"] = static_cast<long long>(uncertain.size());
   tj["lit_pixel_samplings"] = sparse.pixels_simulated * s.cfg.multisampling.samplings;
   tj["floor_activations"] = act;
