@@ -47,23 +47,29 @@ std::ostream& operator<<(std::ostream& os, const ActivationRow& row) { return os
 // ---- AddressSearchKernel ----
 
 namespace {
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("AddressSearchKernel: " + what);
+// The message is made only when the check fails: a sensor builds one kernel a row (365 on the
+// preset), and making every message up front was most of a kernel's construction.
+template <class Message>
+void require(bool ok, const Message& what) {
+  if (!ok) throw std::invalid_argument("AddressSearchKernel: " + what());
 }
 }  // namespace
 
 AddressSearchKernel::AddressSearchKernel(const AddressSearchConfig& config, int search_cycles)
     : config_(config), search_cycles_(search_cycles), stream_bits_(2 * config.address_bits) {
-  require(config.columns >= 1, "columns must be >= 1, got " + std::to_string(config.columns));
+  require(config.columns >= 1, [&] { return "columns must be >= 1, got " + std::to_string(config.columns); });
   // 31: the two addresses share one 64-bit shift register here (the RTL has no such limit).
   require(config.address_bits >= 1 && config.address_bits <= 31,
-          "address_bits must be in [1, 31], got " + std::to_string(config.address_bits));
-  require((std::int64_t{1} << config.address_bits) >= config.columns,
-          "address_bits = " + std::to_string(config.address_bits) + " cannot address " +
-              std::to_string(config.columns) + " columns");
-  require(config.addresses_per_sampling == 2, "addresses_per_sampling must be 2 (left and right edge), got " +
-                                                  std::to_string(config.addresses_per_sampling));
-  require(search_cycles >= 1, "search_cycles must be >= 1, got " + std::to_string(search_cycles));
+          [&] { return "address_bits must be in [1, 31], got " + std::to_string(config.address_bits); });
+  require((std::int64_t{1} << config.address_bits) >= config.columns, [&] {
+    return "address_bits = " + std::to_string(config.address_bits) + " cannot address " +
+           std::to_string(config.columns) + " columns";
+  });
+  require(config.addresses_per_sampling == 2, [&] {
+    return "addresses_per_sampling must be 2 (left and right edge), got " +
+           std::to_string(config.addresses_per_sampling);
+  });
+  require(search_cycles >= 1, [&] { return "search_cycles must be >= 1, got " + std::to_string(search_cycles); });
   act_ = ActivationRow(config.columns);
 }
 

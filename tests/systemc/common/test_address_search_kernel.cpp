@@ -157,12 +157,28 @@ TEST(AddressSearchKernel, StartWhileBusyIsIgnoredAndResetClears) {
   EXPECT_EQ(k.run(b).left, 9);
 }
 
+namespace {
+// The message (made only when a check fails) names the parameter and the value.
+std::string rejection(const AddressSearchConfig& c, int search_cycles) {
+  try {
+    rs::AddressSearchKernel k(c, search_cycles);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
 TEST(AddressSearchKernel, RejectsUnbuildableParameters) {
-  EXPECT_THROW(rs::AddressSearchKernel(AddressSearchConfig{375, 8, 2}, 2), std::invalid_argument);
-  EXPECT_THROW(rs::AddressSearchKernel(AddressSearchConfig{375, 9, 3}, 2), std::invalid_argument);
-  EXPECT_THROW(rs::AddressSearchKernel(AddressSearchConfig{375, 9, 2}, 0), std::invalid_argument);
-  EXPECT_THROW(rs::AddressSearchKernel(AddressSearchConfig{0, 9, 2}, 2), std::invalid_argument);
-  EXPECT_NO_THROW(rs::AddressSearchKernel(AddressSearchConfig{512, 9, 2}, 2));
+  EXPECT_EQ(rejection(AddressSearchConfig{375, 8, 2}, 2),
+            "AddressSearchKernel: address_bits = 8 cannot address 375 columns");
+  EXPECT_EQ(rejection(AddressSearchConfig{375, 9, 3}, 2),
+            "AddressSearchKernel: addresses_per_sampling must be 2 (left and right edge), got 3");
+  EXPECT_EQ(rejection(AddressSearchConfig{375, 9, 2}, 0), "AddressSearchKernel: search_cycles must be >= 1, got 0");
+  EXPECT_EQ(rejection(AddressSearchConfig{0, 9, 2}, 2), "AddressSearchKernel: columns must be >= 1, got 0");
+  EXPECT_EQ(rejection(AddressSearchConfig{375, 32, 2}, 2),
+            "AddressSearchKernel: address_bits must be in [1, 31], got 32");
+  EXPECT_EQ(rejection(AddressSearchConfig{512, 9, 2}, 2), "");
 }
 
 TEST(ActivationRow, PacksBitsAcrossWords) {
