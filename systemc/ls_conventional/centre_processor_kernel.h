@@ -11,6 +11,7 @@
 // nearest with ties up: centre_q = floor((sum * 2^8 + n) / (2 n)); centre_px = centre_q / 256.
 // The exact pair (sum, n) is an output too, so tests can require sum / (2 n) == the golden double.
 // The accumulator is cleared in every cycle with clear (the sequencer's reset phase).
+#include <array>
 #include <cstdint>
 
 #include "systemc/common/address_search_kernel.h"
@@ -33,6 +34,17 @@ struct CentreProcessorPins {
   bool operator!=(const CentreProcessorPins& o) const { return !(*this == o); }
 };
 
+// floor(x / (2 n)) as the high half of x m_n for the counts a sensor can have (samplings <= 64):
+// m_n = floor((2^64 - 1) / (2 n)) + 1 exceeds 2^64 / (2 n) by e / (2 n) with 0 <= e <= 2 n <= 128, so
+// x m_n / 2^64 exceeds x / (2 n) by under 1 / (2 n) for every x < 2^56 (here x < 2^41), which
+// leaves the floor unchanged. m_0 = 0.
+inline constexpr int kReciprocals = 65;
+inline constexpr std::array<std::uint64_t, kReciprocals> kReciprocal = [] {
+  std::array<std::uint64_t, kReciprocals> m{};
+  for (int n = 1; n < kReciprocals; ++n) m[n] = ~std::uint64_t{0} / (2 * static_cast<std::uint64_t>(n)) + 1;
+  return m;
+}();
+
 class CentreProcessorKernel {
  public:
   explicit CentreProcessorKernel(int address_bits);
@@ -53,21 +65,19 @@ class CentreProcessorKernel {
   }
   void clear() { sum_ = 0, count_ = 0, shift_ = 0, bits_ = 0; }
 
-  // Inline, and the usual counts divided by constants: read for every row of every frame.
+  // Inline and without a branch on the count (read for every row of every frame; near the
+  // threshold the count changes at random from row to row, and a switch on it mispredicted).
   CentreProcessorPins pins() const {
     CentreProcessorPins p;
     p.sum = sum_;
     p.count = count_;
     p.valid = count_ > 0;
-    const std::uint64_t num = (static_cast<std::uint64_t>(sum_) << kCentreFractionBits) + static_cast<std::uint64_t>(count_);
-    switch (count_) {  // floor((sum 2^8 + n) / (2 n))
-      case 0: break;
-      case 1: p.centre_q = static_cast<std::uint32_t>(num / 2); break;
-      case 2: p.centre_q = static_cast<std::uint32_t>(num / 4); break;
-      case 3: p.centre_q = static_cast<std::uint32_t>(num / 6); break;
-      case 4: p.centre_q = static_cast<std::uint32_t>(num / 8); break;
-      default: p.centre_q = static_cast<std::uint32_t>(num / (2 * static_cast<std::uint64_t>(count_)));
-    }
+    const std::uint64_t num =
+        (static_cast<std::uint64_t>(sum_) << kCentreFractionBits) + static_cast<std::uint64_t>(count_);
+    // floor((sum 2^8 + n) / (2 n)); 0 when n = 0 (the table's first entry)
+    p.centre_q = static_cast<std::uint32_t>(count_ < kReciprocals
+                                                ? (static_cast<unsigned __int128>(num) * kReciprocal[count_]) >> 64
+                                                : num / (2 * static_cast<std::uint64_t>(count_)));
     return p;
   }
   int address_bits() const { return address_bits_; }

@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "golden/ls_conventional/frame_timing.h"
 #include "golden/ls_conventional/multisampling.h"
@@ -354,6 +357,27 @@ TEST(LsConventionalSensorKernel, FrameAccessesOnThreadsEqualOneThread) {
           EXPECT_EQ(last_progress, run.frames);
         }
       }
+}
+
+// The centre without a division (a reciprocal a count, systemc/ls_conventional/centre_processor_kernel.h)
+// equals the integer division floor((sum 2^8 + n) / (2 n)) for every count a sensor can have and
+// beyond the table (n > 64): random sums, runs of consecutive ones (every remainder) and the largest.
+TEST(CentreProcessorKernel, CentreEqualsIntegerDivisionForEveryCount) {
+  std::mt19937_64 rng(11);
+  for (int n = 0; n <= 70; ++n) {
+    std::vector<std::uint32_t> sums;
+    for (std::uint32_t s = 0; s < 300; ++s) sums.insert(sums.end(), {s, 0xFFFFFFFFU - s, 0x80000000U + s});
+    for (int i = 0; i < 3000; ++i) sums.push_back(static_cast<std::uint32_t>(rng()));
+    for (const std::uint32_t sum : sums) {
+      rs::CentreProcessorKernel c(9);
+      c.accumulate_total(sum, n);
+      const rs::CentreProcessorPins p = c.pins();
+      const std::uint64_t num = (std::uint64_t{sum} << 8) + static_cast<std::uint64_t>(n);
+      const std::uint32_t want = n == 0 ? 0U : static_cast<std::uint32_t>(num / (2 * static_cast<std::uint64_t>(n)));
+      ASSERT_EQ(p.centre_q, want) << "n " << n << " sum " << sum;
+      ASSERT_EQ(p.valid, n > 0);
+    }
+  }
 }
 
 TEST(CentreProcessorKernel, BitSerialDecodeEqualsClosedFormAndRoundsToNearest) {
