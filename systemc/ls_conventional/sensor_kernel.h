@@ -93,6 +93,7 @@ class LsConventionalSensorKernel {
   void settle();  // pixel array follows the sequencer's pins
   void account(const MultisamplingSequencerPins& p, long long cycles);
   void finish_frame(const MultisamplingSequencerPins& p);  // in the frame_done cycle
+  void prepare_next_result();                              // finish_frame: the next result's memory
   template <class F>
   void for_each_extent(F f) const;  // f(r, extent of row r at the current sampling), every row
 
@@ -105,6 +106,8 @@ class LsConventionalSensorKernel {
   std::vector<AddressSearchPins> search_pins_;            // scratch: pins of the ending cycle
   std::vector<CentreProcessorPins> pins_scratch_;         // scratch: finish_frame's rows ..
   std::vector<ActivationExtent> extents_scratch_;         // .. and extents
+  std::vector<CentreProcessorPins> next_rows_;            // the next frame result's rows ..
+  std::vector<ActivationExtent> next_extents_;            // .. and extents (prepare_next_result)
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;
   // Event skipping on the exact path: the searches' results go into the centre processors at the
