@@ -78,7 +78,10 @@ void AddressSearchKernel::tick(bool rst, bool start, const ActivationRow& act) {
   if (rst) {
     state_ = State::Idle;
     count_ = 0;
-    act_ = ActivationRow(config_.columns);
+    if (act_.columns() == config_.columns)
+      act_.clear();  // in place: a sensor resets a kernel a row at every jump to a frame access
+    else
+      act_ = ActivationRow(config_.columns);
     shift_ = 0;
     return;
   }
