@@ -23,6 +23,7 @@ struct SharedEntry {
   double threshold_V = 0;
   ActivationBounds b;
   std::shared_ptr<const ActivationTable> table;
+  std::shared_ptr<const golden::ActivationTable> exact;
 };
 
 bool same_model(const ActivationModel& a, const ActivationModel& b) {
@@ -54,7 +55,7 @@ void publish(const ActivationModel& m, const ThresholdEntry& e) {
   }
   std::vector<SharedEntry>& v = shared_entries();
   if (v.size() >= kSharedEntries) v.erase(v.begin());
-  v.push_back({m, e.threshold_V, e.b, e.table});
+  v.push_back({m, e.threshold_V, e.b, e.table, e.exact});
 }
 }  // namespace
 
@@ -62,10 +63,12 @@ ExactActivation::ExactActivation(const ActivationModel& model) : m_(model) {
   sigma_V_ = std::hypot(m_.ktc_V, m_.read_V);
 }
 
-void ExactActivation::probability(double lambda, double threshold_V, double& p, double& q) const {
-  const double t_e = threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
+void ExactActivation::probability(double lambda, const ThresholdEntry& e, double& p, double& q) const {
+  const double t_e = e.threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
   if (m_.shot) {
-    const golden::ActivationProbability a = golden::activation_probability(std::max(lambda, 0.0), t_e, s_e);
+    const double mean_e = std::max(lambda, 0.0);
+    const golden::ActivationProbability a =
+        e.exact ? (*e.exact)(mean_e) : golden::activation_probability(mean_e, t_e, s_e);
     p = a.p, q = a.q;
     return;
   }
@@ -89,30 +92,35 @@ ThresholdEntry& ExactActivation::entry(double threshold_V) {
     if (const SharedEntry* s = find_shared(m_, threshold_V)) {
       e.b = s->b;
       e.table = s->table;
+      e.exact = s->exact;
       known = true;
     }
   }
   if (!known) {
-    e.b = compute_bounds(threshold_V);
+    if (m_.shot && sigma_V_ > 0)
+      e.exact = std::make_shared<const golden::ActivationTable>(threshold_V / m_.gain * m_.electrons_per_V,
+                                                                sigma_V_ * m_.electrons_per_V);
+    e.b = compute_bounds(e);
     publish(m_, e);
   }
   memo_.push_back(std::move(e));
   return memo_.back();
 }
 
-ActivationBounds ExactActivation::compute_bounds(double threshold_V) const {
+ActivationBounds ExactActivation::compute_bounds(const ThresholdEntry& e) const {
   // Bisection on lambda, started from the Gaussian picture (transition width s = sqrt(t + sigma^2))
   // and widened until the bracket holds; each end kept on its certain side, so rounding only
   // narrows the certain ranges.
+  const double threshold_V = e.threshold_V;
   const double t = threshold_V / m_.gain * m_.electrons_per_V, s_e = sigma_V_ * m_.electrons_per_V;
   auto p_of = [&](double l) {
     double p, q;
-    probability(l, threshold_V, p, q);
+    probability(l, e, p, q);
     return p;
   };
   auto q_of = [&](double l) {
     double p, q;
-    probability(l, threshold_V, p, q);
+    probability(l, e, p, q);
     return q;
   };
   ActivationBounds b;
@@ -206,7 +214,7 @@ bool ExactActivation::below(double u, double lambda, ThresholdEntry& e) {
     if (u >= v + d) return false;
   }
   double p, q;
-  probability(lambda, e.threshold_V, p, q);
+  probability(lambda, e, p, q);
   ++exact_evaluations_;
   if (!e.table && ++e.exact_evaluations >= kTableAfter) {
     {

@@ -44,6 +44,7 @@
 
 #include <pcg_random.hpp>
 
+#include "golden/common/activation_cdf.h"
 #include "systemc/ls_conventional/activation_table.h"
 
 namespace rangesim::systemc {
@@ -82,6 +83,12 @@ struct ThresholdEntry {
   ActivationBounds b;
   std::shared_ptr<const ActivationTable> table;  // made after kTableAfter exact evaluations, or shared
   int exact_evaluations = 0;               // golden::activation_probability calls at this threshold
+  // f itself, bit for bit golden::activation_probability with the band's Phi looked up (shot and
+  // static noise on; else null): an exact evaluation sums ~1,100 Poisson terms at the preset's
+  // threshold, and each one's erfc made it 35 us, ten times a map between the table's cuts and
+  // about thirty times in the bounds' bisection. Made with the entry (one erfc per integer of the
+  // band, about two evaluations' worth).
+  std::shared_ptr<const golden::ActivationTable> exact;
 };
 
 class ExactActivation {
@@ -96,8 +103,8 @@ class ExactActivation {
   // same model (the next map, another row band's thread, a Monte Carlo trial) takes them from there.
   ThresholdEntry& entry(double threshold_V);
   const ActivationBounds& bounds(double threshold_V) { return entry(threshold_V).b; }
-  // f(lambda) and 1 - f(lambda) at threshold theta, the pixel's exact activation probability.
-  void probability(double lambda_e, double threshold_V, double& p, double& q) const;
+  // f(lambda) and 1 - f(lambda) at the entry's threshold, the pixel's exact activation probability.
+  void probability(double lambda_e, const ThresholdEntry& e, double& p, double& q) const;
 
   // Mean electron count by sampling k of the pixel (the quantity the bounds are in).
   double lambda_e(const PixelDrive& d, int k) const;
@@ -130,7 +137,7 @@ class ExactActivation {
   long long exact_evaluations() const { return exact_evaluations_; }
 
  private:
-  ActivationBounds compute_bounds(double threshold_V) const;
+  ActivationBounds compute_bounds(const ThresholdEntry& e) const;
   bool fires(double n_e, double offset_V, double read_V, double threshold_V) const;
 
   ActivationModel m_;

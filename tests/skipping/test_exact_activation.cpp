@@ -22,6 +22,7 @@
 #include "app/bench/bench_stats.h"
 #include "core/ls_conventional/config.h"
 #include "core/preset.h"
+#include "golden/common/activation_cdf.h"
 #include "golden/common/pixel.h"
 #include "golden/common/quantiser.h"
 #include "scene/scene.h"
@@ -69,6 +70,36 @@ TEST(ExactActivation, CertainOutcomesBoundedByIndependentSum) {
       EXPECT_LT(q, rs::kCertainTail) << "shot " << k.shot << " theta " << theta;
       // Not needlessly wide: the uncertain band is within 25 transition widths.
       EXPECT_LT(b.always_from_e - b.never_upto_e, 25 * std::sqrt(t + s * s) + 25) << theta;
+    }
+  }
+}
+
+// The sampler's exact evaluations (the bounds' bisection, the draws between the table's cuts) look
+// the band's Phi up in the entry's golden::ActivationTable: still golden::activation_probability
+// bit for bit, at the threshold's own t and s, from below the never-bound to past the always-bound.
+TEST(ExactActivation, ExactEvaluationsAreGoldensBitForBit) {
+  const LsConventionalConfig c = preset();
+  const double e = rangesim::golden::electrons_per_volt(c.pixel);
+  struct Case {
+    bool shot, ktc, read;
+  };
+  for (const Case& k : {Case{true, true, true}, Case{true, true, false}, Case{true, false, false}}) {
+    rs::ExactActivation ex(model_of(c, k.shot, k.ktc, k.read));
+    const double s =
+        std::hypot(k.ktc ? rangesim::golden::ktc_noise_V(c.pixel) : 0.0, k.read ? c.pixel.read_noise_V : 0.0) * e;
+    for (double theta : {0.0011, 0.011, 0.0201, 0.251}) {
+      const rs::ThresholdEntry& entry = ex.entry(theta);
+      EXPECT_EQ(entry.exact != nullptr, s > 0) << theta;  // no static noise: nothing to tabulate
+      const double t = theta / c.pixel.source_follower_gain * e;
+      const double hi = std::min(entry.b.always_from_e, 4 * t + 1000);
+      for (int i = 0; i <= 400; ++i) {
+        const double lambda = hi * 1.2 * i / 400;
+        double p = 0, q = 0;
+        ex.probability(lambda, entry, p, q);
+        const rangesim::golden::ActivationProbability g = rangesim::golden::activation_probability(lambda, t, s);
+        ASSERT_EQ(p, g.p) << "theta " << theta << " lambda " << lambda << " s " << s;
+        ASSERT_EQ(q, g.q) << "theta " << theta << " lambda " << lambda << " s " << s;
+      }
     }
   }
 }
