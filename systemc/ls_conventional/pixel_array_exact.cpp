@@ -35,8 +35,11 @@ void PixelArrayKernel::reset_exact() {
   // uniforms their random ones need; then per run the rows' draws and extents.
   const int N = config_.multisampling.samplings;
   shapes_used_ = 0;
-  extent_first_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
-  extent_last_.resize(static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+  // Every row adds at most one extent pattern (those of rows found in a shape's memo are shared).
+  row_pattern_.resize(static_cast<std::size_t>(rows()));
+  at_least(pattern_first_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+  at_least(pattern_last_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+  patterns_ = 0;
   std::size_t band_total = 0, draws = 0;
   for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
     // The run: the rows with r0's drive. Without certain intervals every row makes its own shape
@@ -231,13 +234,10 @@ void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
     }
     if (m == 0 && s.one_by_one && key != RowShape::kNoPattern)  // drawn in start_run
       for (std::size_t j = 0; j < n; ++j) key |= static_cast<std::uint64_t>(fk[j]) << (8 * j);
-    if (key != RowShape::kNoPattern) {  // the shape's memo (fill_extents), here where N is a constant
+    if (key != RowShape::kNoPattern) {  // the shape's memo (fill_extents): the row shares its pattern
       const std::size_t slot = RowShape::memo_slot(key);
       if (s.memo_key[slot] == key) {
-        const std::size_t samplings = N > 0 ? N : static_cast<std::size_t>(config_.multisampling.samplings);
-        const std::size_t at = static_cast<std::size_t>(r) * samplings, from = slot * samplings;
-        std::memcpy(extent_first_.data() + at, s.memo_first.data() + from, samplings * sizeof(int));
-        std::memcpy(extent_last_.data() + at, s.memo_last.data() + from, samplings * sizeof(int));
+        row_pattern_[static_cast<std::size_t>(r)] = s.memo_pattern[slot];
         continue;
       }
     }
@@ -303,8 +303,6 @@ int PixelArrayKernel::make_shape(int r, const RowIllumination& in, RowState& row
   s.cut.clear();
   s.by_uniform = false;
   s.memo_key.fill(RowShape::kNoPattern);
-  s.memo_first.resize(RowShape::kMemo * static_cast<std::size_t>(N));
-  s.memo_last.resize(RowShape::kMemo * static_cast<std::size_t>(N));
   if (s.last >= s.first) {
     ThresholdEntry& e = exact_->entry(s.threshold_V);
     if (!intervals_) {

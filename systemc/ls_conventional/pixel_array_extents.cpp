@@ -87,17 +87,6 @@ bool widen_by_band(int n, int* __restrict first, int* __restrict last, const int
   }
   return hole;
 }
-// A row's N extents copied: the usual counts with a constant size (a call to memcpy for 16 bytes
-// costs more than the rest of a memo hit).
-inline void copy_extents(int* to, const int* from, int n) {
-  if (n == 4) {
-    std::memcpy(to, from, 4 * sizeof(int));
-  } else if (n == 8) {
-    std::memcpy(to, from, 8 * sizeof(int));
-  } else {
-    std::copy_n(from, n, to);
-  }
-}
 }  // namespace
 
 void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, std::uint64_t key) {
@@ -106,14 +95,16 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
   // held range that has not fired (its draw fell in a 2^-56 tail of a certain outcome) punches a
   // hole that may be at the range's edge: such a row takes its extents from its bits.
   // The extents are a function of the band's first firings, and the rows of a shape mostly repeat a
-  // few patterns of them (two rows in three on the plane map repeat the previous row's): a small
-  // memo per shape keeps them, keyed by the packed pattern (n << 56 | fk[j] << 8 j, n < 8 band
-  // pixels; kNoPattern: none), which finish_run assembles as it draws and looks up before it calls
-  // this for a pattern the memo does not hold.
+  // few patterns of them (two rows in three on the plane map repeat the previous row's). Each call
+  // makes the row a new extent pattern of the frame access (extent_patterns), and a small memo per
+  // shape keeps it, keyed by the packed first firings (n << 56 | fk[j] << 8 j, n < 8 band pixels;
+  // kNoPattern: none), which finish_run assembles as it draws and looks up before it calls this: a
+  // row found there shares the pattern, and nothing per sampling is written for it.
   const int N = config_.multisampling.samplings;
-  const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
-  int* first = extent_first_.data() + at;
-  int* last = extent_last_.data() + at;
+  const std::size_t p = patterns_++, at = p * static_cast<std::size_t>(N);
+  row_pattern_[static_cast<std::size_t>(r)] = static_cast<std::uint32_t>(p);
+  int* first = pattern_first_.data() + at;
+  int* last = pattern_last_.data() + at;
   const std::size_t n = s.band.size();
   const int* hf = s.held_first.data();
   const int* hl = s.held_last.data();
@@ -125,23 +116,19 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
     case 8: hole = widen_by_band<8>(N, first, last, hf, hl, cf, fk, n); break;
     default: hole = widen_by_band<0>(N, first, last, hf, hl, cf, fk, n);
   }
-  if (hole) extents_from_bits(r, s, fk);
+  if (hole) extents_from_bits(first, last, s, fk);
   if (key == RowShape::kNoPattern) return;
   const std::size_t slot = RowShape::memo_slot(key);
   s.memo_key[slot] = key;
-  const std::size_t m = slot * static_cast<std::size_t>(N);
-  copy_extents(s.memo_first.data() + m, first, N);
-  copy_extents(s.memo_last.data() + m, last, N);
+  s.memo_pattern[slot] = static_cast<std::uint32_t>(p);
 }
 
-void PixelArrayKernel::extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk) {
-  const int N = config_.multisampling.samplings;
-  const std::size_t at = static_cast<std::size_t>(r) * static_cast<std::size_t>(N);
+void PixelArrayKernel::extents_from_bits(int* first, int* last, const RowShape& s, const std::uint8_t* fk) {
   ActivationRow bits(columns());
-  for (int k = 1; k <= N; ++k) {
+  for (int k = 1; k <= config_.multisampling.samplings; ++k) {
     set_row_bits(bits, s, fk, k);
-    extent_first_[at + static_cast<std::size_t>(k - 1)] = bits.first();
-    extent_last_[at + static_cast<std::size_t>(k - 1)] = bits.last();
+    first[k - 1] = bits.first();
+    last[k - 1] = bits.last();
   }
 }
 

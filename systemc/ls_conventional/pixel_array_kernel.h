@@ -110,25 +110,21 @@ class PixelArrayKernel {
   ActivationExtent extent(int r) const {
     if (sampling_ == 0) return {};
     if (!lazy_bits_) return {row(r).first(), row(r).last()};
-    const std::size_t i = static_cast<std::size_t>(r) * static_cast<std::size_t>(config_.multisampling.samplings) +
-                          static_cast<std::size_t>(sampling_ - 1);
-    return {extent_first_[i], extent_last_[i]};
+    const std::size_t N = static_cast<std::size_t>(config_.multisampling.samplings);
+    const std::size_t i = row_pattern_[static_cast<std::size_t>(r)] * N + static_cast<std::size_t>(sampling_ - 1);
+    return {pattern_first_[i], pattern_last_[i]};
   }
-  // The extents of every row at the current sampling, row r's at first[r * stride] and
-  // last[r * stride], where the exact path has them (false: ask extent(r)).
-  bool extents_at_sampling(const int*& first, const int*& last, std::size_t& stride) const {
+  // The exact path's extents of every sampling of the frame access by pattern (made at the reset):
+  // row r's at sampling k (1-based) are those of pattern p = row_pattern[r], first[p * samplings +
+  // k - 1] and last[...]; rows whose band pixels fired alike share one (on the plane map a frame
+  // access's 365 rows have about 4). False where there are none (ask extent(r)).
+  bool extent_patterns(const std::uint32_t*& row_pattern, const int*& first, const int*& last,
+                       std::size_t& patterns) const {
     if (!lazy_bits_ || sampling_ == 0) return false;
-    stride = static_cast<std::size_t>(config_.multisampling.samplings);
-    first = extent_first_.data() + (sampling_ - 1);
-    last = extent_last_.data() + (sampling_ - 1);
-    return true;
-  }
-  // The same for every sampling of the frame access at once (the exact path makes them at the
-  // reset): row r's at sampling k (1-based) at first[r * samplings + k - 1].
-  bool extents_of_frame(const int*& first, const int*& last) const {
-    if (!lazy_bits_ || sampling_ == 0) return false;
-    first = extent_first_.data();
-    last = extent_last_.data();
+    row_pattern = row_pattern_.data();
+    first = pattern_first_.data();
+    last = pattern_last_.data();
+    patterns = patterns_;
     return true;
   }
   int rows() const { return static_cast<int>(rows_.size()); }
@@ -216,11 +212,11 @@ class PixelArrayKernel {
     std::vector<std::uint8_t> drawn_single, drawn_fire, drawn_else;
     std::uint64_t base_key = 0;
     bool one_by_one = false;
-    // fill_extents' memo: kMemo slots of extents (N per slot) by the band's packed first firings.
+    // fill_extents' memo: kMemo slots of the frame's extent patterns by the band's packed first firings.
     static constexpr std::size_t kMemo = 16;
     static constexpr std::uint64_t kNoPattern = ~std::uint64_t{0};  // an empty slot (no key has 0xff on top)
     std::array<std::uint64_t, kMemo> memo_key{};
-    std::vector<int> memo_first, memo_last;
+    std::array<std::uint32_t, kMemo> memo_pattern{};
     static std::size_t memo_slot(std::uint64_t key) {
       return static_cast<std::size_t>((key * 0x9e3779b97f4a7c15ULL) >> 60) % kMemo;
     }
@@ -249,7 +245,7 @@ class PixelArrayKernel {
   // from the first firings drawn at the reset, and its bits at the current sampling (row()).
   void hold_ranges(RowShape& shape) const;  // held_first / held_last and band_column_from
   void fill_extents(int r, RowShape& s, const std::uint8_t* fk, std::uint64_t key);  // key: the memo's
-  void extents_from_bits(int r, const RowShape& s, const std::uint8_t* fk);  // a row with a hole
+  void extents_from_bits(int* first, int* last, const RowShape& s, const std::uint8_t* fk);  // a row with a hole
   void build_row(int r) const;
   void set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const;
   // A noisy pixel's comparator input at a sampling, the per-sampling path's expression (both
@@ -281,7 +277,9 @@ class PixelArrayKernel {
   mutable std::vector<std::uint64_t> act_at_;      // exact path: the generation_ each row's bits were made at
   std::uint64_t generation_ = 1;                   // exact path: counts resets and samplings
   bool lazy_bits_ = false;                         // this frame access takes the exact path
-  std::vector<int> extent_first_, extent_last_;    // exact path: row r's extent at sampling k at r N + k - 1
+  std::vector<std::uint32_t> row_pattern_;         // exact path: row r's extents are this pattern's ..
+  std::vector<int> pattern_first_, pattern_last_;  // .. at sampling k at p N + k - 1 (extent_patterns)
+  std::size_t patterns_ = 0;                       // .. of the frame access's first patterns_
   std::uint64_t frame_ = 0;                        // current frame access
   bool have_frame_ = false;                        // reset_frame ran at least once
   bool per_pixel_ = false;                         // this frame access takes the per-pixel path

@@ -60,15 +60,7 @@ void LsConventionalSensorKernel::account(const MultisamplingSequencerPins& p, lo
 
 template <class F>
 void LsConventionalSensorKernel::for_each_extent(F f) const {
-  // The exact path's extents read in place (a loop without extent()'s tests per row); else extent().
-  const std::size_t rows = centre_.size();
-  const int *first = nullptr, *last = nullptr;
-  std::size_t stride = 0;
-  if (pixels_.extents_at_sampling(first, last, stride)) {
-    for (std::size_t r = 0; r < rows; ++r) f(r, ActivationExtent{first[r * stride], last[r * stride]});
-  } else {
-    for (std::size_t r = 0; r < rows; ++r) f(r, pixels_.extent(static_cast<int>(r)));
-  }
+  for (std::size_t r = 0; r < centre_.size(); ++r) f(r, pixels_.extent(static_cast<int>(r)));
 }
 
 void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& p) {
@@ -81,24 +73,33 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
   const std::size_t rows = centre_.size();
   pins_scratch_.resize(rows);
   extents_scratch_.resize(rows);
+  const std::uint32_t* pattern = nullptr;
   const int *first = nullptr, *last = nullptr;
-  if (centres_deferred_ && pixels_.extents_of_frame(first, last)) {
-    // Row by row: every sampling's search result into the centre processor (the extents of one row
-    // sit side by side), then its pins and the last sampling's extent.
+  std::size_t patterns = 0;
+  if (centres_deferred_ && pixels_.extent_patterns(pattern, first, last, patterns)) {
+    // Every sampling's search result into the centre processors at once. AddressSearchKernel::
+    // evaluate's found, left and right of each sampling, summed once per extent pattern (rows share
+    // them) without a branch on found (rows come and go at random near the threshold); then row by
+    // row into its centre processor, its pins and the last sampling's extent.
     const std::size_t N = static_cast<std::size_t>(config_.multisampling.samplings);
-    for (std::size_t r = 0; r < rows; ++r, first += N, last += N) {
-      // AddressSearchKernel::evaluate's found, left and right of each sampling, summed in registers
-      // without a branch on found (rows come and go at random near the threshold).
+    pattern_sum_.resize(patterns);
+    pattern_found_.resize(patterns);
+    for (std::size_t p = 0; p < patterns; ++p) {
       std::uint32_t sum = 0;
       int found = 0;
-      for (std::size_t k = 0; k < N; ++k) {
+      for (std::size_t k = p * N; k < (p + 1) * N; ++k) {
         const int hit = first[k] >= 0;
         sum += static_cast<std::uint32_t>(hit * (first[k] + last[k]));
         found += hit;
       }
-      centre_[r].accumulate_total(sum, found);
+      pattern_sum_[p] = sum;
+      pattern_found_[p] = found;
+    }
+    for (std::size_t r = 0; r < rows; ++r) {
+      const std::size_t p = pattern[r];
+      centre_[r].accumulate_total(pattern_sum_[p], pattern_found_[p]);
       pins_scratch_[r] = centre_[r].pins();
-      extents_scratch_[r] = ActivationExtent{first[N - 1], last[N - 1]};
+      extents_scratch_[r] = ActivationExtent{first[p * N + N - 1], last[p * N + N - 1]};
     }
   } else {
     for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
@@ -172,8 +173,10 @@ void LsConventionalSensorKernel::step() {
   if (p.pix_reset)
     for (auto& c : centre_) c.clear();
   if (p.search_start) {
+    const std::uint32_t* pattern = nullptr;
     const int *first = nullptr, *last = nullptr;
-    if (pixels_.extents_of_frame(first, last))
+    std::size_t patterns = 0;
+    if (pixels_.extent_patterns(pattern, first, last, patterns))
       centres_deferred_ = true;  // finish_frame accumulates every sampling's results at once
     else
       for_each_extent([&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });

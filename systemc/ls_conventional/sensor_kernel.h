@@ -106,6 +106,8 @@ class LsConventionalSensorKernel {
   std::vector<AddressSearchPins> search_pins_;            // scratch: pins of the ending cycle
   std::vector<CentreProcessorPins> pins_scratch_;         // scratch: finish_frame's rows ..
   std::vector<ActivationExtent> extents_scratch_;         // .. and extents
+  std::vector<std::uint32_t> pattern_sum_;                // scratch: per extent pattern, sum of left + right ..
+  std::vector<int> pattern_found_;                        // .. and samplings found (finish_frame)
   std::vector<CentreProcessorPins> next_rows_;            // the next frame result's rows ..
   std::vector<ActivationExtent> next_extents_;            // .. and extents (prepare_next_result)
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
