@@ -77,13 +77,14 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
   const int *first = nullptr, *last = nullptr;
   std::size_t patterns = 0;
   if (centres_deferred_ && pixels_.extent_patterns(pattern, first, last, patterns)) {
-    // Every sampling's search result into the centre processors at once. AddressSearchKernel::
-    // evaluate's found, left and right of each sampling, summed once per extent pattern (rows share
-    // them) without a branch on found (rows come and go at random near the threshold); then row by
-    // row into its centre processor, its pins and the last sampling's extent.
+    // Every sampling's search result into the centre processors at once. A row's processor was
+    // cleared at the frame access's reset and takes nothing before this, so its pins are those of a
+    // clear processor given its extent pattern's results: worked out once per pattern (rows share
+    // them), AddressSearchKernel::evaluate's found, left and right of each sampling summed without a
+    // branch on found. The rows' own processors stay clear.
     const std::size_t N = static_cast<std::size_t>(config_.multisampling.samplings);
-    pattern_sum_.resize(patterns);
-    pattern_found_.resize(patterns);
+    pattern_pins_.resize(patterns);
+    pattern_extent_.resize(patterns);
     for (std::size_t p = 0; p < patterns; ++p) {
       std::uint32_t sum = 0;
       int found = 0;
@@ -92,14 +93,14 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
         sum += static_cast<std::uint32_t>(hit * (first[k] + last[k]));
         found += hit;
       }
-      pattern_sum_[p] = sum;
-      pattern_found_[p] = found;
+      CentreProcessorKernel centre(config_.search.address_bits);
+      centre.accumulate_total(sum, found);
+      pattern_pins_[p] = centre.pins();
+      pattern_extent_[p] = ActivationExtent{first[p * N + N - 1], last[p * N + N - 1]};
     }
     for (std::size_t r = 0; r < rows; ++r) {
-      const std::size_t p = pattern[r];
-      centre_[r].accumulate_total(pattern_sum_[p], pattern_found_[p]);
-      pins_scratch_[r] = centre_[r].pins();
-      extents_scratch_[r] = ActivationExtent{first[p * N + N - 1], last[p * N + N - 1]};
+      pins_scratch_[r] = pattern_pins_[pattern[r]];
+      extents_scratch_[r] = pattern_extent_[pattern[r]];
     }
   } else {
     for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();

@@ -85,6 +85,9 @@ class LsConventionalSensorKernel {
 
   const MultisamplingSequencerKernel& sequencer() const { return sequencer_; }
   const PixelArrayKernel& pixels() const { return pixels_; }
+  // The rows' blocks as ticking leaves them. With event skipping on the exact path a frame access's
+  // searches and centres are worked out at its end by extent pattern and these stay idle and clear:
+  // the frame's results hold their pins.
   const AddressSearchKernel& search(int row) const { return search_[static_cast<std::size_t>(row)]; }
   const CentreProcessorKernel& centre(int row) const { return centre_[static_cast<std::size_t>(row)]; }
   const LsConventionalConfig& config() const { return config_; }
@@ -106,8 +109,8 @@ class LsConventionalSensorKernel {
   std::vector<AddressSearchPins> search_pins_;            // scratch: pins of the ending cycle
   std::vector<CentreProcessorPins> pins_scratch_;         // scratch: finish_frame's rows ..
   std::vector<ActivationExtent> extents_scratch_;         // .. and extents
-  std::vector<std::uint32_t> pattern_sum_;                // scratch: per extent pattern, sum of left + right ..
-  std::vector<int> pattern_found_;                        // .. and samplings found (finish_frame)
+  std::vector<CentreProcessorPins> pattern_pins_;         // scratch: per extent pattern, a row's pins ..
+  std::vector<ActivationExtent> pattern_extent_;          // .. and last extent (finish_frame)
   std::vector<CentreProcessorPins> next_rows_;            // the next frame result's rows ..
   std::vector<ActivationExtent> next_extents_;            // .. and extents (prepare_next_result)
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
