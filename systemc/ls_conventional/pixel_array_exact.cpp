@@ -41,6 +41,7 @@ void PixelArrayKernel::reset_exact() {
   at_least(pattern_last_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   patterns_ = 0;
   std::size_t band_total = 0, draws = 0;
+  runs_.clear();
   for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
     // The run: the rows with r0's drive. Without certain intervals every row makes its own shape
     // from every window pixel, and decides them there.
@@ -57,48 +58,42 @@ void PixelArrayKernel::reset_exact() {
     const int m = intervals_ && !s.one_by_one ? static_cast<int>(s.drawn_column.size()) : 0;
     pixels_simulated_ += static_cast<long long>(count) * std::max(0, s.last - s.first + 1);
     if (intervals_) pixels_examined_ += static_cast<long long>(count * n);
-    for (int r = r0; r < r1; ++r) {
-      RowState& row = rows_[static_cast<std::size_t>(r)];
-      row.shape = shape;
-      row.first = s.first, row.last = s.last, row.threshold_V = s.threshold_V;
-      row.band_at = band_total + static_cast<std::size_t>(r - r0) * n;
-      row.uniforms = m;
-    }
+    // What its rows share is kept once, for the run (nothing is written per row).
+    runs_.push_back(ExactRun{r0, r1, shape, m, band_total});
     at_least(band_k_, band_total + count * n + 8);  // 8 to spare (start_run)
     at_least(draw_rc_, draws + count * static_cast<std::size_t>(m));
-    start_run(r0, r1, draw_rc_.data() + draws);
+    start_run(runs_.back(), draw_rc_.data() + draws);
     band_total += count * n;
     draws += count * static_cast<std::size_t>(m);
   }
   uniforms_.resize(draws);
   keyed_uniforms(frame_key_, draw_rc_.data(), uniforms_.data(), draws);
   const double* u = uniforms_.data();
-  for_each_run([&](int r0, int r1) {
+  for (const ExactRun& run : runs_) {
     switch (N) {  // the usual counts unrolled (the preset's is 4)
-      case 2: finish_run<2>(r0, r1, u); break;
-      case 4: finish_run<4>(r0, r1, u); break;
-      case 8: finish_run<8>(r0, r1, u); break;
-      default: finish_run<0>(r0, r1, u);
+      case 2: finish_run<2>(run, u); break;
+      case 4: finish_run<4>(run, u); break;
+      case 8: finish_run<8>(run, u); break;
+      default: finish_run<0>(run, u);
     }
-  });
-}
-
-template <class F>
-void PixelArrayKernel::for_each_run(F f) {
-  for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
-    r1 = r0 + 1;
-    while (r1 < rows() && rows_[static_cast<std::size_t>(r1)].shape == rows_[static_cast<std::size_t>(r0)].shape) ++r1;
-    f(r0, r1);
   }
 }
 
-void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t* rc) {
-  // Rows r0..r1 - 1 (within the band) of one shape: its certain first firings, and the keys of the
+const PixelArrayKernel::ExactRun& PixelArrayKernel::run_of(int r) const {
+  const auto after = std::upper_bound(runs_.begin(), runs_.end(), r,
+                                      [](int row, const ExactRun& run) { return row < run.r0; });
+  assert(after != runs_.begin() && r < (after - 1)->r1);
+  return *(after - 1);
+}
+
+void PixelArrayKernel::start_run(const ExactRun& run, std::uint64_t* rc) {
+  // The run's rows (within the band), of one shape: their certain first firings, and the keys of the
   // uniforms finish_run inverts, drawn pixel by drawn pixel and row by row within (or, without
   // inversion, the Gamma draws pixel by pixel).
-  const RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
-  const std::size_t n = s.band.size(), R = static_cast<std::size_t>(r1 - r0);
-  std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
+  const int r0 = run.r0;
+  const RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
+  const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
+  std::uint8_t* fk = band_k_.data() + run.band_at;
   // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
   // pixels is one 8-byte move (a copy of a run-time size is a library call per row).
   if (n <= 8) {
@@ -106,7 +101,7 @@ void PixelArrayKernel::start_run(int r0, int r1, std::uint64_t* rc) {
   } else {
     for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), n);
   }
-  if (rows_[static_cast<std::size_t>(r0)].uniforms > 0) {
+  if (run.uniforms > 0) {
     const std::uint64_t row0 = static_cast<std::uint64_t>(first_row_ + r0);
     for (std::size_t t = 0; t < s.drawn_column.size(); ++t, rc += R)
       for (std::size_t i = 0; i < R; ++i) rc[i] = ((row0 + i) << 32) | s.drawn_column[t];  // row_column()
@@ -207,14 +202,15 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
 }
 
 template <int N>
-void PixelArrayKernel::finish_run(int r0, int r1, const double*& u) {
-  // Rows r0..r1 - 1 of one shape: their uniforms (keyed_uniforms, in the order start_run asked for
+void PixelArrayKernel::finish_run(const ExactRun& run, const double*& u) {
+  // The run's rows, of one shape: their uniforms (keyed_uniforms, in the order start_run asked for
   // them) inverted as draw() would one by one, then row by row its first firings, the memo key of
   // them and its extents.
-  RowShape& s = shapes_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].shape)];
-  const std::size_t n = s.band.size(), R = static_cast<std::size_t>(r1 - r0);
-  std::uint8_t* fk = band_k_.data() + rows_[static_cast<std::size_t>(r0)].band_at;
-  const std::size_t m = static_cast<std::size_t>(rows_[static_cast<std::size_t>(r0)].uniforms);
+  const int r0 = run.r0;
+  RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
+  const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
+  std::uint8_t* fk = band_k_.data() + run.band_at;
+  const std::size_t m = static_cast<std::size_t>(run.uniforms);
   if (m > 0) {
     finish_entry_ = &exact_->entry(s.threshold_V);  // for the rare draws between the cuts
     pixels_drawn_ += static_cast<long long>(m * R);

@@ -51,9 +51,10 @@ void PixelArrayKernel::set_row_bits(ActivationRow& act, const RowShape& s, const
 }
 
 void PixelArrayKernel::build_row(int r) const {
-  const RowState& row = rows_[static_cast<std::size_t>(r)];
-  set_row_bits(act_[static_cast<std::size_t>(r)], shapes_[static_cast<std::size_t>(row.shape)],
-               band_k_.data() + row.band_at, sampling_);
+  const ExactRun& run = run_of(r);
+  const RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
+  set_row_bits(act_[static_cast<std::size_t>(r)], s,
+               band_k_.data() + run.band_at + static_cast<std::size_t>(r - run.r0) * s.band.size(), sampling_);
   act_at_[static_cast<std::size_t>(r)] = generation_;
 }
 

@@ -146,9 +146,11 @@ class PixelArrayKernel {
   const ExactActivation* exact() const { return exact_.get(); }
   bool per_pixel() const { return per_pixel_; }  // the current frame access took the per-pixel path
   // Simulated window [first, last] of row r in the current frame access (last < first: none).
-  int window_first(int r) const { return rows_[static_cast<std::size_t>(r)].first; }
-  int window_last(int r) const { return rows_[static_cast<std::size_t>(r)].last; }
-  double threshold_V(int r) const { return rows_[static_cast<std::size_t>(r)].threshold_V; }
+  int window_first(int r) const { return lazy_bits_ ? shape_of(r).first : rows_[static_cast<std::size_t>(r)].first; }
+  int window_last(int r) const { return lazy_bits_ ? shape_of(r).last : rows_[static_cast<std::size_t>(r)].last; }
+  double threshold_V(int r) const {
+    return lazy_bits_ ? shape_of(r).threshold_V : rows_[static_cast<std::size_t>(r)].threshold_V;
+  }
 
  private:
   struct Pixel {
@@ -163,13 +165,18 @@ class PixelArrayKernel {
     double read_V = 0;        // read noise at the comparator input (input-referred)
     double profile = 0;       // g(i - x0)
   };
+  // Per row, the per-sampling paths' (the exact path keeps its rows by run: ExactRun).
   struct RowState {
     int first = 0, last = -1;   // simulated window [first, last]
     double threshold_V = 0;     // theta at the comparator input
     std::vector<Pixel> pixels;  // window pixels (index i - first), per-sampling path
-    int shape = -1;             // exact path: the row's RowShape in shapes_
-    std::size_t band_at = 0;    // exact path: its band pixels' first firings from band_k_[band_at]
-    int uniforms = 0;           // exact path: of them, drawn by inversion of the frame's keyed uniforms
+  };
+  // Exact path: a run of rows r0..r1 - 1 (within the band) with one drive, so one RowShape.
+  struct ExactRun {
+    int r0 = 0, r1 = 0;
+    int shape = -1;           // its RowShape in shapes_
+    int uniforms = 0;         // a row's band pixels drawn by inversion of the frame's keyed uniforms
+    std::size_t band_at = 0;  // row r0 + i's band pixels' first firings from band_k_[band_at + i n]
   };
   // Exact path: a pixel looked at one by one, with its certain first firing or its drive for a draw.
   struct BandPixel {
@@ -228,11 +235,11 @@ class PixelArrayKernel {
   // The exact path (pixel_array_exact.cpp): the frame access's reset in passes over the runs of rows
   // of one shape, around the frame's batch of uniforms; and the latch of sampling k.
   void reset_exact();
-  template <class F>
-  void for_each_run(F f);  // f(r0, r1) for each run of rows r0..r1 - 1 (within the band) of one shape
-  void start_run(int r0, int r1, std::uint64_t* rc);  // rc: the run's first uniform key
+  void start_run(const ExactRun& run, std::uint64_t* rc);  // rc: the run's first uniform key
   template <int N>  // N samplings (0: any count)
-  void finish_run(int r0, int r1, const double*& u);  // u: the run's first uniform
+  void finish_run(const ExactRun& run, const double*& u);  // u: the run's first uniform
+  const ExactRun& run_of(int r) const;                      // the run that holds row r
+  const RowShape& shape_of(int r) const { return shapes_[static_cast<std::size_t>(run_of(r).shape)]; }
   template <int N>
   void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* K);
   int make_shape(int r, const RowIllumination& in, RowState& row);
@@ -296,6 +303,7 @@ class PixelArrayKernel {
   std::unique_ptr<ExactActivation> exact_;         // the exact path (null: per-sampling draws)
   std::unique_ptr<CertainIntervals> intervals_;    // certain pixels by intervals (null: every window pixel)
   bool inversion_ = false;                         // uncertain pixels drawn by inversion where it applies
+  std::vector<ExactRun> runs_;                     // exact path: the frame access's runs of rows, in order
   std::vector<RowShape> shapes_;                   // exact path: this frame access's row shapes ..
   int shapes_used_ = 0;                            // .. the first shapes_used_ of them (kept for reuse)
   std::vector<std::uint8_t> band_k_;               // exact path: first firing of every row's band pixels

@@ -20,7 +20,6 @@ void PixelArrayKernel::reset_row_pixels(int r, const RowIllumination& in, RowSta
   const bool gain = pat && !pat->gain.empty(), dark = pat && !pat->dark_V.empty();
   const bool offset = pat && !pat->offset_V.empty(), spread = !stimulus_.signal_px_V.empty();
   row.threshold_V = golden::comparator_threshold_V(config_, in.background_V);
-  row.shape = -1;
   // The band's most favourable comparator bounds every pixel's: below its cut none can fire.
   const double easiest_V = row.threshold_V - band_max_offset_V_;
   const double cut_V = options_.sparse ? cut_swing_V(easiest_V) : -1.0;
