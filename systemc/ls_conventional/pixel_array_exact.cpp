@@ -95,8 +95,10 @@ void PixelArrayKernel::start_run(const ExactRun& run, std::uint64_t* rc) {
   const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
   std::uint8_t* fk = band_k_.data() + run.band_at;
   // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
-  // pixels is one 8-byte move (a copy of a run-time size is a library call per row).
-  if (n <= 8) {
+  // pixels is one 8-byte move (a copy of a run-time size is a library call per row). A shape with a
+  // memo key leaves them to finish_run, which writes each row's whole key.
+  if (keyed_rows(s)) {
+  } else if (n <= 8) {
     for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), 8);
   } else {
     for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), n);
@@ -220,6 +222,32 @@ void PixelArrayKernel::finish_run(const ExactRun& run, const double*& u) {
   }
   const std::uint64_t* K = k_scratch_.data();
   const int* at = s.drawn_at.data();
+  if (keyed_rows(s)) {
+    // The rows' keys (their first firings packed, n << 56 | fk[j] << 8 j) in vector loops over the
+    // rows, a drawn pixel at a time; a key's low n bytes are then the row's first firings, stored in
+    // one 8-byte move in row order (the next row overwrites the rest; the run's last row stores n).
+    at_least(keys_, R);
+    std::uint64_t* __restrict keys = keys_.data();
+    for (std::size_t i = 0; i < R; ++i) keys[i] = s.base_key;
+    for (std::size_t t = 0; t < m; ++t) {
+      const std::uint64_t* __restrict kt = K + t * R;
+      const unsigned shift = 8U * static_cast<unsigned>(at[t]);
+      for (std::size_t i = 0; i < R; ++i) keys[i] |= kt[i] << shift;
+    }
+    for (std::size_t i = 0; i < R; ++i, fk += n) {
+      const std::uint64_t key = keys[i];
+      if (i + 1 < R)
+        std::memcpy(fk, &key, 8);
+      else
+        std::memcpy(fk, &key, n);
+      const std::size_t slot = RowShape::memo_slot(key);
+      if (s.memo_key[slot] == key)  // the shape's memo (fill_extents): the row shares its pattern
+        row_pattern_[static_cast<std::size_t>(r0) + i] = s.memo_pattern[slot];
+      else
+        fill_extents(r0 + static_cast<int>(i), s, fk, key);  // not in the memo: worked out, and kept there
+    }
+    return;
+  }
   for (std::size_t i = 0; i < R; ++i, fk += n) {
     const int r = r0 + static_cast<int>(i);
     std::uint64_t key = s.base_key;

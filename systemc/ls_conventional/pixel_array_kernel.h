@@ -239,6 +239,9 @@ class PixelArrayKernel {
   template <int N>  // N samplings (0: any count)
   void finish_run(const ExactRun& run, const double*& u);  // u: the run's first uniform
   const ExactRun& run_of(int r) const;                      // the run that holds row r
+  // The rows of shape s have memo keys that hold their first firings (fewer than 8 band pixels, all
+  // certain or drawn by inversion): finish_run writes them from the keys.
+  static bool keyed_rows(const RowShape& s) { return s.base_key != RowShape::kNoPattern && !s.one_by_one; }
   const RowShape& shape_of(int r) const { return shapes_[static_cast<std::size_t>(run_of(r).shape)]; }
   template <int N>
   void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* K);
@@ -310,7 +313,8 @@ class PixelArrayKernel {
   std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each uniform the frame needs
   std::vector<double> uniforms_;                   // .. and the uniforms (keyed_uniforms)
   ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry ..
-  std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run)
+  std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run) ..
+  std::vector<std::uint64_t> keys_;                // .. and memo keys (keyed_rows)
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 
