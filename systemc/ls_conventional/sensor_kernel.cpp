@@ -50,6 +50,7 @@ void LsConventionalSensorKernel::reset_at_frame(std::uint64_t frame) {
   sequencer_.advance_to(static_cast<long long>(frame) * sequencer_.frame_cycles());
   for (auto& s : search_) s.tick(true, false, ActivationRow{});
   for (auto& c : centre_) c.clear();
+  centres_clear_ = true;
   phase_cycles_ = {};
   settle();
 }
@@ -157,6 +158,7 @@ void LsConventionalSensorKernel::tick() {
   }
   for (std::size_t r = 0; r < rows; ++r) search_[r].tick(false, p.search_start, pixels_.row(static_cast<int>(r)));
   for (std::size_t r = 0; r < rows; ++r) centre_[r].tick(p.pix_reset, search_pins_[r]);
+  centres_clear_ = false;
   sequencer_.tick(false);
   ++ticks_;
   settle();
@@ -171,8 +173,10 @@ void LsConventionalSensorKernel::step() {
   const long long next = sequencer_.next_event_cycle();
   account(p, next - sequencer_.cycle());
   if (p.frame_done) finish_frame(p);  // a one-cycle interval: the frame's last cycle
-  if (p.pix_reset)
+  if (p.pix_reset && !centres_clear_) {  // (the deferred frames leave them clear)
     for (auto& c : centre_) c.clear();
+    centres_clear_ = true;
+  }
   if (p.search_start) {
     const std::uint32_t* pattern = nullptr;
     const int *first = nullptr, *last = nullptr;
@@ -180,7 +184,10 @@ void LsConventionalSensorKernel::step() {
     if (pixels_.extent_patterns(pattern, first, last, patterns))
       centres_deferred_ = true;  // finish_frame accumulates every sampling's results at once
     else
+    {
       for_each_extent([&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
+      centres_clear_ = false;
+    }
   }
   sequencer_.advance_to(next);
   settle();

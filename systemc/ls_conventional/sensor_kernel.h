@@ -115,10 +115,11 @@ class LsConventionalSensorKernel {
   std::vector<ActivationExtent> next_extents_;            // .. and extents (prepare_next_result)
   std::array<long long, kReadoutPhases> phase_cycles_{};  // of the current frame
   std::vector<FrameResult> results_;
-  // Event skipping on the exact path: the searches' results go into the centre processors at the
-  // frame's end, every sampling's in one pass over the rows (finish_frame), instead of one pass a
-  // sampling; nothing reads the centres in between.
+  // Event skipping on the exact path: the searches' results are worked out at the frame's end,
+  // every sampling's at once and once per extent pattern (finish_frame), instead of one pass a
+  // sampling; nothing reads the centres in between, and the rows' own processors stay clear.
   bool centres_deferred_ = false;
+  bool centres_clear_ = true;  // every row's centre processor is clear (none has taken anything since)
   std::vector<std::string> errors_;
   long long ticks_ = 0;
 };
