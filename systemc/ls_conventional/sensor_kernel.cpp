@@ -67,13 +67,14 @@ void LsConventionalSensorKernel::for_each_extent(F f) const {
 void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& p) {
   FrameResult fr;
   fr.frame = p.frame;
-  // The rows are gathered into scratch kept by the kernel and copied in one piece (a push_back of a
-  // struct built on the stack costs a failed store-to-load forward per row; a resize first writes
-  // every element twice), with room for the whole array's rows: a row band's results are joined to
-  // the others' (run_sensor_kernel) without a new allocation.
+  // The frame result's memory was asked for one frame access ahead (prepare_next_result), with room
+  // for the whole array's rows: a row band's results are joined to the others' (run_sensor_kernel)
+  // without a new allocation.
   const std::size_t rows = centre_.size();
-  pins_scratch_.resize(rows);
-  extents_scratch_.resize(rows);
+  fr.rows = std::move(next_rows_);
+  fr.extents = std::move(next_extents_);
+  fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
+  fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
   const std::uint32_t* pattern = nullptr;
   const int *first = nullptr, *last = nullptr;
   std::size_t patterns = 0;
@@ -99,21 +100,17 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
       pattern_pins_[p] = centre.pins();
       pattern_extent_[p] = ActivationExtent{first[p * N + N - 1], last[p * N + N - 1]};
     }
-    for (std::size_t r = 0; r < rows; ++r) {
-      pins_scratch_[r] = pattern_pins_[pattern[r]];
-      extents_scratch_[r] = pattern_extent_[pattern[r]];
-    }
+    // Copied from the patterns straight into the result (elements read from memory: no
+    // store-to-load forward to fail, as a struct built on the stack would).
+    for (std::size_t r = 0; r < rows; ++r) fr.rows.push_back(pattern_pins_[pattern[r]]);
+    for (std::size_t r = 0; r < rows; ++r) fr.extents.push_back(pattern_extent_[pattern[r]]);
   } else {
+    pins_scratch_.resize(rows);
     for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
-    for_each_extent([&](std::size_t r, const ActivationExtent& e) { extents_scratch_[r] = e; });
+    fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
+    for_each_extent([&](std::size_t, const ActivationExtent& e) { fr.extents.push_back(e); });
   }
   centres_deferred_ = false;
-  fr.rows = std::move(next_rows_);
-  fr.extents = std::move(next_extents_);
-  fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
-  fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
-  fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
-  fr.extents.assign(extents_scratch_.begin(), extents_scratch_.end());
   prepare_next_result();
   fr.end_cycle = sequencer_.cycle() + 1;
   fr.phase_cycles = phase_cycles_;

@@ -107,8 +107,7 @@ class LsConventionalSensorKernel {
   std::vector<AddressSearchKernel> search_;               // per row
   std::vector<CentreProcessorKernel> centre_;             // per row
   std::vector<AddressSearchPins> search_pins_;            // scratch: pins of the ending cycle
-  std::vector<CentreProcessorPins> pins_scratch_;         // scratch: finish_frame's rows ..
-  std::vector<ActivationExtent> extents_scratch_;         // .. and extents
+  std::vector<CentreProcessorPins> pins_scratch_;         // scratch: finish_frame's rows (ticking)
   std::vector<CentreProcessorPins> pattern_pins_;         // scratch: per extent pattern, a row's pins ..
   std::vector<ActivationExtent> pattern_extent_;          // .. and last extent (finish_frame)
   std::vector<CentreProcessorPins> next_rows_;            // the next frame result's rows ..
