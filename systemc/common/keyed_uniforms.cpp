@@ -21,6 +21,16 @@ void plain_loop(std::uint64_t frame_key, const std::uint64_t* rc, double* u, std
 }
 
 #ifdef RANGESIM_KEYED_UNIFORMS_X86
+__attribute__((target_clones("arch=x86-64-v4", "default")))
+#endif
+void plain_grid(std::uint64_t frame_key, std::uint32_t row0, std::size_t rows, const std::uint32_t* columns,
+                std::size_t m, double* u) {
+  for (std::size_t t = 0; t < m; ++t, u += rows)
+    for (std::size_t i = 0; i < rows; ++i)
+      u[i] = keyed_uniform(splitmix64(frame_key ^ row_column(row0 + static_cast<std::uint32_t>(i), columns[t])));
+}
+
+#ifdef RANGESIM_KEYED_UNIFORMS_X86
 // AVX2 without AVX-512: four 64-bit lanes, the multiplies made of 32-bit ones (by the compiler),
 // and the 53-bit integer converted to double exactly in two halves (AVX2 has no 64-bit integer to
 // double conversion): hi 2^32 + lo with each half put into a double's mantissa under a fixed
@@ -53,6 +63,28 @@ __attribute__((target("avx2"))) void avx2_loop(std::uint64_t frame_key, const st
   }
   plain_loop(frame_key, rc + i, u + i, n - i);
 }
+
+// The grid's keys made in the lanes (four consecutive rows of one column) instead of read.
+__attribute__((target("avx2"))) void avx2_grid(std::uint64_t frame_key, std::uint32_t row0, std::size_t rows,
+                                               const std::uint32_t* columns, std::size_t m, double* u) {
+  constexpr double kTwo84Plus52 = 19342813118337666422669312.0;  // 2^84 + 2^52
+  constexpr std::uint64_t kRow = std::uint64_t{1} << 32;
+  for (std::size_t t = 0; t < m; ++t, u += rows) {
+    const std::uint64_t first = row_column(row0, columns[t]);
+    U64x4 rc = {first, first + kRow, first + 2 * kRow, first + 3 * kRow};
+    std::size_t i = 0;
+    for (; i + 4 <= rows; i += 4, rc += 4 * kRow) {
+      const U64x4 x = splitmix64x4(splitmix64x4(rc ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;  // keyed_uniform's
+      const U64x4 hi = (x >> 32) | 0x4530000000000000ULL, lo = (x & 0xffffffffULL) | 0x4330000000000000ULL;
+      F64x4 h, l;
+      std::memcpy(&h, &hi, sizeof h);
+      std::memcpy(&l, &lo, sizeof l);
+      const F64x4 v = ((h - kTwo84Plus52) + l + 0.5) * (1.0 / 9007199254740992.0);
+      std::memcpy(u + i, &v, sizeof v);
+    }
+    plain_grid(frame_key, row0 + static_cast<std::uint32_t>(i), rows - i, columns + t, 1, u + i);
+  }
+}
 #endif
 
 }  // namespace
@@ -63,6 +95,15 @@ void keyed_uniforms(std::uint64_t frame_key, const std::uint64_t* rc, double* u,
   if (avx2) return avx2_loop(frame_key, rc, u, n);
 #endif
   plain_loop(frame_key, rc, u, n);
+}
+
+void keyed_uniforms_grid(std::uint64_t frame_key, std::uint32_t row0, std::size_t rows, const std::uint32_t* columns,
+                         std::size_t m, double* u) {
+#ifdef RANGESIM_KEYED_UNIFORMS_X86
+  static const bool avx2 = __builtin_cpu_supports("avx2") && !__builtin_cpu_supports("avx512dq");
+  if (avx2) return avx2_grid(frame_key, row0, rows, columns, m, u);
+#endif
+  plain_grid(frame_key, row0, rows, columns, m, u);
 }
 
 }  // namespace rangesim::systemc

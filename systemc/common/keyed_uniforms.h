@@ -18,5 +18,9 @@ inline std::uint64_t row_column(std::uint32_t row, std::uint32_t column) {
 
 // u[i] = keyed_uniform(pixel_key_in_frame(frame_key, row and column of rc[i])) for i < n.
 void keyed_uniforms(std::uint64_t frame_key, const std::uint64_t* rc, double* u, std::size_t n);
+// The same for a grid of pixels, rows row0 .. row0 + rows - 1 of each of m columns, column by
+// column: u[t rows + i] is row row0 + i's in columns[t]. Its keys are made in the loop, not read.
+void keyed_uniforms_grid(std::uint64_t frame_key, std::uint32_t row0, std::size_t rows, const std::uint32_t* columns,
+                         std::size_t m, double* u);
 
 }  // namespace rangesim::systemc

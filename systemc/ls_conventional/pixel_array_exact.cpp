@@ -30,9 +30,11 @@ void at_least(V& v, std::size_t n) {
 }  // namespace
 
 void PixelArrayKernel::reset_exact() {
-  // Two passes around the frame's uniforms (made in one vectorised loop): per run of rows with one
-  // drive (every row of a plane), its shape, the rows' certain first firings and the keys of the
-  // uniforms their random ones need; then per run the rows' draws and extents.
+  // Two passes around the frame's uniforms (made in vectorised loops): per run of rows with one
+  // drive (every row of a plane), its shape, the rows' certain first firings and, for a short run,
+  // the keys of the uniforms its random ones need; then the uniforms, the short runs' in one batch
+  // by their keys and each long run's as a grid of rows and columns (keyed_uniforms_grid: its keys
+  // are made in the loop); then per run the rows' draws and extents.
   const int N = config_.multisampling.samplings;
   shapes_used_ = 0;
   // Every row adds at most one extent pattern (those of rows found in a shape's memo are shared).
@@ -40,7 +42,7 @@ void PixelArrayKernel::reset_exact() {
   at_least(pattern_first_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   at_least(pattern_last_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   patterns_ = 0;
-  std::size_t band_total = 0, draws = 0;
+  std::size_t band_total = 0, draws = 0, grid_draws = 0;
   runs_.clear();
   for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
     // The run: the rows with r0's drive. Without certain intervals every row makes its own shape
@@ -59,22 +61,32 @@ void PixelArrayKernel::reset_exact() {
     pixels_simulated_ += static_cast<long long>(count) * std::max(0, s.last - s.first + 1);
     if (intervals_) pixels_examined_ += static_cast<long long>(count * n);
     // What its rows share is kept once, for the run (nothing is written per row).
-    runs_.push_back(ExactRun{r0, r1, shape, m, band_total});
+    const std::size_t uniforms = count * static_cast<std::size_t>(m);
+    const bool grid = m > 0 && count >= kGridRows;
+    runs_.push_back(ExactRun{r0, r1, shape, m, band_total, grid ? grid_draws : draws, grid});
     at_least(band_k_, band_total + count * n + 8);  // 8 to spare (start_run)
-    at_least(draw_rc_, draws + count * static_cast<std::size_t>(m));
-    start_run(runs_.back(), draw_rc_.data() + draws);
+    if (!grid) at_least(draw_rc_, draws + uniforms);
+    start_run(runs_.back(), grid ? nullptr : draw_rc_.data() + draws);
     band_total += count * n;
-    draws += count * static_cast<std::size_t>(m);
+    (grid ? grid_draws : draws) += uniforms;
   }
-  uniforms_.resize(draws);
+  // The short runs' uniforms first, then the grids'.
+  uniforms_.resize(draws + grid_draws);
   keyed_uniforms(frame_key_, draw_rc_.data(), uniforms_.data(), draws);
-  const double* u = uniforms_.data();
+  for (ExactRun& run : runs_)
+    if (run.grid) {
+      run.u_at += draws;
+      const RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
+      keyed_uniforms_grid(frame_key_, static_cast<std::uint32_t>(first_row_ + run.r0),
+                          static_cast<std::size_t>(run.r1 - run.r0), s.drawn_column.data(), s.drawn_column.size(),
+                          uniforms_.data() + run.u_at);
+    }
   for (const ExactRun& run : runs_) {
     switch (N) {  // the usual counts unrolled (the preset's is 4)
-      case 2: finish_run<2>(run, u); break;
-      case 4: finish_run<4>(run, u); break;
-      case 8: finish_run<8>(run, u); break;
-      default: finish_run<0>(run, u);
+      case 2: finish_run<2>(run); break;
+      case 4: finish_run<4>(run); break;
+      case 8: finish_run<8>(run); break;
+      default: finish_run<0>(run);
     }
   }
 }
@@ -88,8 +100,8 @@ const PixelArrayKernel::ExactRun& PixelArrayKernel::run_of(int r) const {
 
 void PixelArrayKernel::start_run(const ExactRun& run, std::uint64_t* rc) {
   // The run's rows (within the band), of one shape: their certain first firings, and the keys of the
-  // uniforms finish_run inverts, drawn pixel by drawn pixel and row by row within (or, without
-  // inversion, the Gamma draws pixel by pixel).
+  // uniforms finish_run inverts, drawn pixel by drawn pixel and row by row within (a grid's are
+  // made with its uniforms: rc null), or, without inversion, the Gamma draws pixel by pixel.
   const int r0 = run.r0;
   const RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
   const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
@@ -104,6 +116,7 @@ void PixelArrayKernel::start_run(const ExactRun& run, std::uint64_t* rc) {
     for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), n);
   }
   if (run.uniforms > 0) {
+    if (!rc) return;
     const std::uint64_t row0 = static_cast<std::uint64_t>(first_row_ + r0);
     for (std::size_t t = 0; t < s.drawn_column.size(); ++t, rc += R)
       for (std::size_t i = 0; i < R; ++i) rc[i] = ((row0 + i) << 32) | s.drawn_column[t];  // row_column()
@@ -204,10 +217,11 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
 }
 
 template <int N>
-void PixelArrayKernel::finish_run(const ExactRun& run, const double*& u) {
-  // The run's rows, of one shape: their uniforms (keyed_uniforms, in the order start_run asked for
-  // them) inverted as draw() would one by one, then row by row its first firings, the memo key of
-  // them and its extents.
+void PixelArrayKernel::finish_run(const ExactRun& run) {
+  // The run's rows, of one shape: their uniforms (from uniforms_[run.u_at], drawn pixel by drawn
+  // pixel and row by row within) inverted as draw() would one by one, then row by row its first
+  // firings, the memo key of them and its extents.
+  const double* u = uniforms_.data() + run.u_at;
   const int r0 = run.r0;
   RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
   const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
@@ -218,7 +232,6 @@ void PixelArrayKernel::finish_run(const ExactRun& run, const double*& u) {
     pixels_drawn_ += static_cast<long long>(m * R);
     at_least(k_scratch_, m * R);
     invert_run<N>(s, R, u, k_scratch_.data());
-    u += m * R;
   }
   const std::uint64_t* K = k_scratch_.data();
   const int* at = s.drawn_at.data();

@@ -177,7 +177,10 @@ class PixelArrayKernel {
     int shape = -1;           // its RowShape in shapes_
     int uniforms = 0;         // a row's band pixels drawn by inversion of the frame's keyed uniforms
     std::size_t band_at = 0;  // row r0 + i's band pixels' first firings from band_k_[band_at + i n]
+    std::size_t u_at = 0;     // its uniforms from uniforms_[u_at], drawn pixel by drawn pixel, row by row within
+    bool grid = false;        // they are made as a grid (at least kGridRows rows), without keys in draw_rc_
   };
+  static constexpr std::size_t kGridRows = 8;
   // Exact path: a pixel looked at one by one, with its certain first firing or its drive for a draw.
   struct BandPixel {
     int column = 0;
@@ -237,7 +240,7 @@ class PixelArrayKernel {
   void reset_exact();
   void start_run(const ExactRun& run, std::uint64_t* rc);  // rc: the run's first uniform key
   template <int N>  // N samplings (0: any count)
-  void finish_run(const ExactRun& run, const double*& u);  // u: the run's first uniform
+  void finish_run(const ExactRun& run);
   const ExactRun& run_of(int r) const;                      // the run that holds row r
   // The rows of shape s have memo keys that hold their first firings (fewer than 8 band pixels, all
   // certain or drawn by inversion): finish_run writes them from the keys.
@@ -310,7 +313,7 @@ class PixelArrayKernel {
   std::vector<RowShape> shapes_;                   // exact path: this frame access's row shapes ..
   int shapes_used_ = 0;                            // .. the first shapes_used_ of them (kept for reuse)
   std::vector<std::uint8_t> band_k_;               // exact path: first firing of every row's band pixels
-  std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each uniform the frame needs
+  std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each short run's uniform
   std::vector<double> uniforms_;                   // .. and the uniforms (keyed_uniforms)
   ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry ..
   std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run) ..

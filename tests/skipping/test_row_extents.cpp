@@ -113,3 +113,26 @@ TEST(KeyedUniforms, EqualThePixelsKeyedUniformsOneByOne) {
     }
   }
 }
+
+TEST(KeyedUniforms, GridsEqualThePixelsKeyedUniformsOneByOne) {
+  // A grid (rows of some columns, keys made in the loop) gives each pixel's own keyed_uniform bit for
+  // bit: every row count around the vector width, rows up to the 32-bit limit, and no write past it.
+  std::mt19937_64 rng(12);
+  for (const std::size_t rows : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{5},
+                                 std::size_t{8}, std::size_t{365}, std::size_t{1027}}) {
+    for (const std::uint32_t row0 : {0U, 17U, 0xffffffffU - static_cast<std::uint32_t>(rows)}) {
+      const std::uint64_t frame_key = rs::frame_stream_key(rng(), rng());
+      std::vector<std::uint32_t> columns(3);
+      for (auto& c : columns) c = static_cast<std::uint32_t>(rng());
+      std::vector<double> u(columns.size() * rows + 1, -1.0);
+      rs::keyed_uniforms_grid(frame_key, row0, rows, columns.data(), columns.size(), u.data());
+      for (std::size_t t = 0; t < columns.size(); ++t)
+        for (std::size_t i = 0; i < rows; ++i) {
+          const double one =
+              rs::keyed_uniform(rs::pixel_key_in_frame(frame_key, row0 + static_cast<std::uint32_t>(i), columns[t]));
+          ASSERT_EQ(u[t * rows + i], one) << "rows " << rows << " row0 " << row0 << " t " << t << " i " << i;
+        }
+      EXPECT_EQ(u.back(), -1.0) << "rows " << rows;
+    }
+  }
+}
