@@ -162,18 +162,27 @@ inline int first_firing_by_cuts(const double* cut, double u, int n, bool& betwee
 }
 }  // namespace
 
-template <int N>
-void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* K) {
-  // K[t R + i]: the first firing of drawn pixel t on the run's row i, from u[t R + i]. A pixel with
-  // one random sampling is a compare a row, over the rows in one vector loop (K selected by the
-  // compare's mask: a branch on u mispredicts every other draw); u between its
-  // cuts (~2e-5 of the draws) is decided afterwards by golden's f. A pixel with several is one
-  // vector compare a sampling (first_firing_by_cuts).
+template <int N, bool Keyed>
+void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out) {
+  // The first firing of drawn pixel t on the run's row i, from u[t R + i]: into out[t R + i], or
+  // (Keyed) into row i's memo key out[i] at the pixel's byte, 8 at[t] (the key holds the shape's
+  // certain first firings already, and 0 there). A pixel with one random sampling is a compare a
+  // row, over the rows in one vector loop (the first firing selected by the compare's mask: a
+  // branch on u mispredicts every other draw); u between its cuts (~2e-5 of the draws) is decided
+  // afterwards by golden's f. A pixel with several is one vector compare a sampling
+  // (first_firing_by_cuts).
   const int n = config_.multisampling.samplings;
   const std::size_t stride = 2 * static_cast<std::size_t>(n), m = s.drawn_at.size();
   for (std::size_t t = 0; t < m; ++t) {
     const double* __restrict ut = u + t * R;
-    std::uint64_t* __restrict kt = K + t * R;
+    std::uint64_t* __restrict ot = Keyed ? out : out + t * R;
+    const unsigned shift = Keyed ? 8U * static_cast<unsigned>(s.drawn_at[t]) : 0U;
+    const auto put = [ot, shift](std::size_t i, std::uint64_t k) {
+      if (Keyed)
+        ot[i] = (ot[i] & ~(std::uint64_t{0xff} << shift)) | (k << shift);
+      else
+        ot[i] = k;
+    };
     const double* cut = s.cut.data() + t * stride;
     const PixelDrive& drive = s.band[static_cast<std::size_t>(s.drawn_at[t])].drive;
     if (s.drawn_single[t]) {
@@ -184,26 +193,28 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
 #if defined(__SSE2__)
       // Two rows a step (the compiler does not vectorise the loop below by itself).
       const __m128d v_lo = _mm_set1_pd(lo), v_hi = _mm_set1_pd(hi);
-      const __m128i v_ke = _mm_set1_epi64x(static_cast<long long>(ke));
-      const __m128i v_diff = _mm_set1_epi64x(static_cast<long long>(kf ^ ke));
+      const __m128i v_ke = _mm_set1_epi64x(static_cast<long long>(ke << shift));
+      const __m128i v_diff = _mm_set1_epi64x(static_cast<long long>((kf ^ ke) << shift));
       __m128i v_between = _mm_setzero_si128();
       for (; i + 2 <= R; i += 2) {
         const __m128d x = _mm_loadu_pd(ut + i);
         const __m128i fire = _mm_castpd_si128(_mm_cmplt_pd(x, v_lo));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(kt + i), _mm_xor_si128(v_ke, _mm_and_si128(v_diff, fire)));
+        __m128i k = _mm_xor_si128(v_ke, _mm_and_si128(v_diff, fire));
+        if (Keyed) k = _mm_or_si128(k, _mm_loadu_si128(reinterpret_cast<const __m128i*>(ot + i)));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(ot + i), k);
         v_between = _mm_or_si128(v_between, _mm_andnot_si128(fire, _mm_castpd_si128(_mm_cmplt_pd(x, v_hi))));
       }
       between = static_cast<std::uint64_t>(_mm_movemask_pd(_mm_castsi128_pd(v_between)));
 #endif
       for (; i < R; ++i) {
         const std::uint64_t fire = -static_cast<std::uint64_t>(ut[i] < lo);
-        kt[i] = ke ^ ((kf ^ ke) & fire);
+        put(i, ke ^ ((kf ^ ke) & fire));
         between |= ~fire & -static_cast<std::uint64_t>(ut[i] < hi);
       }
       if (__builtin_expect(between != 0, 0))
         for (std::size_t i = 0; i < R; ++i)
           if (ut[i] >= lo && ut[i] < hi)
-            kt[i] = static_cast<std::uint64_t>(exact_->invert_prepared(drive, *finish_entry_, cut, ut[i]));
+            put(i, static_cast<std::uint64_t>(exact_->invert_prepared(drive, *finish_entry_, cut, ut[i])));
       continue;
     }
     for (std::size_t i = 0; i < R; ++i) {
@@ -211,7 +222,7 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
       int k = N == 0 && n > 30 ? 0 : first_firing_by_cuts<N>(cut, ut[i], n, between);
       if (__builtin_expect(between, 0))  // (and every draw with more samplings than a mask holds)
         k = exact_->invert_prepared(drive, *finish_entry_, cut, ut[i]);
-      kt[i] = static_cast<std::uint64_t>(k);
+      put(i, static_cast<std::uint64_t>(k));
     }
   }
 }
@@ -230,23 +241,16 @@ void PixelArrayKernel::finish_run(const ExactRun& run) {
   if (m > 0) {
     finish_entry_ = &exact_->entry(s.threshold_V);  // for the rare draws between the cuts
     pixels_drawn_ += static_cast<long long>(m * R);
-    at_least(k_scratch_, m * R);
-    invert_run<N>(s, R, u, k_scratch_.data());
   }
-  const std::uint64_t* K = k_scratch_.data();
-  const int* at = s.drawn_at.data();
   if (keyed_rows(s)) {
-    // The rows' keys (their first firings packed, n << 56 | fk[j] << 8 j) in vector loops over the
-    // rows, a drawn pixel at a time; a key's low n bytes are then the row's first firings, stored in
-    // one 8-byte move in row order (the next row overwrites the rest; the run's last row stores n).
+    // The rows' keys (their first firings packed, n << 56 | fk[j] << 8 j): the shape's, with the
+    // draws put in by the inversion's vector loops over the rows, a drawn pixel at a time. A key's
+    // low n bytes are then the row's first firings, stored in one 8-byte move in row order (the
+    // next row overwrites the rest; the run's last row stores n).
     at_least(keys_, R);
     std::uint64_t* __restrict keys = keys_.data();
     for (std::size_t i = 0; i < R; ++i) keys[i] = s.base_key;
-    for (std::size_t t = 0; t < m; ++t) {
-      const std::uint64_t* __restrict kt = K + t * R;
-      const unsigned shift = 8U * static_cast<unsigned>(at[t]);
-      for (std::size_t i = 0; i < R; ++i) keys[i] |= kt[i] << shift;
-    }
+    if (m > 0) invert_run<N, true>(s, R, u, keys);
     for (std::size_t i = 0; i < R; ++i, fk += n) {
       const std::uint64_t key = keys[i];
       if (i + 1 < R)
@@ -261,6 +265,12 @@ void PixelArrayKernel::finish_run(const ExactRun& run) {
     }
     return;
   }
+  if (m > 0) {
+    at_least(k_scratch_, m * R);
+    invert_run<N, false>(s, R, u, k_scratch_.data());
+  }
+  const std::uint64_t* K = k_scratch_.data();
+  const int* at = s.drawn_at.data();
   for (std::size_t i = 0; i < R; ++i, fk += n) {
     const int r = r0 + static_cast<int>(i);
     std::uint64_t key = s.base_key;

@@ -246,8 +246,8 @@ class PixelArrayKernel {
   // certain or drawn by inversion): finish_run writes them from the keys.
   static bool keyed_rows(const RowShape& s) { return s.base_key != RowShape::kNoPattern && !s.one_by_one; }
   const RowShape& shape_of(int r) const { return shapes_[static_cast<std::size_t>(run_of(r).shape)]; }
-  template <int N>
-  void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* K);
+  template <int N, bool Keyed>  // Keyed: into the rows' memo keys (keyed_rows)
+  void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out);
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void plan_draws(RowShape& s) const;
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
@@ -316,7 +316,7 @@ class PixelArrayKernel {
   std::vector<std::uint64_t> draw_rc_;             // exact path: row and column of each short run's uniform
   std::vector<double> uniforms_;                   // .. and the uniforms (keyed_uniforms)
   ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry ..
-  std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run) ..
+  std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run, not keyed) ..
   std::vector<std::uint64_t> keys_;                // .. and memo keys (keyed_rows)
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
