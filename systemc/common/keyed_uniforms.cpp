@@ -39,27 +39,32 @@ void plain_grid(std::uint64_t frame_key, std::uint32_t row0, std::size_t rows, c
 typedef std::uint64_t U64x4 __attribute__((vector_size(32)));
 typedef double F64x4 __attribute__((vector_size(32)));
 
-__attribute__((target("avx2"))) inline U64x4 splitmix64x4(U64x4 x) {
+__attribute__((target("avx2"), always_inline)) inline U64x4 splitmix64x4(U64x4 x) {
   x += 0x9e3779b97f4a7c15ULL;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
 }
 
+// Four keys' uniforms (row_column in each lane) into u[0..3].
+__attribute__((target("avx2"), always_inline)) inline void four_uniforms(std::uint64_t frame_key, U64x4 rc, double* u) {
+  constexpr double kTwo84Plus52 = 19342813118337666422669312.0;  // 2^84 + 2^52
+  const U64x4 x = splitmix64x4(splitmix64x4(rc ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;  // keyed_uniform's
+  const U64x4 hi = (x >> 32) | 0x4530000000000000ULL, lo = (x & 0xffffffffULL) | 0x4330000000000000ULL;
+  F64x4 h, l;
+  std::memcpy(&h, &hi, sizeof h);
+  std::memcpy(&l, &lo, sizeof l);
+  const F64x4 v = ((h - kTwo84Plus52) + l + 0.5) * (1.0 / 9007199254740992.0);
+  std::memcpy(u, &v, sizeof v);
+}
+
 __attribute__((target("avx2"))) void avx2_loop(std::uint64_t frame_key, const std::uint64_t* rc, double* u,
                                                std::size_t n) {
-  constexpr double kTwo84Plus52 = 19342813118337666422669312.0;  // 2^84 + 2^52
   std::size_t i = 0;
   for (; i + 4 <= n; i += 4) {
     U64x4 x;
     std::memcpy(&x, rc + i, sizeof x);
-    x = splitmix64x4(splitmix64x4(x ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;  // keyed_uniform's
-    const U64x4 hi = (x >> 32) | 0x4530000000000000ULL, lo = (x & 0xffffffffULL) | 0x4330000000000000ULL;
-    F64x4 h, l;
-    std::memcpy(&h, &hi, sizeof h);
-    std::memcpy(&l, &lo, sizeof l);
-    const F64x4 v = ((h - kTwo84Plus52) + l + 0.5) * (1.0 / 9007199254740992.0);
-    std::memcpy(u + i, &v, sizeof v);
+    four_uniforms(frame_key, x, u + i);
   }
   plain_loop(frame_key, rc + i, u + i, n - i);
 }
@@ -67,21 +72,12 @@ __attribute__((target("avx2"))) void avx2_loop(std::uint64_t frame_key, const st
 // The grid's keys made in the lanes (four consecutive rows of one column) instead of read.
 __attribute__((target("avx2"))) void avx2_grid(std::uint64_t frame_key, std::uint32_t row0, std::size_t rows,
                                                const std::uint32_t* columns, std::size_t m, double* u) {
-  constexpr double kTwo84Plus52 = 19342813118337666422669312.0;  // 2^84 + 2^52
   constexpr std::uint64_t kRow = std::uint64_t{1} << 32;
   for (std::size_t t = 0; t < m; ++t, u += rows) {
     const std::uint64_t first = row_column(row0, columns[t]);
     U64x4 rc = {first, first + kRow, first + 2 * kRow, first + 3 * kRow};
     std::size_t i = 0;
-    for (; i + 4 <= rows; i += 4, rc += 4 * kRow) {
-      const U64x4 x = splitmix64x4(splitmix64x4(rc ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;  // keyed_uniform's
-      const U64x4 hi = (x >> 32) | 0x4530000000000000ULL, lo = (x & 0xffffffffULL) | 0x4330000000000000ULL;
-      F64x4 h, l;
-      std::memcpy(&h, &hi, sizeof h);
-      std::memcpy(&l, &lo, sizeof l);
-      const F64x4 v = ((h - kTwo84Plus52) + l + 0.5) * (1.0 / 9007199254740992.0);
-      std::memcpy(u + i, &v, sizeof v);
-    }
+    for (; i + 4 <= rows; i += 4, rc += 4 * kRow) four_uniforms(frame_key, rc, u + i);
     plain_grid(frame_key, row0 + static_cast<std::uint32_t>(i), rows - i, columns + t, 1, u + i);
   }
 }
