@@ -109,11 +109,12 @@ void PixelArrayKernel::start_run(const ExactRun& run, std::uint64_t* rc) {
   // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
   // pixels is one 8-byte move (a copy of a run-time size is a library call per row). A shape with a
   // memo key leaves them to finish_run, which writes each row's whole key.
-  if (keyed_rows(s)) {
-  } else if (n <= 8) {
-    for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), 8);
-  } else {
-    for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), n);
+  if (!keyed_rows(s)) {
+    if (n <= 8) {
+      for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), 8);
+    } else {
+      for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), n);
+    }
   }
   if (run.uniforms > 0) {
     if (!rc) return;
