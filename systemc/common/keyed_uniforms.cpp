@@ -49,7 +49,9 @@ __attribute__((target("avx2"), always_inline)) inline U64x4 splitmix64x4(U64x4 x
 // Four keys' uniforms (row_column in each lane) into u[0..3].
 __attribute__((target("avx2"), always_inline)) inline void four_uniforms(std::uint64_t frame_key, U64x4 rc, double* u) {
   constexpr double kTwo84Plus52 = 19342813118337666422669312.0;  // 2^84 + 2^52
-  const U64x4 x = splitmix64x4(splitmix64x4(rc ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;  // keyed_uniform's
+
+  // keyed_uniform's 53 bits, then as a double in (0, 1)
+  const U64x4 x = splitmix64x4(splitmix64x4(rc ^ frame_key) ^ 0x6b65796564753031ULL) >> 11;
   const U64x4 hi = (x >> 32) | 0x4530000000000000ULL, lo = (x & 0xffffffffULL) | 0x4330000000000000ULL;
   F64x4 h, l;
   std::memcpy(&h, &hi, sizeof h);

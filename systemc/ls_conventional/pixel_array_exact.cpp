@@ -92,8 +92,8 @@ void PixelArrayKernel::reset_exact() {
 }
 
 const PixelArrayKernel::ExactRun& PixelArrayKernel::run_of(int r) const {
-  const auto after = std::upper_bound(runs_.begin(), runs_.end(), r,
-                                      [](int row, const ExactRun& run) { return row < run.r0; });
+  const auto after =
+      std::upper_bound(runs_.begin(), runs_.end(), r, [](int row, const ExactRun& run) { return row < run.r0; });
   assert(after != runs_.begin() && r < (after - 1)->r1);
   return *(after - 1);
 }

@@ -239,9 +239,10 @@ class PixelArrayKernel {
   // of one shape, around the frame's batch of uniforms; and the latch of sampling k.
   void reset_exact();
   void start_run(const ExactRun& run, std::uint64_t* rc);  // rc: the run's first uniform key
-  template <int N>  // N samplings (0: any count)
+  // N samplings (0: any count)
+  template <int N>
   void finish_run(const ExactRun& run);
-  const ExactRun& run_of(int r) const;                      // the run that holds row r
+  const ExactRun& run_of(int r) const;  // the run that holds row r
   // The rows of shape s have memo keys that hold their first firings (fewer than 8 band pixels, all
   // certain or drawn by inversion): finish_run writes them from the keys.
   static bool keyed_rows(const RowShape& s) { return s.base_key != RowShape::kNoPattern && !s.one_by_one; }
