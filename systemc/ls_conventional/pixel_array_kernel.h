@@ -120,13 +120,14 @@ class PixelArrayKernel {
   // access's 365 rows have about 4). False where there are none (ask extent(r)).
   bool extent_patterns(const std::uint32_t*& row_pattern, const int*& first, const int*& last,
                        std::size_t& patterns) const {
-    if (!lazy_bits_ || sampling_ == 0) return false;
+    if (!has_extent_patterns()) return false;
     row_pattern = row_pattern_.data();
     first = pattern_first_.data();
     last = pattern_last_.data();
     patterns = patterns_;
     return true;
   }
+  bool has_extent_patterns() const { return lazy_bits_ && sampling_ != 0; }  // extent_patterns would give them
   int rows() const { return static_cast<int>(rows_.size()); }
   int first_row() const { return first_row_; }
   int columns() const { return config_.pixel.columns; }

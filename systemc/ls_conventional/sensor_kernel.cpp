@@ -175,10 +175,7 @@ void LsConventionalSensorKernel::step() {
     centres_clear_ = true;
   }
   if (p.search_start) {
-    const std::uint32_t* pattern = nullptr;
-    const int *first = nullptr, *last = nullptr;
-    std::size_t patterns = 0;
-    if (pixels_.extent_patterns(pattern, first, last, patterns)) {
+    if (pixels_.has_extent_patterns()) {
       centres_deferred_ = true;  // finish_frame works out every sampling's results at once
     } else {
       for_each_extent([&](std::size_t r, const ActivationExtent& e) { centre_[r].accumulate(search_[r].evaluate(e)); });
