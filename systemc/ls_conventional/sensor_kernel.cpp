@@ -102,13 +102,18 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
     }
     // Copied from the patterns straight into the result (elements read from memory: no
     // store-to-load forward to fail, as a struct built on the stack would).
-    for (std::size_t r = 0; r < rows; ++r) fr.rows.push_back(pattern_pins_[pattern[r]]);
-    for (std::size_t r = 0; r < rows; ++r) fr.extents.push_back(pattern_extent_[pattern[r]]);
+    fr.rows.resize(rows);
+    fr.extents.resize(rows);
+    CentreProcessorPins* pins = fr.rows.data();
+    ActivationExtent* extents = fr.extents.data();
+    for (std::size_t r = 0; r < rows; ++r) pins[r] = pattern_pins_[pattern[r]];
+    for (std::size_t r = 0; r < rows; ++r) extents[r] = pattern_extent_[pattern[r]];
   } else {
     pins_scratch_.resize(rows);
     for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
     fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
-    for_each_extent([&](std::size_t, const ActivationExtent& e) { fr.extents.push_back(e); });
+    fr.extents.resize(rows);
+    for_each_extent([&](std::size_t r, const ActivationExtent& e) { fr.extents[r] = e; });
   }
   centres_deferred_ = false;
   prepare_next_result();
@@ -120,17 +125,15 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
 }
 
 void LsConventionalSensorKernel::prepare_next_result() {
-  // The next frame result's memory, asked for now: a map's results (3.3 MB) are not in the cache,
-  // and stores into them at the frame's end waited for each line. The lines arrive while the next
-  // frame access is simulated.
+  // The next frame result's memory, asked for and filled now: a map's results (3.3 MB) are not in
+  // the cache, and stores into them at the frame's end waited for each line. A fill in one
+  // sequential sweep fetches the lines faster than the copy's stores or prefetches (2.7-2.9% of the
+  // map), and they stay in the cache while the next frame access is simulated.
   const std::size_t rows = static_cast<std::size_t>(config_.pixel.rows);
   next_rows_.reserve(rows);
   next_extents_.reserve(rows);
-  const auto prefetch = [](const void* p, std::size_t bytes) {
-    for (std::size_t b = 0; b < bytes; b += 64) __builtin_prefetch(static_cast<const char*>(p) + b, 1, 3);
-  };
-  prefetch(next_rows_.data(), centre_.size() * sizeof(CentreProcessorPins));
-  prefetch(next_extents_.data(), centre_.size() * sizeof(ActivationExtent));
+  next_rows_.resize(centre_.size());
+  next_extents_.resize(centre_.size());
 }
 
 void LsConventionalSensorKernel::tick() {
