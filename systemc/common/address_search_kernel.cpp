@@ -70,7 +70,8 @@ AddressSearchKernel::AddressSearchKernel(const AddressSearchConfig& config, int 
            std::to_string(config.addresses_per_sampling);
   });
   require(search_cycles >= 1, [&] { return "search_cycles must be >= 1, got " + std::to_string(search_cycles); });
-  act_ = ActivationRow(config.columns);
+  // act_ stays without words (every column off, as the RTL's reset value) until a start latches a
+  // row: a sensor builds a search per row, and with event skipping none of them ever latches one.
 }
 
 void AddressSearchKernel::tick(bool rst, bool start, const ActivationRow& act) {
@@ -78,10 +79,7 @@ void AddressSearchKernel::tick(bool rst, bool start, const ActivationRow& act) {
   if (rst) {
     state_ = State::Idle;
     count_ = 0;
-    if (act_.columns() == config_.columns)
-      act_.clear();  // in place: a sensor resets a kernel a row at every jump to a frame access
-    else
-      act_ = ActivationRow(config_.columns);
+    act_.clear();  // in place (width kept): a sensor resets a kernel a row at every jump to a frame access
     shift_ = 0;
     return;
   }

@@ -48,6 +48,12 @@ class ActivationRow {
     words_[wl] |= ml;
   }
   void clear() { std::fill(words_.begin(), words_.end(), 0); }  // every column off, width kept
+  void clear_to_width(int columns) {  // every column off, at width `columns` (words made only for a new width)
+    if (columns == columns_)
+      clear();
+    else
+      *this = ActivationRow(columns);
+  }
   bool any() const;
   int first() const;  // lowest activated column, -1 if none
   int last() const;   // highest activated column, -1 if none
@@ -139,7 +145,7 @@ class AddressSearchKernel {
   int stream_bits_;             // 2 * address_bits
   State state_ = State::Idle;   // RTL state_q
   int count_ = 0;               // RTL count_q: cycles spent in the current state
-  ActivationRow act_;           // RTL act_q: latched activation bits
+  ActivationRow act_;           // RTL act_q: latched activation bits (none before the first latch: all off)
   std::uint64_t shift_ = 0;     // RTL shift_q: {left, right}, MSB streamed first
   long long edges_ = 0;         // clock edges seen
 };

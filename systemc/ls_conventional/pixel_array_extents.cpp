@@ -44,7 +44,7 @@ inline bool fired_by(std::uint8_t first_firing, int k) {
 void PixelArrayKernel::set_row_bits(ActivationRow& act, const RowShape& s, const std::uint8_t* fk, int k) const {
   // What the latch holds at sampling k: the core ranges of samplings 1..k, then each band pixel as
   // its own first firing says (even inside a core range).
-  act.clear();
+  act.clear_to_width(columns());
   if (k == 0) return;
   act.set_range(s.held_first[static_cast<std::size_t>(k - 1)], s.held_last[static_cast<std::size_t>(k - 1)]);
   for (std::size_t j = 0; j < s.band.size(); ++j) act.set(s.band[j].column, fired_by(fk[j], k));

@@ -32,7 +32,7 @@ PixelArrayKernel::PixelArrayKernel(const LsConventionalConfig& config, const Pix
     throw std::invalid_argument("PixelArrayKernel: rows " + std::to_string(first_row_) + " + " + std::to_string(band) +
                                 " outside the array's " + std::to_string(config.pixel.rows));
   rows_.resize(static_cast<std::size_t>(band));
-  act_.assign(static_cast<std::size_t>(band), ActivationRow(config.pixel.columns));
+  act_.resize(static_cast<std::size_t>(band));  // given their width at a frame's reset (exact path: by row())
   act_at_.assign(static_cast<std::size_t>(band), 0);
   dark_V_ = golden::dark_voltage_V(config.pixel);
   electrons_per_V_ = golden::electrons_per_volt(config.pixel);
@@ -143,7 +143,7 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
       band_max_offset_V_ =
           *std::max_element(pat->max_offset_V.begin() + first_row_, pat->max_offset_V.begin() + first_row_ + rows());
     for (int r = 0; r < rows(); ++r) {
-      act_[static_cast<std::size_t>(r)].clear();
+      act_[static_cast<std::size_t>(r)].clear_to_width(columns());
       reset_row_pixels(r, stimulus_.rows[static_cast<std::size_t>(first_row_ + r)], rows_[static_cast<std::size_t>(r)]);
     }
     return;
@@ -155,7 +155,7 @@ void PixelArrayKernel::reset_frame(std::uint64_t frame) {
   for (int r = 0; r < rows(); ++r) {
     const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r)];
     RowState& row = rows_[static_cast<std::size_t>(r)];
-    act_[static_cast<std::size_t>(r)].clear();
+    act_[static_cast<std::size_t>(r)].clear_to_width(columns());
     set_window(in, row);
     const int W = std::max(0, row.last - row.first + 1);
     row.pixels.resize(static_cast<std::size_t>(W));
