@@ -288,7 +288,7 @@ class PixelArrayKernel {
   StimulusSource source_;                          // optics: stimulus per frame access
   FrameStimulus stimulus_;                         // the current frame access
   std::vector<RowState> rows_;                     // per row
-  mutable std::vector<ActivationRow> act_;         // latched activations per row (sized at a frame reset; exact path: by row())
+  mutable std::vector<ActivationRow> act_;         // latched per row (sized at a reset; exact path: by row())
   mutable std::vector<std::uint64_t> act_at_;      // exact path: the generation_ each row's bits were made at
   std::uint64_t generation_ = 1;                   // exact path: counts resets and samplings
   bool lazy_bits_ = false;                         // this frame access takes the exact path
