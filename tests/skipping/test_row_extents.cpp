@@ -97,8 +97,10 @@ TEST(KeyedUniforms, EqualThePixelsKeyedUniformsOneByOne) {
   // The batch (vectorised where the CPU allows) gives each pixel's own keyed_uniform bit for bit,
   // at every length (the vector loop's tail) and for rows and columns across the 32-bit range.
   std::mt19937_64 rng(11);
-  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{8}, std::size_t{9},
-                              std::size_t{1000}, std::size_t{4099}}) {
+  // (A step takes six: four in the vector lanes and two in general-purpose registers.)
+  for (const std::size_t n :
+       {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{6}, std::size_t{7}, std::size_t{8}, std::size_t{9},
+        std::size_t{11}, std::size_t{12}, std::size_t{1000}, std::size_t{4099}}) {
     const std::uint64_t frame_key = rs::frame_stream_key(rng(), rng());
     std::vector<std::uint64_t> rc(n);
     for (auto& x : rc) x = rs::row_column(static_cast<std::uint32_t>(rng()), static_cast<std::uint32_t>(rng()));
@@ -116,10 +118,12 @@ TEST(KeyedUniforms, EqualThePixelsKeyedUniformsOneByOne) {
 
 TEST(KeyedUniforms, GridsEqualThePixelsKeyedUniformsOneByOne) {
   // A grid (rows of some columns, keys made in the loop) gives each pixel's own keyed_uniform bit for
-  // bit: every row count around the vector width, rows up to the 32-bit limit, and no write past it.
+  // bit: every row count around the step (six rows: four in the vector lanes, two in registers),
+  // rows up to the 32-bit limit, and no write past it.
   std::mt19937_64 rng(12);
-  for (const std::size_t rows : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{5},
-                                 std::size_t{8}, std::size_t{365}, std::size_t{1027}}) {
+  for (const std::size_t rows :
+       {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{4}, std::size_t{5}, std::size_t{6}, std::size_t{7},
+        std::size_t{8}, std::size_t{11}, std::size_t{12}, std::size_t{13}, std::size_t{365}, std::size_t{1027}}) {
     for (const std::uint32_t row0 : {0U, 17U, 0xffffffffU - static_cast<std::uint32_t>(rows)}) {
       const std::uint64_t frame_key = rs::frame_stream_key(rng(), rng());
       std::vector<std::uint32_t> columns(3);
