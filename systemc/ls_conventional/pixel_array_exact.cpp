@@ -62,7 +62,40 @@ __attribute__((target("avx2"))) std::size_t single_draws_avx2(const double* __re
 }
 
 const bool kInvertAvx2 = __builtin_cpu_supports("avx2");
+
+// How many bytes from the start a and b agree on (at most n), 32 a step.
+__attribute__((target("avx2"))) std::size_t equal_prefix_avx2(const unsigned char* a, const unsigned char* b,
+                                                              std::size_t n) {
+  std::size_t i = 0;
+  for (; i + 32 <= n; i += 32) {
+    const __m256i x = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(a + i));
+    const __m256i y = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b + i));
+    const unsigned same = static_cast<unsigned>(_mm256_movemask_epi8(_mm256_cmpeq_epi8(x, y)));
+    if (same != 0xffffffffU) return i + static_cast<std::size_t>(__builtin_ctz(~same));
+  }
+  while (i < n && a[i] == b[i]) ++i;
+  return i;
+}
 #endif
+
+// How many of the n rows after p[0] repeat it byte for byte (p[1] == p[0], p[2] == p[1], ...): a
+// run's rows on a plane are one drive, and comparing their bytes is a vector loop.
+std::size_t repeated_rows(const RowIllumination* p, std::size_t n) {
+  static_assert(sizeof(RowIllumination) == 3 * sizeof(double), "no padding bytes to compare");
+  const auto* a = reinterpret_cast<const unsigned char*>(p + 1);
+  const auto* b = reinterpret_cast<const unsigned char*>(p);
+  const std::size_t bytes = n * sizeof(RowIllumination);
+#ifdef RANGESIM_INVERT_AVX2
+  if (kInvertAvx2) return equal_prefix_avx2(a, b, bytes) / sizeof(RowIllumination);
+#endif
+  std::size_t i = 0;
+  while (i < bytes && a[i] == b[i]) ++i;
+  return i / sizeof(RowIllumination);
+}
+
+bool same_drive(const RowIllumination& x, const RowIllumination& in) {
+  return x.signal_V == in.signal_V && x.background_V == in.background_V && x.centre_px == in.centre_px;
+}
 }  // namespace
 
 void PixelArrayKernel::reset_exact() {
@@ -85,11 +118,10 @@ void PixelArrayKernel::reset_exact() {
     // from every window pixel, and decides them there.
     const RowIllumination& in = stimulus_.rows[static_cast<std::size_t>(first_row_ + r0)];
     r1 = r0 + 1;
+    // (A row equal to r0's in value but not in bytes, as -0 and +0, goes on the run as before.)
     if (intervals_)
-      for (const RowIllumination* x = &in + 1; r1 < rows() && x->signal_V == in.signal_V &&
-                                               x->background_V == in.background_V && x->centre_px == in.centre_px;
-           ++x)
-        ++r1;
+      while (r1 < rows() && same_drive((&in)[r1 - r0], in))
+        r1 += 1 + static_cast<int>(repeated_rows(&in + (r1 - r0), static_cast<std::size_t>(rows() - r1 - 1)));
     const int shape = make_shape(first_row_ + r0, in, rows_[static_cast<std::size_t>(r0)]);
     const RowShape& s = shapes_[static_cast<std::size_t>(shape)];
     const std::size_t count = static_cast<std::size_t>(r1 - r0), n = s.band.size();
