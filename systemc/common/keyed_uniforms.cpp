@@ -78,7 +78,7 @@ __attribute__((target("avx2"))) void avx2_loop(std::uint64_t frame_key, const st
     u[i + 4] = one_uniform(frame_key, rc[i + 4]);
     u[i + 5] = one_uniform(frame_key, rc[i + 5]);
   }
-  plain_loop(frame_key, rc + i, u + i, n - i);
+  for (; i < n; ++i) u[i] = one_uniform(frame_key, rc[i]);
 }
 
 // The grid's keys made in the lanes (four consecutive rows of one column) instead of read.
@@ -94,7 +94,7 @@ __attribute__((target("avx2"))) void avx2_grid(std::uint64_t frame_key, std::uin
       u[i + 4] = one_uniform(frame_key, first + (i + 4) * kRow);
       u[i + 5] = one_uniform(frame_key, first + (i + 5) * kRow);
     }
-    plain_grid(frame_key, row0 + static_cast<std::uint32_t>(i), rows - i, columns + t, 1, u + i);
+    for (; i < rows; ++i) u[i] = one_uniform(frame_key, first + i * kRow);  // (row0 + i wraps as in row_column)
   }
 }
 #endif
