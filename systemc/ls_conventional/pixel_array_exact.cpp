@@ -99,11 +99,10 @@ bool same_drive(const RowIllumination& x, const RowIllumination& in) {
 }  // namespace
 
 void PixelArrayKernel::reset_exact() {
-  // Two passes around the frame's uniforms (made in vectorised loops): per run of rows with one
-  // drive (every row of a plane), its shape, the rows' certain first firings and, for a short run,
-  // the keys of the uniforms its random ones need; then the uniforms, the short runs' in one batch
-  // by their keys and each long run's as a grid of rows and columns (keyed_uniforms_grid: its keys
-  // are made in the loop); then per run the rows' draws and extents.
+  // Two passes around the short runs' uniforms (made in one vectorised batch by their keys): per
+  // run of rows with one drive (every row of a plane), its shape, the rows' certain first firings
+  // and, for a short run, the keys of the uniforms its random ones need; then per run the rows'
+  // draws and extents, a long run's uniforms made there (draw_run).
   const int N = config_.multisampling.samplings;
   shapes_used_ = 0;
   // Every row adds at most one extent pattern (those of rows found in a shape's memo are shared).
@@ -111,7 +110,7 @@ void PixelArrayKernel::reset_exact() {
   at_least(pattern_first_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   at_least(pattern_last_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   patterns_ = 0;
-  std::size_t band_total = 0, draws = 0, grid_draws = 0;
+  std::size_t band_total = 0, draws = 0;
   runs_.clear();
   for (int r0 = 0, r1 = 0; r0 < rows(); r0 = r1) {
     // The run: the rows with r0's drive. Without certain intervals every row makes its own shape
@@ -131,24 +130,15 @@ void PixelArrayKernel::reset_exact() {
     // What its rows share is kept once, for the run (nothing is written per row).
     const std::size_t uniforms = count * static_cast<std::size_t>(m);
     const bool grid = m > 0 && count >= kGridRows;
-    runs_.push_back(ExactRun{r0, r1, shape, m, band_total, grid ? grid_draws : draws, grid});
+    runs_.push_back(ExactRun{r0, r1, shape, m, band_total, grid ? 0 : draws, grid});
     at_least(band_k_, band_total + count * n + 8);  // 8 to spare (start_run)
     if (!grid) at_least(draw_rc_, draws + uniforms);
     start_run(runs_.back(), grid ? nullptr : draw_rc_.data() + draws);
     band_total += count * n;
-    (grid ? grid_draws : draws) += uniforms;
+    if (!grid) draws += uniforms;
   }
-  // The short runs' uniforms first, then the grids'.
-  uniforms_.resize(draws + grid_draws);
+  uniforms_.resize(draws);
   keyed_uniforms(frame_key_, draw_rc_.data(), uniforms_.data(), draws);
-  for (ExactRun& run : runs_)
-    if (run.grid) {
-      run.u_at += draws;
-      const RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
-      keyed_uniforms_grid(frame_key_, static_cast<std::uint32_t>(first_row_ + run.r0),
-                          static_cast<std::size_t>(run.r1 - run.r0), s.drawn_column.data(), s.drawn_column.size(),
-                          uniforms_.data() + run.u_at);
-    }
   for (const ExactRun& run : runs_) {
     switch (N) {  // the usual counts unrolled (the preset's is 4)
       case 2: finish_run<2>(run); break;
@@ -232,8 +222,28 @@ inline int first_firing_by_cuts(const double* cut, double u, int n, bool& betwee
 }  // namespace
 
 template <int N, bool Keyed>
-void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out) {
-  // The first firing of drawn pixel t on the run's row i, from u[t R + i]: into out[t R + i], or
+void PixelArrayKernel::draw_run(const ExactRun& run, const RowShape& s, std::size_t R, std::uint64_t* out) {
+  // A short run's uniforms are in the frame's batch. A long run's are made as a grid (keys made in
+  // the vector lanes), a drawn pixel's column just before its compares: one column's uniforms stay
+  // in the L1 cache, where the whole grid's (8.6 KB a frame access on the plane) did not.
+  const std::size_t m = static_cast<std::size_t>(run.uniforms);
+  if (!run.grid) {
+    invert_run<N, Keyed>(s, R, uniforms_.data() + run.u_at, out, 0, m);
+    return;
+  }
+  at_least(column_u_, R);
+  for (std::size_t t = 0; t < m; ++t) {
+    keyed_uniforms_grid(frame_key_, static_cast<std::uint32_t>(first_row_ + run.r0), R, s.drawn_column.data() + t, 1,
+                        column_u_.data());
+    invert_run<N, Keyed>(s, R, column_u_.data(), out, t, t + 1);
+  }
+}
+
+template <int N, bool Keyed>
+void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out, std::size_t t0,
+                                  std::size_t t1) {
+  // The first firing of drawn pixel t (t0 <= t < t1) on the run's row i, from u[(t - t0) R + i]:
+  // into out[t R + i], or
   // (Keyed) into row i's memo key out[i] at the pixel's byte, 8 at[t] (the key holds the shape's
   // certain first firings already, and 0 there). A pixel with one random sampling is a compare a
   // row, over the rows in one vector loop (the first firing selected by the compare's mask: a
@@ -241,9 +251,9 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
   // afterwards by golden's f. A pixel with several is one vector compare a sampling
   // (first_firing_by_cuts).
   const int n = config_.multisampling.samplings;
-  const std::size_t stride = 2 * static_cast<std::size_t>(n), m = s.drawn_at.size();
-  for (std::size_t t = 0; t < m; ++t) {
-    const double* __restrict ut = u + t * R;
+  const std::size_t stride = 2 * static_cast<std::size_t>(n);
+  for (std::size_t t = t0; t < t1; ++t) {
+    const double* __restrict ut = u + (t - t0) * R;
     std::uint64_t* __restrict ot = Keyed ? out : out + t * R;
     const unsigned shift = Keyed ? 8U * static_cast<unsigned>(s.drawn_at[t]) : 0U;
     const auto put = [ot, shift](std::size_t i, std::uint64_t k) {
@@ -301,10 +311,9 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
 
 template <int N>
 void PixelArrayKernel::finish_run(const ExactRun& run) {
-  // The run's rows, of one shape: their uniforms (from uniforms_[run.u_at], drawn pixel by drawn
-  // pixel and row by row within) inverted as draw() would one by one, then row by row its first
-  // firings, the memo key of them and its extents.
-  const double* u = uniforms_.data() + run.u_at;
+  // The run's rows, of one shape: their uniforms (drawn pixel by drawn pixel and row by row
+  // within: draw_run) inverted as draw() would one by one, then row by row its first firings, the
+  // memo key of them and its extents.
   const int r0 = run.r0;
   RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
   const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
@@ -322,7 +331,7 @@ void PixelArrayKernel::finish_run(const ExactRun& run) {
     at_least(keys_, R);
     std::uint64_t* __restrict keys = keys_.data();
     for (std::size_t i = 0; i < R; ++i) keys[i] = s.base_key;
-    if (m > 0) invert_run<N, true>(s, R, u, keys);
+    if (m > 0) draw_run<N, true>(run, s, R, keys);
     for (std::size_t i = 0; i < R; ++i, fk += n) {
       const std::uint64_t key = keys[i];
       if (i + 1 < R)
@@ -339,7 +348,7 @@ void PixelArrayKernel::finish_run(const ExactRun& run) {
   }
   if (m > 0) {
     at_least(k_scratch_, m * R);
-    invert_run<N, false>(s, R, u, k_scratch_.data());
+    draw_run<N, false>(run, s, R, k_scratch_.data());
   }
   const std::uint64_t* K = k_scratch_.data();
   const int* at = s.drawn_at.data();

@@ -178,8 +178,8 @@ class PixelArrayKernel {
     int shape = -1;           // its RowShape in shapes_
     int uniforms = 0;         // a row's band pixels drawn by inversion of the frame's keyed uniforms
     std::size_t band_at = 0;  // row r0 + i's band pixels' first firings from band_k_[band_at + i n]
-    std::size_t u_at = 0;     // its uniforms from uniforms_[u_at], drawn pixel by drawn pixel, row by row within
-    bool grid = false;        // they are made as a grid (at least kGridRows rows), without keys in draw_rc_
+    std::size_t u_at = 0;     // its uniforms from uniforms_[u_at], drawn pixel by drawn pixel, row by row within ..
+    bool grid = false;        // .. unless made as a grid (at least kGridRows rows) in draw_run, without keys
   };
   static constexpr std::size_t kGridRows = 8;
   // Exact path: a pixel looked at one by one, with its certain first firing or its drive for a draw.
@@ -249,7 +249,10 @@ class PixelArrayKernel {
   static bool keyed_rows(const RowShape& s) { return s.base_key != RowShape::kNoPattern && !s.one_by_one; }
   const RowShape& shape_of(int r) const { return shapes_[static_cast<std::size_t>(run_of(r).shape)]; }
   template <int N, bool Keyed>  // Keyed: into the rows' memo keys (keyed_rows)
-  void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out);
+  void draw_run(const ExactRun& run, const RowShape& s, std::size_t R, std::uint64_t* out);
+  template <int N, bool Keyed>  // drawn pixels t0 .. t1 - 1 of the shape
+  void invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out, std::size_t t0,
+                  std::size_t t1);
   int make_shape(int r, const RowIllumination& in, RowState& row);
   void plan_draws(RowShape& s) const;
   void core_ranges(const RowCertainty& c, double x0, RowShape& shape) const;
@@ -320,6 +323,7 @@ class PixelArrayKernel {
   ThresholdEntry* finish_entry_ = nullptr;         // finish_run: the run's threshold entry ..
   std::vector<std::uint64_t> k_scratch_;           // .. and its rows' first firings (invert_run, not keyed) ..
   std::vector<std::uint64_t> keys_;                // .. and memo keys (keyed_rows)
+  std::vector<double> column_u_;                   // draw_run: a long run's uniforms, one drawn pixel's
   double memo_threshold_V_ = -1, memo_cut_V_ = 0;  // last cut_swing_V
 };
 
