@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fmt/format.h>
 
 #include "core/user_error.h"
@@ -132,15 +133,19 @@ void SceneOptics::stimulus(std::uint64_t frame, systemc::FrameStimulus& out) con
   const bool spread = !taps_.empty();
   const int first = spread ? 0 : std::clamp(out.first_row, 0, rows());
   const int last = spread || out.row_count < 0 ? rows() : std::min(rows(), first + out.row_count);
-  // A plane puts the same lit point on every row: one truth for the frame access.
-  const bool same_every_row = scene_.shape == TargetShape::Plane;
-  const RowTruth plane = same_every_row ? truth(b, cot, first) : RowTruth{};
-  for (int r = first; r < last; ++r) {
-    const RowTruth t = same_every_row ? plane : truth(b, cot, r);
-    systemc::RowIllumination& in = out.rows[static_cast<std::size_t>(r)];
-    in.background_V = t.background_V;
-    in.signal_V = t.hit ? t.signal_V : 0.0;
-    in.centre_px = t.hit ? t.centre_px : 0.0;
+  const auto illumination = [](const RowTruth& t) {
+    return systemc::RowIllumination{t.hit ? t.signal_V : 0.0, t.background_V, t.hit ? t.centre_px : 0.0};
+  };
+  if (scene_.shape == TargetShape::Plane && last > first) {
+    // A plane puts the same lit point on every row: one truth for the frame access, its row copied
+    // to the others in doubling blocks (memcpy's wide stores; one row at a time was three 8-byte
+    // stores a row, 6% of the map).
+    systemc::RowIllumination* p = out.rows.data() + first;
+    const std::size_t n = static_cast<std::size_t>(last - first);
+    p[0] = illumination(truth(b, cot, first));
+    for (std::size_t have = 1; have < n; have *= 2) std::memcpy(p + have, p, std::min(have, n - have) * sizeof *p);
+  } else {
+    for (int r = first; r < last; ++r) out.rows[static_cast<std::size_t>(r)] = illumination(truth(b, cot, r));
   }
   if (spread) systemc::spread_spot(config_, taps_, out);
 }
