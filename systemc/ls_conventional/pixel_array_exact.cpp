@@ -109,6 +109,7 @@ void PixelArrayKernel::reset_exact() {
   row_pattern_.resize(static_cast<std::size_t>(rows()));
   at_least(pattern_first_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
   at_least(pattern_last_, static_cast<std::size_t>(rows()) * static_cast<std::size_t>(N));
+  at_least(pattern_key_, static_cast<std::size_t>(rows()));
   patterns_ = 0;
   std::size_t band_total = 0, draws = 0;
   runs_.clear();
@@ -165,8 +166,8 @@ void PixelArrayKernel::start_run(const ExactRun& run, std::uint64_t* rc) {
   const std::size_t n = s.band.size(), R = static_cast<std::size_t>(run.r1 - r0);
   std::uint8_t* fk = band_k_.data() + run.band_at;
   // Rows are written in order, and base_k and band_k_ have 8 bytes to spare: a band of up to 8
-  // pixels is one 8-byte move (a copy of a run-time size is a library call per row). A shape with a
-  // memo key leaves them to finish_run, which writes each row's whole key.
+  // pixels is one 8-byte move (a copy of a run-time size is a library call per row). The rows of a
+  // shape with a memo key keep their first firings in their keys instead (finish_run).
   if (!keyed_rows(s)) {
     if (n <= 8) {
       for (std::size_t i = 0; i < R; ++i) std::memcpy(fk + i * n, s.base_k.data(), 8);
@@ -326,23 +327,22 @@ void PixelArrayKernel::finish_run(const ExactRun& run) {
   if (keyed_rows(s)) {
     // The rows' keys (their first firings packed, n << 56 | fk[j] << 8 j): the shape's, with the
     // draws put in by the inversion's vector loops over the rows, a drawn pixel at a time. A key's
-    // low n bytes are then the row's first firings, stored in one 8-byte move in row order (the
-    // next row overwrites the rest; the run's last row stores n).
+    // low n bytes are the row's first firings; they are not stored per row: a row's pattern keeps
+    // the key it was made from (pattern_key_), which is the key of every row that shares it.
     at_least(keys_, R);
     std::uint64_t* __restrict keys = keys_.data();
     for (std::size_t i = 0; i < R; ++i) keys[i] = s.base_key;
     if (m > 0) draw_run<N, true>(run, s, R, keys);
-    for (std::size_t i = 0; i < R; ++i, fk += n) {
+    for (std::size_t i = 0; i < R; ++i) {
       const std::uint64_t key = keys[i];
-      if (i + 1 < R)
-        std::memcpy(fk, &key, 8);
-      else
-        std::memcpy(fk, &key, n);
       const std::size_t slot = RowShape::memo_slot(key);
-      if (s.memo_key[slot] == key)  // the shape's memo (fill_extents): the row shares its pattern
+      if (s.memo_key[slot] == key) {  // the shape's memo (fill_extents): the row shares its pattern
         row_pattern_[static_cast<std::size_t>(r0) + i] = s.memo_pattern[slot];
-      else
-        fill_extents(r0 + static_cast<int>(i), s, fk, key);  // not in the memo: worked out, and kept there
+      } else {  // not in the memo: worked out, and kept there
+        std::uint8_t first_firings[8];
+        std::memcpy(first_firings, &key, 8);
+        fill_extents(r0 + static_cast<int>(i), s, first_firings, key);
+      }
     }
     return;
   }

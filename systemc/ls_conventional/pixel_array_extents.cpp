@@ -53,8 +53,13 @@ void PixelArrayKernel::set_row_bits(ActivationRow& act, const RowShape& s, const
 void PixelArrayKernel::build_row(int r) const {
   const ExactRun& run = run_of(r);
   const RowShape& s = shapes_[static_cast<std::size_t>(run.shape)];
-  set_row_bits(act_[static_cast<std::size_t>(r)], s,
-               band_k_.data() + run.band_at + static_cast<std::size_t>(r - run.r0) * s.band.size(), sampling_);
+  std::uint8_t from_key[8];  // a keyed row's first firings: its pattern's key's low bytes (finish_run)
+  const std::uint8_t* fk = band_k_.data() + run.band_at + static_cast<std::size_t>(r - run.r0) * s.band.size();
+  if (keyed_rows(s)) {
+    std::memcpy(from_key, &pattern_key_[row_pattern_[static_cast<std::size_t>(r)]], 8);
+    fk = from_key;
+  }
+  set_row_bits(act_[static_cast<std::size_t>(r)], s, fk, sampling_);
   act_at_[static_cast<std::size_t>(r)] = generation_;
 }
 
@@ -118,6 +123,7 @@ void PixelArrayKernel::fill_extents(int r, RowShape& s, const std::uint8_t* fk, 
     default: hole = widen_by_band<0>(N, first, last, hf, hl, cf, fk, n);
   }
   if (hole) extents_from_bits(first, last, s, fk);
+  pattern_key_[p] = key;
   if (key == RowShape::kNoPattern) return;
   const std::size_t slot = RowShape::memo_slot(key);
   s.memo_key[slot] = key;

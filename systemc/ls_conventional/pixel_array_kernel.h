@@ -297,7 +297,8 @@ class PixelArrayKernel {
   bool lazy_bits_ = false;                         // this frame access takes the exact path
   std::vector<std::uint32_t> row_pattern_;         // exact path: row r's extents are this pattern's ..
   std::vector<int> pattern_first_, pattern_last_;  // .. at sampling k at p N + k - 1 (extent_patterns)
-  std::size_t patterns_ = 0;                       // .. of the frame access's first patterns_
+  std::size_t patterns_ = 0;                       // .. of the frame access's first patterns_ ..
+  std::vector<std::uint64_t> pattern_key_;         // .. and the memo key each was made from (keyed rows)
   std::uint64_t frame_ = 0;                        // current frame access
   bool have_frame_ = false;                        // reset_frame ran at least once
   bool per_pixel_ = false;                         // this frame access takes the per-pixel path
