@@ -333,11 +333,12 @@ void PixelArrayKernel::finish_run(const ExactRun& run) {
     std::uint64_t* __restrict keys = keys_.data();
     for (std::size_t i = 0; i < R; ++i) keys[i] = s.base_key;
     if (m > 0) draw_run<N, true>(run, s, R, keys);
+    std::uint32_t* const pattern_of_row = row_pattern_.data() + r0;  // (sized at the reset)
     for (std::size_t i = 0; i < R; ++i) {
       const std::uint64_t key = keys[i];
       const std::size_t slot = RowShape::memo_slot(key);
       if (s.memo_key[slot] == key) {  // the shape's memo (fill_extents): the row shares its pattern
-        row_pattern_[static_cast<std::size_t>(r0) + i] = s.memo_pattern[slot];
+        pattern_of_row[i] = s.memo_pattern[slot];
       } else {  // not in the memo: worked out, and kept there
         std::uint8_t first_firings[8];
         std::memcpy(first_firings, &key, 8);
