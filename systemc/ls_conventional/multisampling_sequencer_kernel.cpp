@@ -48,12 +48,14 @@ MultisamplingSequencerKernel::MultisamplingSequencerKernel(const FrameTimingConf
   events_.push_back(frame_cycles_);
   std::sort(events_.begin(), events_.end());
   events_.erase(std::unique(events_.begin(), events_.end()), events_.end());
+  for (std::size_t i = 0; i + 1 < events_.size(); ++i) event_pins_.push_back(pins_at(events_[i]));
   pins_ = pins_at(0);
 }
 
 void MultisamplingSequencerKernel::tick(bool rst) {
   cycle_ = rst ? 0 : cycle_ + 1;
   pins_ = pins_at(cycle_);
+  cursor_ = false;
 }
 
 MultisamplingSequencerPins MultisamplingSequencerKernel::pins_at(long long cycle) const {
@@ -84,16 +86,37 @@ MultisamplingSequencerPins MultisamplingSequencerKernel::pins_at(long long cycle
 }
 
 long long MultisamplingSequencerKernel::next_event_cycle() const {
+  if (cursor_) return frame_start_ + events_[next_];
   const long long c = cycle_in_frame();
   const auto it = std::upper_bound(events_.begin(), events_.end(), c);
   assert(it != events_.end());
   return cycle_ - c + *it;
 }
 
+void MultisamplingSequencerKernel::seek() {
+  const long long c = cycle_in_frame();
+  frame_ = static_cast<std::uint64_t>(cycle_ / frame_cycles_);
+  frame_start_ = cycle_ - c;
+  next_ = static_cast<std::size_t>(std::upper_bound(events_.begin(), events_.end(), c) - events_.begin());
+  cursor_ = true;
+}
+
 void MultisamplingSequencerKernel::advance_to(long long cycle) {
   assert(cycle >= cycle_ && "advance_to goes forward only");
+  if (cursor_ && cycle == frame_start_ + events_[next_]) {  // the next event, as event skipping goes
+    cycle_ = cycle;
+    if (next_ + 1 == events_.size()) {  // F: the next frame access's first cycle
+      ++frame_;
+      frame_start_ = cycle;
+      next_ = 0;
+    }
+    pins_ = event_pins_[next_++];
+    pins_.frame = frame_;
+    return;
+  }
   cycle_ = cycle;
   pins_ = pins_at(cycle_);
+  seek();
 }
 
 }  // namespace rangesim::systemc

@@ -72,8 +72,17 @@ class MultisamplingSequencerKernel {
   long long period_ = 0;             // P = L + S + A B, one sampling
   long long frame_cycles_ = 0;       // F
   std::vector<long long> events_;    // cycles within a frame at which pins change (sorted, ends with F)
+  std::vector<MultisamplingSequencerPins> event_pins_;  // pins_at(events_[i]) in frame 0, but the last
   long long cycle_ = 0;              // current cycle since reset release
   MultisamplingSequencerPins pins_;  // pins_at(cycle_), recomputed only when the cycle moves
+  // Event skipping's cursor, valid after an advance_to (tick leaves it): the current frame access
+  // (its number and first cycle) and the index in events_ of the first event after cycle_. An
+  // advance to that event then takes its pins from event_pins_, without pins_at's divisions.
+  bool cursor_ = false;
+  std::uint64_t frame_ = 0;
+  long long frame_start_ = 0;
+  std::size_t next_ = 0;
+  void seek();  // the cursor from cycle_
 };
 
 }  // namespace rangesim::systemc

@@ -104,7 +104,34 @@ TEST(MultisamplingSequencerKernel, EventSkippingVisitsExactlyThePinChanges) {
         skipped.advance_to(next);
         ASSERT_EQ(ticked.cycle(), skipped.cycle());
         ASSERT_EQ(ticked.pins(), skipped.pins());
+        ASSERT_EQ(skipped.pins(), skipped.pins_at(skipped.cycle()));
         prev = ticked.pins();
+      }
+    }
+  }
+}
+
+TEST(MultisamplingSequencerKernel, JumpsBetweenEventsKeepTheEventCursor) {
+  // advance_to a cycle that is not the next event (a jump to a frame access, or anywhere), then on
+  // by events: the pins are pins_at's at every stop, across frame accesses and after ticks.
+  for (const FrameTimingConfig& t : timing_variants()) {
+    for (int N : {1, 4}) {
+      rs::MultisamplingSequencerKernel k(t, N);
+      k.tick(true);
+      const long long F = k.frame_cycles();
+      for (long long jump : {F / 3, 2 * F + 1, 5 * F, 5 * F + F - 1, 7 * F + 2}) {
+        if (jump <= k.cycle()) continue;
+        k.advance_to(jump);
+        ASSERT_EQ(k.pins(), k.pins_at(jump)) << "jump to " << jump;
+        for (int e = 0; e < 3 * static_cast<int>(F); ++e) {
+          const long long next = k.next_event_cycle();
+          ASSERT_GT(next, k.cycle());
+          k.advance_to(next);
+          ASSERT_EQ(k.pins(), k.pins_at(next)) << "event at " << next << " after a jump to " << jump;
+          if (next > jump + 2 * F) break;
+        }
+        k.tick(false);
+        ASSERT_EQ(k.pins(), k.pins_at(k.cycle()));
       }
     }
   }
