@@ -60,6 +60,7 @@ TimedRun run_kernel(const Setup& s, bool sparse, bool skip, long long frames, in
   sc::SensorKernelOptions o;
   o.pixel.sparse = sparse;
   o.event_skipping = skip;
+  o.frame_extents = false;  // as `simulate` runs the map
   sc::SensorRunOptions run;
   run.frames = frames;
   run.threads = threads;

@@ -74,7 +74,7 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
   fr.rows = std::move(next_rows_);
   fr.extents = std::move(next_extents_);
   fr.rows.reserve(static_cast<std::size_t>(config_.pixel.rows));
-  fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
+  if (options_.frame_extents) fr.extents.reserve(static_cast<std::size_t>(config_.pixel.rows));
   const std::uint32_t* pattern = nullptr;
   const int *first = nullptr, *last = nullptr;
   std::size_t patterns = 0;
@@ -103,17 +103,21 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
     // Copied from the patterns straight into the result (elements read from memory: no
     // store-to-load forward to fail, as a struct built on the stack would).
     fr.rows.resize(rows);
-    fr.extents.resize(rows);
     CentreProcessorPins* pins = fr.rows.data();
-    ActivationExtent* extents = fr.extents.data();
     for (std::size_t r = 0; r < rows; ++r) pins[r] = pattern_pins_[pattern[r]];
-    for (std::size_t r = 0; r < rows; ++r) extents[r] = pattern_extent_[pattern[r]];
+    if (options_.frame_extents) {
+      fr.extents.resize(rows);
+      ActivationExtent* extents = fr.extents.data();
+      for (std::size_t r = 0; r < rows; ++r) extents[r] = pattern_extent_[pattern[r]];
+    }
   } else {
     pins_scratch_.resize(rows);
     for (std::size_t r = 0; r < rows; ++r) pins_scratch_[r] = centre_[r].pins();
     fr.rows.assign(pins_scratch_.begin(), pins_scratch_.end());
-    fr.extents.resize(rows);
-    for_each_extent([&](std::size_t r, const ActivationExtent& e) { fr.extents[r] = e; });
+    if (options_.frame_extents) {
+      fr.extents.resize(rows);
+      for_each_extent([&](std::size_t r, const ActivationExtent& e) { fr.extents[r] = e; });
+    }
   }
   centres_deferred_ = false;
   prepare_next_result();
@@ -131,8 +135,9 @@ void LsConventionalSensorKernel::prepare_next_result() {
   // map), and they stay in the cache while the next frame access is simulated.
   const std::size_t rows = static_cast<std::size_t>(config_.pixel.rows);
   next_rows_.reserve(rows);
-  next_extents_.reserve(rows);
   next_rows_.resize(centre_.size());
+  if (!options_.frame_extents) return;
+  next_extents_.reserve(rows);
   next_extents_.resize(centre_.size());
 }
 

@@ -30,6 +30,9 @@ namespace rangesim::systemc {
 struct SensorKernelOptions {
   PixelArrayOptions pixel;     // noise, seed, sparse, the band of rows
   bool event_skipping = true;  // step() jumps to the next event instead of ticking every cycle
+  // FrameResult::extents filled. A Monte Carlo trial tells an outlier by them; a range map reads
+  // only the pins (simulate turns them off: a third of the results' bytes, 7% of the plane map).
+  bool frame_extents = true;
 };
 
 // Outcome of one frame access.
@@ -39,7 +42,7 @@ struct FrameResult {
   // Per row (of the band), the extent of the activations latched by the last sampling (activations
   // only grow, so it holds every pixel that fired in the frame): a Monte Carlo trial tells an outlier
   // by it. The kernel's view of its pixel array, not an output pin: the sc_module and the RTL do not
-  // fill it and == leaves it out.
+  // fill it, nor the kernel with SensorKernelOptions::frame_extents off, and == leaves it out.
   std::vector<ActivationExtent> extents;
   long long end_cycle = 0;                               // cycles since reset release at the end of this frame
   long long cycles = 0;                                  // cycles of this frame access

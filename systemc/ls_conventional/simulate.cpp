@@ -51,6 +51,7 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
                           SimulationHost& host) {
   SensorKernelOptions kopt;
   kopt.event_skipping = !req.tick;
+  kopt.frame_extents = false;  // the map and the points read the pins only
   kopt.pixel.seed = req.seed;
   kopt.pixel.sparse = !req.dense;
   if (req.noise_free) kopt.pixel.noise = PixelNoiseConfig::none();

@@ -289,6 +289,33 @@ TEST(LsConventionalSensorKernel, CycleBudgetIsEnforced) {
   EXPECT_THROW(rs::run_sensor_kernel(small_config(), options(true), RandomStimulus{}, run), std::runtime_error);
 }
 
+TEST(LsConventionalSensorKernel, FrameExtentsOffLeavesThePinsAlone) {
+  // SensorKernelOptions::frame_extents off (simulate's range map): the same frames (pins, cycles),
+  // no extents; on: one extent per row. Event skipping and ticking,
+  // one thread and two.
+  const LsConventionalConfig c = small_config(23, 96, 4);
+  RandomStimulus stim;
+  stim.sig_lo = 0.011;
+  stim.sig_hi = 0.05;  // near the threshold: noise decides
+  for (const bool skip : {true, false}) {
+    for (const int threads : {1, 2}) {
+      rs::SensorRunOptions run;
+      run.frames = 12;
+      run.threads = threads;
+      rs::SensorKernelOptions with = options(skip, true), without = options(skip, true);
+      without.frame_extents = false;
+      const auto a = rs::run_sensor_kernel(c, with, stim, run);
+      const auto b = rs::run_sensor_kernel(c, without, stim, run);
+      ASSERT_EQ(a.frames.size(), b.frames.size());
+      for (std::size_t f = 0; f < a.frames.size(); ++f) {
+        EXPECT_TRUE(a.frames[f] == b.frames[f]) << f;
+        EXPECT_EQ(a.frames[f].extents.size(), static_cast<std::size_t>(c.pixel.rows)) << f;
+        EXPECT_TRUE(b.frames[f].extents.empty()) << f;
+      }
+    }
+  }
+}
+
 TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
   // run_sensor_kernel splits the rows into bands, one thread each: the keyed streams make every
   // row's bits the same in any band, so the merged frames (their activation extents too) equal the
