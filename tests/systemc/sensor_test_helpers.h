@@ -46,6 +46,14 @@ struct RandomStimulus {
   }
 };
 
+// RandomStimulus with the spot's signal from 0.011 V to sig_hi: near the threshold, the noise decides.
+inline RandomStimulus near_threshold(double sig_hi = 0.05) {
+  RandomStimulus s;
+  s.sig_lo = 0.011;
+  s.sig_hi = sig_hi;
+  return s;
+}
+
 // Every row and frame the same illumination.
 struct UniformStimulus {
   RowIllumination row;

@@ -23,6 +23,7 @@ namespace rs = rangesim::systemc;
 namespace golden = rangesim::golden;
 using rangesim::FrameTimingConfig;
 using rangesim::LsConventionalConfig;
+using rs::test::near_threshold;
 using rs::test::RandomStimulus;
 using rs::test::small_config;
 
@@ -176,9 +177,7 @@ TEST(LsConventionalSensorKernel, SparsePixelsEqualDensePixels) {
 
 TEST(LsConventionalSensorKernel, SameSeedSameBitsOtherSeedOtherBits) {
   const LsConventionalConfig c = small_config(40, 96, 4);
-  RandomStimulus stim;
-  stim.sig_lo = 0.011;
-  stim.sig_hi = 0.02;  // near the threshold: noise decides
+  const RandomStimulus stim = near_threshold(0.02);
   const auto a = run(c, options(true, true, true, 11), 3, stim);
   const auto b = run(c, options(true, true, true, 11), 3, stim);
   const auto d = run(c, options(true, true, true, 12), 3, stim);
@@ -291,12 +290,9 @@ TEST(LsConventionalSensorKernel, CycleBudgetIsEnforced) {
 
 TEST(LsConventionalSensorKernel, FrameExtentsOffLeavesThePinsAlone) {
   // SensorKernelOptions::frame_extents off (simulate's range map): the same frames (pins, cycles),
-  // no extents; on: one extent per row. Event skipping and ticking,
-  // one thread and two.
+  // no extents; on: one extent per row. Event skipping and ticking, one thread and two.
   const LsConventionalConfig c = small_config(23, 96, 4);
-  RandomStimulus stim;
-  stim.sig_lo = 0.011;
-  stim.sig_hi = 0.05;  // near the threshold: noise decides
+  const RandomStimulus stim = near_threshold();
   for (const bool skip : {true, false}) {
     for (const int threads : {1, 2}) {
       rs::SensorRunOptions run;
@@ -321,9 +317,7 @@ TEST(LsConventionalSensorKernel, RowBandsOnThreadsEqualOneThread) {
   // row's bits the same in any band, so the merged frames (their activation extents too) equal the
   // one-thread run's.
   const LsConventionalConfig c = small_config(23, 96, 4);
-  RandomStimulus stim;
-  stim.sig_lo = 0.011;
-  stim.sig_hi = 0.05;  // near the threshold: noise decides
+  const RandomStimulus stim = near_threshold();
   for (const bool noise : {true, false}) {
     rs::SensorRunOptions run;
     run.frames = 20;
@@ -352,9 +346,7 @@ TEST(LsConventionalSensorKernel, FrameAccessesOnThreadsEqualOneThread) {
   // number, so the joined frames equal the one-thread run's, ticked or event-skipping, sparse or
   // dense, for frame counts that do not split evenly; the cycles, clock edges and pixels add up.
   const LsConventionalConfig c = small_config(23, 96, 4);
-  RandomStimulus stim;
-  stim.sig_lo = 0.011;
-  stim.sig_hi = 0.05;  // near the threshold: noise decides
+  const RandomStimulus stim = near_threshold();
   for (const bool skip : {true, false})
     for (const bool noise : {true, false})
       for (const bool sparse : {true, false}) {
