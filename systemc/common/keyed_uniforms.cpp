@@ -77,10 +77,10 @@ __attribute__((target("avx2"), always_inline)) inline void four_uniforms(std::ui
   std::memcpy(u, &v, sizeof v);
 }
 
-// The plain loop's formula for one key, inlined among the vector steps: the 64-bit multiplies of
-// the general-purpose registers run beside the vector unit's (whose 64-bit multiplies are three
-// 32-bit ones each, the loop's limit). Four uniforms in the lanes and two here per step took
-// 2.00-2.03 ns a uniform against 2.32-2.34 with the lanes alone (isolated grid loop, pinned).
+// The plain loop's formula for one key, inlined among the vector steps: the general-purpose
+// registers' 64-bit multiplies run beside the vector unit's. Four uniforms in the lanes and two
+// here per step took 2.00-2.03 ns a uniform against 2.32-2.34 with the lanes alone (isolated grid
+// loop, pinned, before times).
 __attribute__((target("avx2"), always_inline)) inline double one_uniform(std::uint64_t frame_key, std::uint64_t rc) {
   return keyed_uniform(splitmix64(frame_key ^ rc));
 }

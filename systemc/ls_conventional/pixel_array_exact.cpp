@@ -13,7 +13,7 @@
 #endif
 // GCC's target attribute is an x86 ELF feature; elsewhere the SSE2 or plain loop alone.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
-#define RANGESIM_INVERT_AVX2 1
+#define RANGESIM_EXACT_AVX2 1
 #include <immintrin.h>
 #endif
 
@@ -33,7 +33,7 @@ void at_least(V& v, std::size_t n) {
   if (v.size() < n) v.resize(std::max(n, 2 * v.size()));
 }
 
-#ifdef RANGESIM_INVERT_AVX2
+#ifdef RANGESIM_EXACT_AVX2
 // invert_run's loop for a pixel with one random sampling, four rows a step where the CPU has AVX2
 // (the SSE2 loop takes two): row i's first firing kf where ut[i] < lo, else ke, at bit `shift` of
 // ot[i] (Keyed: ORed into it). Returns the rows done (a multiple of 4); `between` is nonzero when
@@ -61,7 +61,10 @@ __attribute__((target("avx2"))) std::size_t single_draws_avx2(const double* __re
   return i;
 }
 
-const bool kInvertAvx2 = __builtin_cpu_supports("avx2");
+bool avx2() {  // asked once, after the CPU's features are known (not during static initialisation)
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
 
 // How many bytes from the start a and b agree on (at most n), 32 a step.
 __attribute__((target("avx2"))) std::size_t equal_prefix_avx2(const unsigned char* a, const unsigned char* b,
@@ -85,8 +88,8 @@ std::size_t repeated_rows(const RowIllumination* p, std::size_t n) {
   const auto* a = reinterpret_cast<const unsigned char*>(p + 1);
   const auto* b = reinterpret_cast<const unsigned char*>(p);
   const std::size_t bytes = n * sizeof(RowIllumination);
-#ifdef RANGESIM_INVERT_AVX2
-  if (kInvertAvx2) return equal_prefix_avx2(a, b, bytes) / sizeof(RowIllumination);
+#ifdef RANGESIM_EXACT_AVX2
+  if (avx2()) return equal_prefix_avx2(a, b, bytes) / sizeof(RowIllumination);
 #endif
   std::size_t i = 0;
   while (i < bytes && a[i] == b[i]) ++i;
@@ -244,9 +247,8 @@ template <int N, bool Keyed>
 void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double* u, std::uint64_t* out, std::size_t t0,
                                   std::size_t t1) {
   // The first firing of drawn pixel t (t0 <= t < t1) on the run's row i, from u[(t - t0) R + i]:
-  // into out[t R + i], or
-  // (Keyed) into row i's memo key out[i] at the pixel's byte, 8 at[t] (the key holds the shape's
-  // certain first firings already, and 0 there). A pixel with one random sampling is a compare a
+  // into out[t R + i], or (Keyed) into row i's memo key out[i] at the pixel's byte, 8 at[t] (the
+  // key holds the shape's certain first firings already, and 0 there). A pixel with one random sampling is a compare a
   // row, over the rows in one vector loop (the first firing selected by the compare's mask: a
   // branch on u mispredicts every other draw); u between its cuts (~2e-5 of the draws) is decided
   // afterwards by golden's f. A pixel with several is one vector compare a sampling
@@ -270,8 +272,8 @@ void PixelArrayKernel::invert_run(const RowShape& s, std::size_t R, const double
       const std::uint64_t kf = s.drawn_fire[t], ke = s.drawn_else[t];
       std::uint64_t between = 0;
       std::size_t i = 0;
-#ifdef RANGESIM_INVERT_AVX2
-      if (kInvertAvx2) i = single_draws_avx2<Keyed>(ut, R, lo, hi, kf, ke, shift, ot, between);
+#ifdef RANGESIM_EXACT_AVX2
+      if (avx2()) i = single_draws_avx2<Keyed>(ut, R, lo, hi, kf, ke, shift, ot, between);
 #endif
 #if defined(__SSE2__)
       // Two rows a step (the compiler does not vectorise the loop below by itself).
