@@ -129,10 +129,10 @@ void LsConventionalSensorKernel::finish_frame(const MultisamplingSequencerPins& 
 }
 
 void LsConventionalSensorKernel::prepare_next_result() {
-  // The next frame result's memory, asked for and filled now: a map's results (3.3 MB) are not in
-  // the cache, and stores into them at the frame's end waited for each line. A fill in one
-  // sequential sweep fetches the lines faster than the copy's stores or prefetches (2.7-2.9% of the
-  // map), and they stay in the cache while the next frame access is simulated.
+  // The next frame result's memory, asked for and filled now: a map's results (2.2 MB of pins) are
+  // not in the cache, and stores into them wait for their lines. A fill in one sequential sweep
+  // fetches them faster than the copy's stores at the frame's end or prefetches did (2.7-2.9% of
+  // the map).
   const std::size_t rows = static_cast<std::size_t>(config_.pixel.rows);
   next_rows_.reserve(rows);
   next_rows_.resize(centre_.size());
