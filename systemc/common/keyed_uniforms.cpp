@@ -2,18 +2,15 @@
 
 #include <cstring>
 
+// GCC's function clones and target attributes are an x86 ELF feature; other targets get the loop.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
+#define RANGESIM_KEYED_UNIFORMS_X86 1
 #include <immintrin.h>
 #endif
 
 #include "systemc/common/random_stream.h"
 
 namespace rangesim::systemc {
-
-// GCC's function clones and target attributes are an x86 ELF feature; other targets get the loop.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
-#define RANGESIM_KEYED_UNIFORMS_X86 1
-#endif
 
 namespace {
 
