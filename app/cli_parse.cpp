@@ -296,13 +296,19 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
                   "the other sensors' kernels run on one thread and refuse more")
       ->transform(integer_in(1, 1024));
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png and range_error.png");
+  sim->add_flag("--points", sim_opt.points,
+                "Also write the per-point table, points.npy or points.csv: per frame and row (tof-spad: per\n"
+                "pixel; tof-lockin has none) the truth, the detection, the range, its error and validity.\n"
+                "Off by default: a full ls-conventional map's table is 9.6 MB, four times both maps");
   auto* csv_flag =
       sim->add_flag("--csv", sim_opt.csv,
-                    "Write range_map and points as CSV. Default: a table of more than 100,000 numbers as NumPy\n"
-                    ".npy (numpy.load; range_map.npy a float64 matrix, NaN = no range; points.npy a record array\n"
-                    "with the CSV's columns as fields: indices int32, flags bool, counts int64, the rest float64),\n"
-                    "smaller ones as CSV; frames.csv is always CSV");
-  sim->add_flag("--npy", sim_opt.npy, "Write range_map and points as NumPy .npy, small ones too")->excludes(csv_flag);
+                    "Write range_map, confidence_map and points (--points) as CSV. Default: a table of more than\n"
+                    "100,000 numbers as NumPy .npy (numpy.load; range_map.npy a float64 matrix, NaN = no range;\n"
+                    "points.npy a record array with the CSV's columns as fields: indices int32, flags bool,\n"
+                    "counts int64, the rest float64), smaller ones as CSV; frames.csv is always CSV");
+  sim->add_flag("--npy", sim_opt.npy,
+                "Write range_map, confidence_map and points (--points) as NumPy .npy, small ones too")
+      ->excludes(csv_flag);
   sim->add_option("--time-step", sim_opt.time_step_s,
                   "Integrate the received pulse's overlap with the gate windows numerically at this step in\n"
                   "seconds (midpoint rule; allowed T0 / 1e5 .. T0) instead of in closed form; 0 (default) = exact.\n"

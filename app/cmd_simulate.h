@@ -31,7 +31,8 @@ struct SimulateOptions {
   bool dense = false;         // --dense / --no-sparse: simulate every pixel (no sparse window)
   bool no_aggregate = false;  // --no-aggregate: ls-demodulation correlation periods / tof-lockin accumulation periods /
                               // tof-spad laser cycles one by one
-  bool no_plots = false;      // --no-plots: skip range_map.png
+  bool no_plots = false;      // --no-plots: skip range_map.png and range_error.png
+  bool points = false;        // --points: write the per-point table (points.csv / points.npy)
   // --csv / --npy: range map and points as CSV / as .npy; default: .npy for a table of more than
   // kNpyMinValues numbers, CSV for smaller ones (simulate_render.h). frames.csv is always CSV.
   bool csv = false;

@@ -49,6 +49,7 @@ py::object simulate(const Sensor& sensor, const py::object& scene, std::optional
   opt.no_aggregate = no_aggregate;
   opt.time_step_s = time_step;
   opt.no_plots = true;
+  opt.points = true;  // points_csv is part of the result
   const app::SimulateEntry& entry = app::simulate_entry_for(sensor.params, opt);
   if (use_systemc) {
     // SystemC allows one elaboration per process (its simulation context cannot be reset).

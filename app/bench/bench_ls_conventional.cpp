@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "app/bench/bench_figures.h"
+#include "app/bench/bench_output_share.h"
 #include "app/bench/bench_util.h"
 #include "golden/common/activation_cdf.h"
 #include "systemc/common/random_stream.h"
@@ -155,7 +156,8 @@ const std::vector<FigureSpec>& ls_conventional_figures() {
        "simulated time / the ls-conventional map's run time on both cores (half its frame accesses on each: "
        "the slower thread's CPU time; chip 1.0)"},
       {"output_share", "<= 0.1",
-       "output writing (files, plot) / CPU time of `simulate ls-conventional --kernel-only` on the map"},
+       "output writing (files, images) / wall time of `simulate ls-conventional --kernel-only` on the map "
+       "(whole process, median of 5 runs; the CPU share in bench.json)"},
   };
   return f;
 }
@@ -273,57 +275,10 @@ json bench_ls_conventional(const LsConventionalBenchOptions& opt) {
   out["floor_ratio"] = tj;
 
   // ---- what the outputs cost: `simulate --kernel-only` on the map, its own output time ----
-  if (!opt.scratch_dir.empty()) {
-    progress("ls-conventional: output share of `simulate --kernel-only` (full map, as a child process)");
-    json os;
-    for (const bool plots : {true, false}) {
-      std::vector<std::string> args = {"simulate",
-                                       "ls-conventional",
-                                       "--scene",
-                                       scene_path("plane.toml"),
-                                       "--kernel-only",
-                                       "--json",
-                                       "--force",
-                                       "--out",
-                                       opt.scratch_dir + (plots ? "/output-share" : "/output-share-no-plots")};
-      if (!plots) args.push_back("--no-plots");
-      // The run with the least CPU of kOutputRuns: the first is the bench's first `simulate`, whose
-      // binary pages and folder are cold (up to twice the CPU of the next).
-      constexpr int kOutputRuns = 3;
-      std::string text;
-      double wall = 0, cpu = 0;
-      for (int i = 0; i < kOutputRuns; ++i) {
-        std::string t;
-        const auto w0 = Clock::now();
-        const double c0 = children_cpu_now();
-        const int rc = run_self(args, t);
-        const double w = seconds_since(w0), c = children_cpu_now() - c0;
-        if (rc != 0) throw std::runtime_error(fmt::format("bench: simulate for output_share exited with {}", rc));
-        if (i == 0 || c < cpu) text = t, wall = w, cpu = c;
-      }
-      const json sj = json::parse(text);
-      // CPU times, as every figure here: on a shared machine the wall time of file writes and of
-      // gnuplot depends on everybody else's load (the wall share is in details).
-      const double output_s = sj["output_cpu_s"].get<double>(), output_wall_s = sj["output_wall_time_s"].get<double>();
-      json one = {{"process_wall_s", wall},
-                  {"process_cpu_s", cpu},
-                  {"output_cpu_s", output_s},
-                  {"output_wall_s", output_wall_s},
-                  {"simulation_wall_s", sj["simulation_wall_time_s"]},
-                  {"share", output_s / cpu},
-                  {"wall_share", output_wall_s / wall}};
-      if (plots) {
-        os = ratio(output_s / cpu, "<= 0.1", output_s / cpu <= 0.1);
-        os["with_plot"] = one;
-      } else {
-        os["no_plots"] = one;
-      }
-    }
-    os["command"] = "rangesim simulate ls-conventional --scene scenes/plane.toml --kernel-only [--no-plots]";
-    out["output_share"] = os;
-  } else {
+  if (!opt.scratch_dir.empty())
+    out["output_share"] = bench_output_share(opt.scratch_dir);
+  else
     out["output_share"] = json{{"value", nullptr}, {"target", "<= 0.1"}, {"note", "no scratch folder"}};
-  }
 
   // ---- SystemC module vs bare kernel (both tick every clock edge: the module drives that kernel) ----
   const long long sc_frames = opt.quick ? 10 : 60;

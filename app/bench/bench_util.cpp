@@ -1,11 +1,13 @@
 #include "app/bench/bench_util.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -99,6 +101,48 @@ int run_self(const std::vector<std::string>& args, std::string& stdout_text) {
   while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) stdout_text.append(buf, n);
   const int status = ::pclose(p);
   return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
+SelfRun run_self_timed(const std::vector<std::string>& args) {
+  std::vector<std::string> argv_text = {"rangesim"};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  int fd[2];
+  if (::pipe(fd) != 0) throw std::runtime_error("bench: pipe() failed");
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const auto t0 = Clock::now();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error("bench: fork() failed");
+  if (pid == 0) {
+    ::dup2(fd[1], 1);
+    ::close(fd[0]);
+    ::close(fd[1]);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) ::dup2(null, 2);
+    ::execv("/proc/self/exe", argv.data());
+    ::_exit(127);
+  }
+  ::close(fd[1]);
+  SelfRun r;
+  char buf[65536];
+  for (ssize_t n; (n = ::read(fd[0], buf, sizeof buf)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    r.out.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd[0]);
+  int status = 0;
+  rusage u{};
+  while (::wait4(pid, &status, 0, &u) < 0 && errno == EINTR) {
+  }
+  r.wall_s = seconds_since(t0);
+  auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  r.cpu_s = s(u.ru_utime) + s(u.ru_stime);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+  return r;
 }
 
 std::string scene_path(const std::string& file) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -27,6 +28,16 @@ nlohmann::json run_in_child(const std::function<nlohmann::json()>& job);
 // Runs this rangesim binary with `args` (shell-quoted here), stdout captured; returns the exit
 // code. stderr is discarded (the child's progress lines are not ours to show).
 int run_self(const std::vector<std::string>& args, std::string& stdout_text);
+
+// One run of this rangesim binary with `args`, started directly (no shell) and timed as one whole
+// process, start-up included: its wall time from fork to exit, its CPU time (wait4), its stdout
+// (stderr is discarded) and its exit code.
+struct SelfRun {
+  int exit_code = 0;
+  std::string out;
+  double wall_s = 0, cpu_s = 0;
+};
+SelfRun run_self_timed(const std::vector<std::string>& args);
 
 // "bench: <what>" on stderr with the elapsed time since the bench started.
 void progress(const std::string& what);

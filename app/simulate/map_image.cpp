@@ -5,6 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "app/simulate/bitmap_font.h"
 #include "app/simulate/png_writer.h"
@@ -71,6 +77,15 @@ class Canvas {
   IndexedImage& im_;
 };
 
+// The ramp's colour of value v on [lo, lo + span]: x = (v - lo) / span clamped to [0, 1], then
+// x (kRampSize - 1) rounded half up, as std::lround does for x >= 0, without its library call or a
+// branch on the fraction (y - k is exact, and 2 (y - k) truncates to 1 from 0.5 on).
+std::uint8_t ramp_index(double v, double lo, double span) {
+  const double y = std::min(std::max((v - lo) / span, 0.0), 1.0) * (kRampSize - 1);
+  const int k = static_cast<int>(y);
+  return static_cast<std::uint8_t>(kRamp0 + k + static_cast<int>(2 * (y - k)));
+}
+
 // Tick values: a step of 1, 2 or 5 times a power of ten giving at most `most` ticks over [lo, hi].
 std::vector<double> ticks(double lo, double hi, int most) {
   const double span = std::max(hi - lo, 1e-300);
@@ -130,6 +145,56 @@ std::string fit(const std::string& s, std::size_t chars) {
 
 }  // namespace
 
+// With SSE2, four cells a step with the same operations in the same order as ramp_index, so the
+// same bytes (test: MapImage.RowColoursEqualTheScalarRamp); the scalar loop took 0.5 ms of a full
+// map's 137,000 cells (its clamps are branches).
+void map_row_colours(const double* v, int n, double lo, double span, std::uint8_t* out) {
+  int c = 0;
+#if defined(__SSE2__)
+  const __m128d lo2 = _mm_set1_pd(lo), span2 = _mm_set1_pd(span), zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
+  const __m128d top = _mm_set1_pd(kRampSize - 1), two = _mm_set1_pd(2.0);
+  const __m128d largest = _mm_set1_pd(std::numeric_limits<double>::max());
+  const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  const __m128i ramp0 = _mm_set1_epi32(kRamp0);
+  // Two cells' indices as int32 in the low lanes; 0 (kWhite) where a value is not finite.
+  auto pair = [&](const double* p) {
+    const __m128d x = _mm_loadu_pd(p);
+    const __m128d finite = _mm_cmple_pd(_mm_and_pd(x, magnitude), largest);  // false for NaN and inf
+    const __m128d y =
+        _mm_mul_pd(_mm_min_pd(_mm_max_pd(_mm_div_pd(_mm_sub_pd(_mm_and_pd(finite, x), lo2), span2), zero), one), top);
+    const __m128i k = _mm_cvttpd_epi32(y);
+    const __m128i f = _mm_cvttpd_epi32(_mm_mul_pd(two, _mm_sub_pd(y, _mm_cvtepi32_pd(k))));
+    const __m128i keep = _mm_shuffle_epi32(_mm_castpd_si128(finite), _MM_SHUFFLE(3, 3, 2, 0));
+    return _mm_and_si128(_mm_add_epi32(_mm_add_epi32(ramp0, k), f), keep);
+  };
+  for (; c + 4 <= n; c += 4) {
+    const __m128i four = _mm_unpacklo_epi64(pair(v + c), pair(v + c + 2));
+    const __m128i bytes = _mm_packus_epi16(_mm_packs_epi32(four, four), _mm_setzero_si128());
+    const int packed = _mm_cvtsi128_si32(bytes);
+    std::memcpy(out + c, &packed, 4);
+  }
+#endif
+  for (; c < n; ++c) out[c] = std::isfinite(v[c]) ? ramp_index(v[c], lo, span) : kWhite;
+}
+
+// A copy of the differences as floats ordered only as far as the element (nth_element). Tried and
+// not kept: a count of the floats' top bits, then ordering only the bucket that holds the element,
+// with no copy of the map: 0.90 against 0.57 ms on a full plane map's errors (the map read twice).
+double abs_difference_quantile(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
+                               double q) {
+  std::vector<float> v;
+  v.reserve(a.size() * (a.empty() ? 0 : a[0].size()));
+  for (std::size_t r = 0; r < a.size() && r < b.size(); ++r)
+    for (std::size_t c = 0, n = std::min(a[r].size(), b[r].size()); c < n; ++c) {
+      const double e = a[r][c] - b[r][c];
+      if (std::isfinite(e)) v.push_back(static_cast<float>(std::fabs(e)));
+    }
+  if (v.empty()) return -1;
+  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
 struct MapImageWriter::Buffers {
   IndexedImage image{1, 1};
   std::vector<double> values;  // one map row
@@ -162,13 +227,7 @@ void MapImageWriter::write(const std::string& path, int rows, int cols,
     set_ramp(im, kViridis);
   else
     set_ramp(im, kDiverging);
-  auto colour = [&](double v) {
-    // x (kRampSize - 1) rounded half up, as std::lround does for x >= 0, without its library call
-    // or a branch on the fraction (y - k is exact, and 2 (y - k) truncates to 1 from 0.5 on).
-    const double y = std::min(std::max((v - spec.lo) / span, 0.0), 1.0) * (kRampSize - 1);
-    const int k = static_cast<int>(y);
-    return static_cast<std::uint8_t>(kRamp0 + k + static_cast<int>(2 * (y - k)));
-  };
+  auto colour = [&](double v) { return ramp_index(v, spec.lo, span); };
   Canvas cv(im);
   // The map, row 0 at the bottom.
   std::vector<double>& vals = b_->values;
@@ -177,9 +236,13 @@ void MapImageWriter::write(const std::string& path, int rows, int cols,
     // One scanline of the row's squares, copied to its s lines.
     std::uint8_t* line = im.row(top + H - (r + 1) * s) + left;
     row_values(r, vals.data());
-    for (int c = 0; c < cols; ++c) {
-      const double v = vals[static_cast<std::size_t>(c)];
-      if (std::isfinite(v)) std::fill_n(line + c * s, s, colour(v));
+    if (s == 1) {
+      map_row_colours(vals.data(), cols, spec.lo, span, line);
+    } else {
+      for (int c = 0; c < cols; ++c) {
+        const double v = vals[static_cast<std::size_t>(c)];
+        if (std::isfinite(v)) std::fill_n(line + c * s, s, colour(v));
+      }
     }
     for (int j = 1; j < s; ++j) std::copy_n(line, W, im.row(top + H - (r + 1) * s + j) + left);
   }

@@ -8,9 +8,11 @@
 // the bottom, as gnuplot's `matrix with image` did. A map costs a few milliseconds, where gnuplot
 // took about a second of CPU for the two images of a full ls-conventional map (parsing the text
 // matrix and cairo drawing).
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rangesim::app {
 
@@ -22,6 +24,16 @@ struct MapImageSpec {
   MapPalette palette = MapPalette::Viridis;
   int first_row = 0;  // the y value of the map's row 0
 };
+
+// A map row's palette indices at one pixel a cell: the ramp's colour of each finite value on
+// [lo, lo + span] (clamped to its ends), index 0 (paper) for NaN and inf.
+void map_row_colours(const double* values, int n, double lo, double span, std::uint8_t* out);
+
+// The q-quantile (0 <= q <= 1; the element of rank floor(q (n - 1)) from the smallest) of |a - b|
+// over the cells where both maps have a value and the difference is finite, in single precision:
+// a colour scale's end, not a figure. -1 where there is no such cell.
+double abs_difference_quantile(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
+                               double q);
 
 // Draws maps into one image buffer, reused from map to map (a map's first-touched pages cost more
 // than drawing it).

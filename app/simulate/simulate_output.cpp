@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "app/plot_style.h"
 #include "app/simulate/map_image.h"
@@ -10,67 +11,70 @@ namespace rangesim::app {
 
 namespace {
 
-// The q-quantile of |e| over the finite errors e = range - truth (-1 when none), in single
-// precision: the colour scale's end, not a figure (half the memory of doubles).
-double abs_quantile(const systemc::RangeMap& m, double q) {
-  std::vector<float> a;
-  a.reserve(m.range_m.size() * (m.range_m.empty() ? 0 : m.range_m[0].size()));
-  for (std::size_t r = 0; r < m.range_m.size() && r < m.truth_m.size(); ++r)
-    for (std::size_t c = 0; c < m.range_m[r].size() && c < m.truth_m[r].size(); ++c) {
-      const double e = m.range_m[r][c] - m.truth_m[r][c];
-      if (std::isfinite(e)) a.push_back(static_cast<float>(std::fabs(e)));
-    }
-  if (a.empty()) return -1;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(a.size() - 1));
-  std::nth_element(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(k), a.end());
-  return a[k];
-}
-
-}  // namespace
-
-std::string render_range_map(OutputDir& out, const systemc::RangeMap& m) {
+MapImageSpec labelled(const systemc::RangeMap& m, const std::string& what, const std::string& colour_label) {
   MapImageSpec spec;
   spec.x_label = m.x_label;
   spec.y_label = m.y_label;
   spec.first_row = m.first_row;
-  spec.title = m.title + " - valid ranges (blank: invalid)";
-  spec.colour_label = "range [m]";
+  spec.title = m.title + " - " + what;
+  spec.colour_label = colour_label;
+  return spec;
+}
+
+int rows_of(const systemc::RangeMap& m) { return static_cast<int>(m.range_m.size()); }
+int columns_of(const systemc::RangeMap& m) { return m.range_m.empty() ? 0 : static_cast<int>(m.range_m[0].size()); }
+
+// Whether some pixel has both a range and a truth (the error image has something to show).
+bool has_error(const systemc::RangeMap& m) {
+  for (std::size_t r = 0; r < m.range_m.size() && r < m.truth_m.size(); ++r)
+    for (std::size_t c = 0, n = std::min(m.range_m[r].size(), m.truth_m[r].size()); c < n; ++c)
+      if (std::isfinite(m.range_m[r][c] - m.truth_m[r][c])) return true;
+  return false;
+}
+
+void draw_range(const std::string& path, const systemc::RangeMap& m) {
+  MapImageSpec spec = labelled(m, "valid ranges (blank: invalid)", "range [m]");
   const auto [lo, hi] = finite_range(m.range_m);
   if (std::isfinite(lo)) {
     // A flat map still gets a colour range: +-1e-9 of its value.
     const double pad = hi > lo ? 0.0 : 1e-9 * std::max(1.0, std::fabs(hi));
     spec.lo = lo - pad, spec.hi = hi + pad;
   }
-  const int rows = static_cast<int>(m.range_m.size()), cols = rows ? static_cast<int>(m.range_m[0].size()) : 0;
-  MapImageWriter images;
-  images.write(
-      out.staged("range_map.png"), rows, cols,
+  MapImageWriter().write(
+      path, rows_of(m), columns_of(m),
       [&m](int r, double* v) {
         const std::vector<double>& row = m.range_m[static_cast<std::size_t>(r)];
         std::copy(row.begin(), row.end(), v);
       },
       spec);
-  // The error where both the range and the truth exist, symmetric about 0 to the 99th percentile of
-  // |error|: a few edge pixels must not wash the rest out; beyond it the end colours show.
-  const double q99 = abs_quantile(m, 0.99);
-  if (q99 >= 0) {
-    const double span = std::max(q99, 1e-9);
-    spec.title = m.title + " - range error (colours clipped at the 99th percentile)";
-    spec.colour_label = "range - truth [m]";
-    spec.lo = -span, spec.hi = span;
-    spec.palette = MapPalette::Diverging;
-    images.write(
-        out.staged("range_error.png"), rows, cols,
-        [&m](int r, double* v) {
-          const std::vector<double>& range = m.range_m[static_cast<std::size_t>(r)];
-          const std::vector<double>* truth =
-              static_cast<std::size_t>(r) < m.truth_m.size() ? &m.truth_m[static_cast<std::size_t>(r)] : nullptr;
-          for (std::size_t j = 0; j < range.size(); ++j)
-            v[j] = truth && j < truth->size() ? range[j] - (*truth)[j] : NAN;
-        },
-        spec);
-  }
-  return "";
+}
+
+// The error where both the range and the truth exist, symmetric about 0 to the 99th percentile of
+// |error|: a few edge pixels must not wash the rest out; beyond it the end colours show.
+void draw_error(const std::string& path, const systemc::RangeMap& m) {
+  MapImageSpec spec = labelled(m, "range error (colours clipped at the 99th percentile)", "range - truth [m]");
+  const double span = std::max(abs_difference_quantile(m.range_m, m.truth_m, 0.99), 1e-9);
+  spec.lo = -span, spec.hi = span;
+  spec.palette = MapPalette::Diverging;
+  MapImageWriter().write(
+      path, rows_of(m), columns_of(m),
+      [&m](int r, double* v) {
+        const auto i = static_cast<std::size_t>(r);
+        const std::vector<double>& range = m.range_m[i];
+        const std::size_t n = i < m.truth_m.size() ? std::min(range.size(), m.truth_m[i].size()) : 0;
+        for (std::size_t j = 0; j < n; ++j) v[j] = range[j] - m.truth_m[i][j];
+        std::fill(v + n, v + range.size(), NAN);
+      },
+      spec);
+}
+
+}  // namespace
+
+std::vector<std::function<void()>> range_map_image_jobs(OutputDir& out, const systemc::RangeMap& m) {
+  std::vector<std::function<void()>> jobs;
+  jobs.emplace_back([path = out.staged("range_map.png"), &m] { draw_range(path, m); });
+  if (has_error(m)) jobs.emplace_back([path = out.staged("range_error.png"), &m] { draw_error(path, m); });
+  return jobs;
 }
 
 }  // namespace rangesim::app

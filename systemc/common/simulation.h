@@ -33,6 +33,9 @@ struct SimulationRequest {
   int threads = 1;                  // --threads N with --kernel-only (default: all cores), where the sensor can
   std::vector<int> trace_rows;      // --trace-rows: rows whose blocks the waveform shows (empty: the sensor's choice)
   std::vector<TracePixel> trace_pixels;  // --trace-pixels: pixels the waveform shows (empty: the sensor's choice)
+  // --points: the per-point table's rows. Without it a run may return the table's columns only
+  // (a full ls-conventional map's rows are 9.6 MB of .npy); the Python module always asks.
+  bool points = true;
 };
 
 // A traced pixel's checks: inside the simulated window [first, first + count) in both axes, or a
@@ -152,7 +155,7 @@ void add_validity_json(nlohmann::json& j, const RangeMap& map);
 
 struct SimulationResult {
   RangeMap range_map;
-  Table points;             // points.csv / points.npy (empty: the sensor has none)
+  Table points;             // points.csv / points.npy (empty: the sensor has none; written with --points)
   std::string frames_csv;   // frames.csv
   nlohmann::json summary;   // summary.json (the renderer adds warnings and the trace)
   SimulationReport report;  // the terminal summary

@@ -200,9 +200,10 @@ void produce_points(const SensorRunResult& res, const PointCells& cells, const s
   if (!block.empty()) sink(block.data(), block.size() / kColumns);
 }
 
+// With `with_points` false the points table has its columns and no rows (nothing kept for it).
 Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
                            const std::shared_ptr<const scene::SceneOptics>& optics_ptr, const LsConventionalConfig& cfg,
-                           const golden::FrameTiming& gt) {
+                           const golden::FrameTiming& gt, bool with_points) {
   const SensorRunResult& res = *run;
   const scene::SceneOptics& optics = *optics_ptr;
   Reconstruction out;
@@ -217,7 +218,7 @@ Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
       cfg.validity.min_detecting_fraction, samplings, cfg.validity.edge_margin_px);
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   std::size_t listed = 0;
-  auto cells = std::make_shared<PointCells>(res.frames.size() * static_cast<std::size_t>(rows));
+  auto cells = std::make_shared<PointCells>(with_points ? res.frames.size() * static_cast<std::size_t>(rows) : 0);
   for (std::size_t f = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
     const int b = optics.beam_position(fr.frame);
@@ -230,12 +231,13 @@ Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
     for (int r = 0; r < rows; ++r) {
       const Point x = point_of(optics, fr, b, r, cfg);
       add_point(out, x, r, f);
-      cells->keep(f * static_cast<std::size_t>(rows) + static_cast<std::size_t>(r), x);
+      if (with_points) cells->keep(f * static_cast<std::size_t>(rows) + static_cast<std::size_t>(r), x);
       listed += x.listed() ? 1 : 0;
     }
   }
   for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
   out.points = points_table();
+  if (!with_points) return out;
   out.points.produced_rows = listed;
   out.points.produce = [run, cells, optics_ptr, cfg](const Table::BlockSink& sink) {
     produce_points(*run, *cells, *optics_ptr, cfg, sink);
@@ -340,7 +342,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 
   const golden::FrameTiming gt = golden::frame_timing(c.cfg.timing, c.cfg.multisampling.samplings);
   SimulationResult out;
-  Reconstruction rec = reconstruct(res_ptr, optics_ptr, c.cfg, gt);
+  Reconstruction rec = reconstruct(res_ptr, optics_ptr, c.cfg, gt, req.points);
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);

@@ -162,7 +162,7 @@ class IdentitySimulate(CommandCase):
                 scene, r = self.first_scene(s)
                 folder = self.out(f"sim-{s.id}")
                 rc, out, err = run_cli("simulate", s.id, "--scene", scene, "--seed", "3", "--kernel-only",
-                                       "--no-plots", "--json", "--csv", "--out", folder)
+                                       "--no-plots", "--points", "--json", "--csv", "--out", folder)
                 self.assertEqual(rc, 0, err)
                 cli = json.loads(out)
                 drop = lambda d: {k: v for k, v in d.items() if k not in WALL_CLOCK_KEYS}

@@ -19,7 +19,7 @@ SCENES = os.environ["RANGESIM_SCENE_DIR"]
 
 def run(sensor, scene, frames, fmt, out):
     args = [BIN, "simulate", sensor, "--scene", os.path.join(SCENES, scene), "--kernel-only", "--no-plots",
-            "--json", "--out", out, fmt]
+            "--points", "--json", "--out", out, fmt]
     if frames:
         args += ["--frames", str(frames)]
     p = subprocess.run(args, capture_output=True, text=True)

@@ -2,6 +2,7 @@
 // errors and exit codes, and a VCD waveform.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -33,7 +34,7 @@ std::string slurp(const std::string& path) {
 TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
   const std::string dir = make_temp_dir();
   const CommandResult r =
-      simulate("--scene " + kScenes + "/plane.toml --frames 40 --kernel-only --json --out " + dir + "/o");
+      simulate("--scene " + kScenes + "/plane.toml --frames 40 --kernel-only --json --points --out " + dir + "/o");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"frame_time_s", "frame_rate_Hz", "cycles", "range_error_rms_m", "range_error_rms_px",
@@ -57,13 +58,43 @@ TEST(SimulateCommand, KernelRangeMapJsonAndFiles) {
   fs::remove_all(dir);
 }
 
+TEST(SimulateCommand, PointsTableOnlyOnRequestFilesOnAnyThreads) {
+  // The per-point table is written with --points only; the run says how to get it. The files are
+  // written side by side on --threads threads: the same bytes on one.
+  const std::string dir = make_temp_dir();
+  const std::string base = "--scene " + kScenes + "/plane.toml --frames 10 --kernel-only";
+  const CommandResult plain = simulate(base + " --threads 2 --out " + dir + "/a");
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("(per-point table not written: add --points)"), std::string::npos) << plain.out;
+  for (const char* f : {"points.csv", "points.npy"}) EXPECT_FALSE(fs::exists(dir + "/a/" + f)) << f;
+  const CommandResult one = simulate(base + " --threads 1 --out " + dir + "/b");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  for (const char* f : {"range_map.csv", "confidence_map.csv", "frames.csv", "range_map.png", "range_error.png"}) {
+    EXPECT_TRUE(fs::exists(dir + "/a/" + f)) << f;
+    EXPECT_EQ(slurp(dir + "/a/" + f), slurp(dir + "/b/" + f)) << f;
+  }
+  const CommandResult with = simulate(base + " --points --out " + dir + "/c");
+  ASSERT_EQ(with.exit_code, 0) << with.err;
+  EXPECT_NE(with.out.find("wrote " + dir + "/c/points.csv"), std::string::npos) << with.out;
+  EXPECT_EQ(with.out.find("--points)"), std::string::npos) << with.out;
+  const std::string points = slurp(dir + "/c/points.csv");
+  EXPECT_EQ(points.rfind("frame,beam_position,row,", 0), 0U) << points.substr(0, 80);
+  EXPECT_GT(std::count(points.begin(), points.end(), '\n'), 1);
+  // A sensor without a points table has nothing to offer.
+  const CommandResult lockin = run_command(kDriver + " simulate tof-lockin --scene " + kScenes +
+                                           "/tof-lockin-plane.toml --kernel-only --no-plots --out " + dir + "/d");
+  ASSERT_EQ(lockin.exit_code, 0) << lockin.err;
+  EXPECT_EQ(lockin.out.find("--points"), std::string::npos) << lockin.out;
+  fs::remove_all(dir);
+}
+
 TEST(SimulateCommand, SystemCEqualsKernelAndWritesTrace) {
   const std::string dir = make_temp_dir();
   const std::string scene = kScenes + "/step.toml";
   const CommandResult k =
-      simulate("--scene " + scene + " --frames 3 --kernel-only --json --no-plots --out " + dir + "/k");
-  const CommandResult s =
-      simulate("--scene " + scene + " --frames 3 --json --no-plots --trace " + dir + "/w.vcd --out " + dir + "/s");
+      simulate("--scene " + scene + " --frames 3 --kernel-only --json --no-plots --points --out " + dir + "/k");
+  const CommandResult s = simulate("--scene " + scene + " --frames 3 --json --no-plots --points --trace " + dir +
+                                   "/w.vcd --out " + dir + "/s");
   ASSERT_EQ(k.exit_code, 0) << k.err;
   ASSERT_EQ(s.exit_code, 0) << s.err;
   const auto jk = nlohmann::json::parse(k.out), js = nlohmann::json::parse(s.out);
@@ -115,7 +146,7 @@ TEST(SimulateCommand, BadInputExitsTwoAndWritesNothing) {
 
 TEST(SimulateCommand, TickingEqualsEventSkippingEndToEnd) {
   const std::string dir = make_temp_dir();
-  const std::string base = "--scene " + kScenes + "/tilted.toml --frames 8 --kernel-only --no-plots --json";
+  const std::string base = "--scene " + kScenes + "/tilted.toml --frames 8 --kernel-only --no-plots --points --json";
   const CommandResult a = simulate(base + " --out " + dir + "/a");
   const CommandResult b = simulate(base + " --tick --out " + dir + "/b");
   const CommandResult d = simulate(base + " --dense --out " + dir + "/d");
@@ -132,7 +163,8 @@ TEST(SimulateCommand, ThreadsGiveTheSameFilesAndAreCheckedPerSensor) {
   // --threads N gives each kernel thread consecutive frame accesses: the files are byte-identical
   // for any count (including one that does not divide the frames); summary.json says how many ran.
   const std::string dir = make_temp_dir();
-  const std::string base = "--scene " + kScenes + "/tilted.toml --frames 7 --kernel-only --no-plots --npy --json";
+  const std::string base =
+      "--scene " + kScenes + "/tilted.toml --frames 7 --kernel-only --no-plots --npy --points --json";
   const CommandResult one = simulate(base + " --threads 1 --out " + dir + "/one");
   const CommandResult three = simulate(base + " --threads 3 --out " + dir + "/three");
   ASSERT_EQ(one.exit_code, 0) << one.err;

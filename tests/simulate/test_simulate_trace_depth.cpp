@@ -70,7 +70,7 @@ TEST(SimulateDepthMap, EverySensorRangesTheMap) {
   for (const DepthCase& c : cases) {
     const std::string out = dir + "/" + c.sensor;
     const CommandResult r = rangesim_cmd(std::string("simulate ") + c.sensor + " --scene " + kScenes + "/" + c.scene +
-                                         ".toml " + c.args + " --json --no-plots --csv --out " + out);
+                                         ".toml " + c.args + " --json --no-plots --csv --points --out " + out);
     ASSERT_EQ(r.exit_code, 0) << c.sensor << "\n" << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["target_shape"], "depth_map") << c.sensor;

@@ -35,7 +35,7 @@ std::string header(const std::string& path) {
 
 TEST(RangeMapValidity, SpotSceneFalseValidsBelowOnePercentSpotStillValid) {
   const std::string dir = make_temp_dir();
-  const auto j = simulate("tof-spad", "--scene " + kScenes + "/tof-spad-spot.toml --out " + dir + "/o");
+  const auto j = simulate("tof-spad", "--scene " + kScenes + "/tof-spad-spot.toml --points --out " + dir + "/o");
   ASSERT_TRUE(j.contains("false_valid_fraction"));
   EXPECT_GT(j["validity"]["pixels_without_echo"].get<long long>(), 400);
   EXPECT_LT(j["false_valid_fraction"].get<double>(), 0.01);
@@ -57,7 +57,7 @@ TEST(RangeMapValidity, TheSpadRuleIsThePresetsDetectionSigma) {
 
 TEST(RangeMapValidity, LightSectionEdgeMarginRemovesClippedSpots) {
   const std::string dir = make_temp_dir();
-  const std::string scene = "--scene " + kScenes + "/step.toml --csv --out " + dir + "/o";
+  const std::string scene = "--scene " + kScenes + "/step.toml --csv --points --out " + dir + "/o";
   const auto with = simulate("ls-conventional", scene);
   EXPECT_EQ(with["false_valid_fraction"].get<double>(), 0.0);
   EXPECT_GT(with["echo_valid_fraction"].get<double>(), 0.999);
