@@ -71,9 +71,10 @@ void draw_error(const std::string& path, const systemc::RangeMap& m) {
 }  // namespace
 
 std::vector<std::function<void()>> range_map_image_jobs(OutputDir& out, const systemc::RangeMap& m) {
+  const std::string range_path = out.staged("range_map.png");
   std::vector<std::function<void()>> jobs;
-  jobs.emplace_back([path = out.staged("range_map.png"), &m] { draw_range(path, m); });
   if (has_error(m)) jobs.emplace_back([path = out.staged("range_error.png"), &m] { draw_error(path, m); });
+  jobs.emplace_back([range_path, &m] { draw_range(range_path, m); });
   return jobs;
 }
 
