@@ -293,7 +293,8 @@ CommandLine parse_command_line(int argc, const char* const* argv, std::ostream& 
   sim->add_option("--threads", sim_opt.threads,
                   "With --kernel-only: threads the kernel runs on, 1..1024 (default: all cores), each with\n"
                   "consecutive frame accesses; the results are bit-identical for any count. ls-conventional;\n"
-                  "the other sensors' kernels run on one thread and refuse more")
+                  "the other sensors' kernels run on one thread and refuse more. The output files are written\n"
+                  "side by side on as many threads (every sensor: all cores unless --threads is given)")
       ->transform(integer_in(1, 1024));
   sim->add_flag("--no-plots", sim_opt.no_plots, "Skip range_map.png and range_error.png");
   sim->add_flag("--points", sim_opt.points,
