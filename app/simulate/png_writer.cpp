@@ -148,8 +148,9 @@ std::size_t match_length(const std::uint8_t* data, std::size_t n, std::size_t i,
 // How many of the 30 positions from i on (i >= distance, i + 32 <= n) start no match of 3 bytes
 // at `distance`, nor at distance 1: the literals before the next match, 30 when none starts. Bit j
 // of a 32-bit mask says byte i + j equals the byte `distance` before it; a match starts at j where
-// bits j, j + 1 and j + 2 are set. Heat maps are mostly literals inside the map, so they go out
-// 30 positions per look instead of two match attempts each (1 ms an image).
+// bits j, j + 1 and j + 2 are set. Inside a heat map literals and short matches alternate: one look
+// finds the next match and which kinds start there, where each position took two match attempts.
+// With the 16-byte compares, a full map's image encoded in 0.57-0.59 ms against 0.86-0.89 ms.
 #if defined(__SSE2__)
 std::uint32_t equal_mask(const std::uint8_t* p, std::size_t distance) {
   const auto load = [](const std::uint8_t* q) { return _mm_loadu_si128(reinterpret_cast<const __m128i*>(q)); };
@@ -216,7 +217,7 @@ void deflate(const std::vector<std::uint8_t>& image, std::size_t stride, std::st
 // 16 a + sum (16 - i) x_i, sums without a carried dependency. With SSE2 the blocks of a chunk are
 // summed in vector lanes and b takes the a's the chunk's blocks started from at once:
 // 16 a_0 m + 16 sum_j S_j + sum_j W_j over its m blocks (S_j the bytes before block j, W_j block
-// j's weighted sum), in 64 bits (0.09 ms of the 0.8 ms an image took before).
+// j's weighted sum), in 64 bits (the scalar sums were 8% of an image's encoding in perf).
 std::uint32_t adler32(const std::vector<std::uint8_t>& data) {
   std::uint32_t a = 1, b = 0;
   const std::uint8_t* p = data.data();
