@@ -68,16 +68,13 @@ std::vector<ParetoRow> run_pareto(bool quick, const std::string& scratch_dir, Sw
     std::vector<std::string> argv = {"simulate", s.sensor};
     argv.insert(argv.end(), r.args.begin(), r.args.end());
     argv.insert(argv.end(), {"--json", "--no-plots", "--out", fmt::format("{}/run{}", scratch_dir, i)});
-    std::string text;
-    const auto t0 = Clock::now();
-    const double c0 = children_cpu_now();
-    const int code = run_self(argv, text);
-    r.wall_s = seconds_since(t0);
-    r.cpu_s = children_cpu_now() - c0;
-    if (code != 0)
+    const SelfRun run = run_self_timed(argv);
+    r.wall_s = run.wall_s;
+    r.cpu_s = run.cpu_s;
+    if (run.exit_code != 0)
       throw std::runtime_error(
-          fmt::format("bench: rangesim simulate {} {} failed with exit code {}", s.sensor, s.setting, code));
-    const nlohmann::json j = nlohmann::json::parse(text);
+          fmt::format("bench: rangesim simulate {} {} failed with exit code {}", s.sensor, s.setting, run.exit_code));
+    const nlohmann::json j = nlohmann::json::parse(run.out);
     r.frames = j.value("frames", 0LL);
     const auto& e = j["range_error_rms_m"];
     r.error_m = e.is_number() ? e.get<double>() : NAN;

@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "app/sweep_journal.h"  // shell_quote
 #include "core/user_error.h"
 
 namespace rangesim::app::bench {
@@ -85,24 +84,6 @@ nlohmann::json run_in_child(const std::function<nlohmann::json()>& job) {
   ::waitpid(pid, &status, 0);
   if (text.empty()) return nlohmann::json{{"error", fmt::format("child ended with status {}", status)}};
   return nlohmann::json::parse(text);
-}
-
-int run_self(const std::vector<std::string>& args, std::string& stdout_text) {
-  std::error_code ec;
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw std::runtime_error("bench: cannot find the rangesim binary (/proc/self/exe)");
-  std::string cmd = shell_quote(exe.string());
-  for (const auto& a : args) cmd += " " + shell_quote(a);
-  cmd += " 2>/dev/null";
-  std::fflush(stdout);
-  FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) throw std::runtime_error("bench: popen failed for " + cmd);
-  stdout_text.clear();
-  char buf[65536];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) stdout_text.append(buf, n);
-  const int status = ::pclose(p);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
 SelfRun run_self_timed(const std::vector<std::string>& args) {

@@ -1,7 +1,7 @@
 #pragma once
 // Helpers of `rangesim bench` (docs/bench.md): wall-clock timing, running a measurement in a
 // forked child (SystemC allows one elaboration per process, and the bench needs several), running
-// the rangesim binary itself for the Pareto rows, and progress lines on stderr.
+// the rangesim binary itself as a timed child (the Pareto rows, output_share), and progress lines on stderr.
 #include <chrono>
 #include <functional>
 #include <string>
@@ -24,10 +24,6 @@ double children_cpu_now();
 // as {"error": "..."}; a crash as {"error": "child ended with status N"}. Needed for every
 // SystemC elaboration: each gets a fresh process.
 nlohmann::json run_in_child(const std::function<nlohmann::json()>& job);
-
-// Runs this rangesim binary with `args` (shell-quoted here), stdout captured; returns the exit
-// code. stderr is discarded (the child's progress lines are not ours to show).
-int run_self(const std::vector<std::string>& args, std::string& stdout_text);
 
 // One run of this rangesim binary with `args`, started directly (no shell) and timed as one whole
 // process, start-up included: its wall time from fork to exit, its CPU time (wait4), its stdout
