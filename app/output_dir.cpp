@@ -8,6 +8,7 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "app/file_replace.h"
 #include "app/output_lock.h"
 #include "app/run_control.h"
 #include "core/user_error.h"
@@ -114,7 +115,20 @@ std::vector<std::string> OutputDir::commit() {
   for (const auto& name : names_)
     if (fs::exists(fs::path(staging_) / name) && std::find(names.begin(), names.end(), name) == names.end())
       names.push_back(name);  // optional outputs (plots without gnuplot) may be missing
-  const bool manifest = !folder_.kind.empty() && folder_.lock;
+  // A directory where a file goes would stop the moves half-way (a rename cannot replace it):
+  // refused before anything moves, so the folder keeps the previous run's files.
+  for (const auto& name : names) {
+    std::error_code ec;
+    if (fs::is_directory(fs::symlink_status(fs::path(dir_) / name, ec)))
+      throw UserError(
+          fmt::format("{}: is a directory where this run writes its file {}; allowed: a regular file "
+                      "(which is replaced) or nothing. Move it, or choose another output folder",
+                      (fs::path(dir_) / name).string(), name));
+  }
+  // A rerun writing the files the previous run listed finds its manifest already true: neither
+  // write below would change it (they were 0.2 to 0.25 ms of a `simulate` commit, measured).
+  const bool manifest = !folder_.kind.empty() && folder_.lock &&
+                        !(previous_ && previous_->kind == folder_.kind && previous_->files == names);
   std::vector<std::string> stale;
   if (previous_)
     for (const auto& f : previous_->files)
@@ -129,14 +143,15 @@ std::vector<std::string> OutputDir::commit() {
   std::vector<std::string> written;
   for (const auto& name : names) {
     const fs::path to = fs::path(dir_) / name;
-    fs::rename(fs::path(staging_) / name, to);
+    replace_file((fs::path(staging_) / name).string(), to.string());
     written.push_back(to.string());
   }
   std::error_code ec;
   for (const auto& f : stale)
     if (fs::is_regular_file(fs::symlink_status(fs::path(dir_) / f, ec))) fs::remove(fs::path(dir_) / f, ec);
   if (manifest) write_manifest(dir_, {folder_.kind, names}, staging_);
-  fs::remove_all(staging_, ec);
+  // Empty unless the run left scratch files: one rmdir, not a walk of the folder.
+  if (!fs::remove(staging_, ec)) fs::remove_all(staging_, ec);
   committed_ = true;
   return written;
 }

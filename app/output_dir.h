@@ -52,7 +52,7 @@ class OutputDir {
   std::string scratch(const std::string& name) const;
   // Writes `text` to the staged file `name`.
   void write(const std::string& name, const std::string& text);
-  // Moves every staged file into DIR (rename, same file system), removes the previous run's files
+  // Moves every staged file into DIR (app/file_replace.h, same file system), removes the previous run's files
   // that this run did not write, and returns the final paths.
   std::vector<std::string> commit();
 

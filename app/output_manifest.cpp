@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/file_replace.h"
+
 namespace rangesim::app {
 
 namespace fs = std::filesystem;
@@ -47,7 +49,7 @@ void write_manifest(const std::string& dir, const OutputManifest& m, const std::
     out.close();
     if (!out) throw std::runtime_error(fmt::format("cannot write {}", tmp.string()));
   }
-  fs::rename(tmp, fs::path(dir) / kManifestName);
+  replace_file(tmp.string(), (fs::path(dir) / kManifestName).string());
 }
 
 }  // namespace rangesim::app

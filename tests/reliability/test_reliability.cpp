@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "child_process.h"
@@ -153,6 +154,55 @@ TEST(Reliability, ARunReplacesItsCommandsResultsKeepsUserFilesAndRefusesAnothers
   EXPECT_TRUE(after.count("my-notes.txt"));
   EXPECT_TRUE(after.count("range_map.csv"));
   EXPECT_FALSE(after.count("detectable_area.csv"));
+}
+
+// A rerun moves each new file over the old one (app/file_replace.h: exchanged, the old one
+// removed), leaves no staging folder, and keeps the manifest file itself when it lists the same
+// files; a run writing fewer files rewrites it. A directory where a file would go is refused
+// before anything moves (exit 2, naming it) and stays with what it holds.
+TEST(Reliability, ARerunReplacesEachFileAndKeepsAManifestThatStillHolds) {
+  Workspace w;
+  const std::string run = "simulate ls-conventional --scene " + kScenes + "/plane.toml --kernel-only --out d";
+  ASSERT_EQ(w.run(run).exit_code, 0);
+  const fs::path d = w.work / "d";
+  auto inode = [](const fs::path& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0 ? st.st_ino : 0;
+  };
+  auto text = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  const ino_t manifest = inode(d / ".rangesim-manifest"), map = inode(d / "range_map.npy");
+  const std::string listed = text(d / ".rangesim-manifest");
+  ASSERT_NE(listed.find("file range_map.png"), std::string::npos) << listed;
+  const ChildResult again = w.run(run);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(inode(d / ".rangesim-manifest"), manifest);
+  EXPECT_EQ(text(d / ".rangesim-manifest"), listed);
+  EXPECT_NE(inode(d / "range_map.npy"), map);  // a new file, not the old one rewritten
+  EXPECT_GT(fs::file_size(d / "range_map.npy"), 1000u);
+  const std::set<std::string> files = {".rangesim-manifest", "confidence_map.npy", "frames.csv",  "range_error.png",
+                                       "range_map.npy",      "range_map.png",      "summary.json"};
+  EXPECT_EQ(names_in(d), files);  // no staging folder left, no old file beside a new one
+  const ChildResult fewer = w.run(run + " --no-plots");
+  ASSERT_EQ(fewer.exit_code, 0) << fewer.err;
+  EXPECT_NE(inode(d / ".rangesim-manifest"), manifest);
+  EXPECT_EQ(text(d / ".rangesim-manifest").find("png"), std::string::npos);
+  EXPECT_FALSE(fs::exists(d / "range_map.png"));
+  const ino_t moved = inode(d / "range_map.npy");
+  fs::remove(d / "frames.csv");
+  fs::create_directory(d / "frames.csv");
+  std::ofstream(d / "frames.csv" / "keep.txt") << "mine\n";
+  const ChildResult blocked = w.run(run + " --no-plots");
+  EXPECT_EQ(blocked.exit_code, 2);
+  EXPECT_NE(blocked.err.find("frames.csv: is a directory where this run writes its file frames.csv"), std::string::npos)
+      << blocked.err;
+  EXPECT_EQ(inode(d / "range_map.npy"), moved);  // nothing moved
+  EXPECT_TRUE(fs::is_directory(d / "frames.csv"));
+  EXPECT_EQ(text(d / "frames.csv" / "keep.txt"), "mine\n");
 }
 
 TEST(Reliability, StagingFoldersOfDeadRunsAreRemoved) {
