@@ -139,11 +139,12 @@ std::function<void()> matrix_job(const SimulateOptions& opt, OutputDir& out, con
 }
 
 // range_map.{csv,npy}, confidence_map.{csv,npy} (where the sensor's validity rule measures one),
-// points.{csv,npy} (with --points, where the sensor has points), frames.csv, range_map.png and
-// range_error.png: staged in that order (the order the run lists them), each written by a job.
-// With more than one thread (--threads) the jobs run side by side, the costliest first: the points
-// (9.6 MB for a full ls-conventional map), the images (drawing and deflate, about 1 ms each),
-// then the maps (1.1 MB each).
+// points.{csv,npy} (with --points, where the sensor has points), frames.csv, range_map.png,
+// range_error.png and summary.json: staged in that order (the order the run lists them), each
+// written by a job. With more than one thread (--threads) the jobs run side by side, the costliest
+// first: the points (9.6 MB for a full ls-conventional map), the images (drawing and deflate,
+// about 1 ms each), then the maps (1.1 MB each). summary.json is complete but for the output's own
+// times, which include its writing.
 void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r, int threads) {
   const systemc::RangeMap& m = r.range_map;
   const std::size_t columns = m.column_names.size();
@@ -164,26 +165,31 @@ void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::Simu
   files.emplace_back([path = out.staged("frames.csv"), &r] { write_file(path, r.frames_csv); });
   if (!opt.no_plots)
     for (auto& image : range_map_image_jobs(out, m)) jobs.push_back(std::move(image));
+  files.emplace_back([path = out.staged("summary.json"), &r] { write_file(path, r.summary.dump(2) + "\n"); });
   for (auto& file : files) jobs.push_back(std::move(file));
   run_jobs(jobs, threads);
 }
 
-// summary.json, the trace, the commit, then the JSON (--json) or the summary and the files
-// written.
-int finish(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace, systemc::SimulationResult& r) {
-  nlohmann::json& j = r.summary;
-  if (trace.enabled()) j["trace"] = opt.trace;
-  out.write("summary.json", j.dump(2) + "\n");
+// The files (write_files), the trace, then the commit; returns the paths written.
+std::vector<std::string> write_and_commit(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace,
+                                          systemc::SimulationResult& r) {
+  if (trace.enabled()) r.summary["trace"] = opt.trace;
+  write_files(opt, out, r, simulation_request(opt).threads);
   trace.finish();  // may throw: the output folder is still staged
-  const std::vector<std::string> written = out.commit();
+  std::vector<std::string> written = out.commit();
   const std::string trace_file = trace.commit();
+  if (!trace_file.empty()) written.push_back(trace_file);
+  return written;
+}
+
+// The JSON (--json), or the summary and the files written.
+int report(const SimulateOptions& opt, const systemc::SimulationResult& r, const std::vector<std::string>& written) {
   if (opt.json) {
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", r.summary.dump(2));
     return kExitOk;
   }
   print_summary(r.report);
   for (const auto& w : written) fmt::print("  wrote {}\n", w);
-  if (!trace_file.empty()) fmt::print("  wrote {}\n", trace_file);
   if (!opt.points && !r.points.empty()) fmt::print("  (per-point table not written: add --points)\n");
   return kExitOk;
 }
@@ -195,11 +201,12 @@ int run_and_render(const SimulateOptions& opt, const ParamSet& params, const Sim
   systemc::SimulationResult r = entry.run(simulation_request(opt), params, host);
   const auto t0 = Progress::Clock::now();
   const double c0 = cpu_with_children_s();
-  write_files(opt, host.out(), r, simulation_request(opt).threads);
-  // What writing the files and drawing the images cost (every thread's CPU), for `bench`'s output_share.
+  const std::vector<std::string> written = write_and_commit(opt, host.out(), host.trace(), r);
+  // What writing the files, drawing the images and committing the folder cost (every thread's
+  // CPU), for `bench`'s output_share: in --json only, as summary.json is written before they end.
   r.summary["output_wall_time_s"] = std::chrono::duration<double>(Progress::Clock::now() - t0).count();
   r.summary["output_cpu_s"] = cpu_with_children_s() - c0;
-  return finish(opt, host.out(), host.trace(), r);
+  return report(opt, r, written);
 }
 
 }  // namespace rangesim::app
