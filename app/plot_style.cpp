@@ -4,6 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace rangesim::app {
 
@@ -57,14 +62,41 @@ std::string series_style(std::size_t i) {
 
 std::string series_colour(std::size_t i) { return kLineColours[i % (sizeof(kLineColours) / sizeof(*kLineColours))]; }
 
+// With SSE2 two values a step in four pairs of accumulators (the scalar loop is a chain of
+// dependent compares: 0.18 to 0.26 ms of a full map's 137,000 cells inside `simulate`); a value
+// that is not finite counts as +inf for the minimum and -inf for the maximum. A minimum or maximum
+// of 0 found as both +0 and -0 may come out with either sign.
 std::pair<double, double> finite_range(const std::vector<std::vector<double>>& rows) {
   double lo = INFINITY, hi = -INFINITY;
-  for (const auto& r : rows)
-    for (double v : r) {
-      const bool finite = std::isfinite(v);  // no branch on the value: a map's NaNs come in any pattern
-      lo = finite && v < lo ? v : lo;
-      hi = finite && v > hi ? v : hi;
+  for (const auto& r : rows) {
+    const double* v = r.data();
+    const std::size_t n = r.size();
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    if (n >= 8) {
+      const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+      const __m128d largest = _mm_set1_pd(std::numeric_limits<double>::max());
+      const __m128d up = _mm_set1_pd(INFINITY), down = _mm_set1_pd(-INFINITY);
+      __m128d mn[4] = {up, up, up, up}, mx[4] = {down, down, down, down};
+      for (; i + 8 <= n; i += 8)
+        for (int j = 0; j < 4; ++j) {
+          const __m128d x = _mm_loadu_pd(v + i + 2 * j);
+          const __m128d finite = _mm_cmple_pd(_mm_and_pd(x, magnitude), largest);  // false for NaN and inf
+          mn[j] = _mm_min_pd(mn[j], _mm_or_pd(_mm_and_pd(finite, x), _mm_andnot_pd(finite, up)));
+          mx[j] = _mm_max_pd(mx[j], _mm_or_pd(_mm_and_pd(finite, x), _mm_andnot_pd(finite, down)));
+        }
+      const __m128d a = _mm_min_pd(_mm_min_pd(mn[0], mn[1]), _mm_min_pd(mn[2], mn[3]));
+      const __m128d b = _mm_max_pd(_mm_max_pd(mx[0], mx[1]), _mm_max_pd(mx[2], mx[3]));
+      lo = std::min({lo, _mm_cvtsd_f64(a), _mm_cvtsd_f64(_mm_unpackhi_pd(a, a))});
+      hi = std::max({hi, _mm_cvtsd_f64(b), _mm_cvtsd_f64(_mm_unpackhi_pd(b, b))});
     }
+#endif
+    for (; i < n; ++i) {
+      const bool finite = std::isfinite(v[i]);  // no branch on the value: a map's NaNs come in any pattern
+      lo = finite && v[i] < lo ? v[i] : lo;
+      hi = finite && v[i] > hi ? v[i] : hi;
+    }
+  }
   if (lo > hi) return {NAN, NAN};
   return {lo, hi};
 }

@@ -8,7 +8,9 @@
 #include <cstring>
 #include <limits>
 
-#if defined(__SSE2__)
+#if defined(__x86_64__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
@@ -145,11 +147,49 @@ std::string fit(const std::string& s, std::size_t chars) {
 
 }  // namespace
 
+#if defined(__x86_64__)
+// Four cells' indices as int32, 0 (kWhite) where a value is not finite (the SSE2 pair's steps).
+__attribute__((target("avx2"), always_inline)) inline __m128i four_colours(const double* p, __m256d lo, __m256d span) {
+  const __m256d x = _mm256_loadu_pd(p);
+  const __m256d magnitude = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
+  const __m256d finite =  // false for NaN and inf
+      _mm256_cmp_pd(_mm256_and_pd(x, magnitude), _mm256_set1_pd(std::numeric_limits<double>::max()), _CMP_LE_OQ);
+  const __m256d y = _mm256_mul_pd(
+      _mm256_min_pd(
+          _mm256_max_pd(_mm256_div_pd(_mm256_sub_pd(_mm256_and_pd(finite, x), lo), span), _mm256_setzero_pd()),
+          _mm256_set1_pd(1.0)),
+      _mm256_set1_pd(kRampSize - 1));
+  const __m128i k = _mm256_cvttpd_epi32(y);
+  const __m128i f = _mm256_cvttpd_epi32(_mm256_mul_pd(_mm256_set1_pd(2.0), _mm256_sub_pd(y, _mm256_cvtepi32_pd(k))));
+  const __m128i keep = _mm256_castsi256_si128(
+      _mm256_permutevar8x32_epi32(_mm256_castpd_si256(finite), _mm256_setr_epi32(0, 2, 4, 6, 0, 0, 0, 0)));
+  return _mm_and_si128(_mm_add_epi32(_mm_add_epi32(_mm_set1_epi32(kRamp0), k), f), keep);
+}
+
+// map_row_colours's vector steps eight cells at a time on AVX2, the same operations in the same
+// order: a full map's 137,000 cells in 0.125 against 0.20 to 0.22 ms with SSE2 (fastest of 200, pinned).
+// Returns the cells done.
+__attribute__((target("avx2"))) int row_colours_avx2(const double* v, int n, double lo, double span,
+                                                     std::uint8_t* out) {
+  const __m256d lo4 = _mm256_set1_pd(lo), span4 = _mm256_set1_pd(span);
+  int c = 0;
+  for (; c + 8 <= n; c += 8) {
+    const __m128i words = _mm_packs_epi32(four_colours(v + c, lo4, span4), four_colours(v + c + 4, lo4, span4));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + c), _mm_packus_epi16(words, words));
+  }
+  return c;
+}
+#endif
+
 // With SSE2, four cells a step with the same operations in the same order as ramp_index, so the
 // same bytes (test: MapImage.RowColoursEqualTheScalarRamp); the scalar loop took 0.5 ms of a full
-// map's 137,000 cells (its clamps are branches).
+// map's 137,000 cells (its clamps are branches). AVX2 first where the processor has it.
 void map_row_colours(const double* v, int n, double lo, double span, std::uint8_t* out) {
   int c = 0;
+#if defined(__x86_64__)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) c = row_colours_avx2(v, n, lo, span, out);
+#endif
 #if defined(__SSE2__)
   const __m128d lo2 = _mm_set1_pd(lo), span2 = _mm_set1_pd(span), zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0);
   const __m128d top = _mm_set1_pd(kRampSize - 1), two = _mm_set1_pd(2.0);
@@ -177,22 +217,110 @@ void map_row_colours(const double* v, int n, double lo, double span, std::uint8_
   for (; c < n; ++c) out[c] = std::isfinite(v[c]) ? ramp_index(v[c], lo, span) : kWhite;
 }
 
-// A copy of the differences as floats ordered only as far as the element (nth_element). Tried and
-// not kept: a count of the floats' top bits, then ordering only the bucket that holds the element,
-// with no copy of the map: 0.90 against 0.57 ms on a full plane map's errors (the map read twice).
+namespace {
+
+// |a - b| of every cell both rows have, in single precision, +inf where the difference is not
+// finite, appended to v; returns how many were finite. With SSE2 two cells a step without a branch
+// (a copy of only the finite ones, a branch and a push each, took about 0.4 ms of a full map).
+std::size_t append_abs_differences(const double* a, const double* b, std::size_t n, std::vector<float>& v) {
+  const std::size_t at = v.size();
+  v.resize(at + n);
+  float* out = v.data() + at;
+  std::size_t finite = 0, c = 0;
+#if defined(__SSE2__)
+  const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  const __m128d largest = _mm_set1_pd(std::numeric_limits<double>::max()), inf = _mm_set1_pd(INFINITY);
+  __m128i count = _mm_setzero_si128();  // minus the number of finite cells, in two 64-bit lanes
+  for (; c + 2 <= n; c += 2) {
+    const __m128d e = _mm_and_pd(_mm_sub_pd(_mm_loadu_pd(a + c), _mm_loadu_pd(b + c)), magnitude);
+    const __m128d ok = _mm_cmple_pd(e, largest);  // false for NaN and inf
+    count = _mm_add_epi64(count, _mm_castpd_si128(ok));
+    _mm_storel_pi(reinterpret_cast<__m64*>(out + c),
+                  _mm_cvtpd_ps(_mm_or_pd(_mm_and_pd(ok, e), _mm_andnot_pd(ok, inf))));
+  }
+  alignas(16) std::int64_t lanes[2];
+  _mm_store_si128(reinterpret_cast<__m128i*>(lanes), count);
+  finite = static_cast<std::size_t>(-(lanes[0] + lanes[1]));
+#endif
+  for (; c < n; ++c) {
+    const double e = std::fabs(a[c] - b[c]);
+    const bool ok = std::isfinite(e);
+    out[c] = ok ? static_cast<float>(e) : INFINITY;
+    finite += ok;
+  }
+  return finite;
+}
+
+// The k-th smallest (from 0) of v, v reordered. A strided sample gives a value t with, where k is
+// the 99th percentile of a map's errors, a few percent of v above it (the sample's element 4
+// standard deviations of its rank below the quantile asked for). One pass counts the values below
+// t and equal to it and keeps those above: the element is t, or the (k - below - equal)-th of those
+// above, unless k is below t (the sample misled), when all of v is ordered. Errors of a quantised
+// centre tie: on a full plane map 20% of them equal the threshold. Exact either way (test:
+// MapImage.DifferenceQuantileOfAFullMapIsTheKthSmallest).
+float kth_smallest(std::vector<float>& v, std::size_t k) {
+  constexpr std::size_t kStride = 32, kSmall = 64 * kStride;
+  const std::size_t n = v.size();
+  if (n >= kSmall) {
+    std::vector<float> sample;
+    sample.reserve(n / kStride + 1);
+    for (std::size_t i = 0; i < n; i += kStride) sample.push_back(v[i]);
+    const double m = static_cast<double>(sample.size()), p = static_cast<double>(k) / static_cast<double>(n - 1);
+    const double rank = p * (m - 1) - 4 * std::sqrt(m * p * (1 - p)) - 1;
+    if (rank >= 0) {
+      const auto r = static_cast<std::size_t>(rank);
+      std::nth_element(sample.begin(), sample.begin() + static_cast<std::ptrdiff_t>(r), sample.end());
+      const float t = sample[r];
+      std::vector<float> above;
+      above.reserve(n / 16);
+      std::size_t below = 0, equal = 0, i = 0;
+#if defined(__SSE2__)
+      const __m128 t4 = _mm_set1_ps(t);
+      __m128i lt = _mm_setzero_si128(), eq = _mm_setzero_si128();  // minus the counts, per lane
+      for (; i + 4 <= n; i += 4) {
+        const __m128 x = _mm_loadu_ps(v.data() + i);
+        lt = _mm_add_epi32(lt, _mm_castps_si128(_mm_cmplt_ps(x, t4)));
+        eq = _mm_add_epi32(eq, _mm_castps_si128(_mm_cmpeq_ps(x, t4)));
+        for (int gt = _mm_movemask_ps(_mm_cmpgt_ps(x, t4)); gt != 0; gt &= gt - 1)
+          above.push_back(v[i + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(gt)))]);
+      }
+      alignas(16) std::int32_t a[4], e[4];
+      _mm_store_si128(reinterpret_cast<__m128i*>(a), lt);
+      _mm_store_si128(reinterpret_cast<__m128i*>(e), eq);
+      below = static_cast<std::size_t>(-(static_cast<std::int64_t>(a[0]) + a[1] + a[2] + a[3]));
+      equal = static_cast<std::size_t>(-(static_cast<std::int64_t>(e[0]) + e[1] + e[2] + e[3]));
+#endif
+      for (; i < n; ++i) {
+        below += v[i] < t;
+        equal += v[i] == t;
+        if (v[i] > t) above.push_back(v[i]);
+      }
+      if (k >= below && k < below + equal) return t;
+      if (k >= below + equal) {
+        const std::size_t j = k - below - equal;
+        std::nth_element(above.begin(), above.begin() + static_cast<std::ptrdiff_t>(j), above.end());
+        return above[j];
+      }
+    }
+  }
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+}  // namespace
+
+// Every cell's |a - b| (+inf where not finite, so those order last), then the element of rank k
+// among the finite ones. A full plane map inside `simulate` (the thread's CPU, single runs): 0.30
+// to 0.40 ms, against 0.72 to 1.0 ms for a copy of the finite ones ordered by nth_element.
 double abs_difference_quantile(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
                                double q) {
   std::vector<float> v;
   v.reserve(a.size() * (a.empty() ? 0 : a[0].size()));
+  std::size_t finite = 0;
   for (std::size_t r = 0; r < a.size() && r < b.size(); ++r)
-    for (std::size_t c = 0, n = std::min(a[r].size(), b[r].size()); c < n; ++c) {
-      const double e = a[r][c] - b[r][c];
-      if (std::isfinite(e)) v.push_back(static_cast<float>(std::fabs(e)));
-    }
-  if (v.empty()) return -1;
-  const auto k = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1));
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-  return v[k];
+    finite += append_abs_differences(a[r].data(), b[r].data(), std::min(a[r].size(), b[r].size()), v);
+  if (finite == 0) return -1;
+  return kth_smallest(v, static_cast<std::size_t>(q * static_cast<double>(finite - 1)));
 }
 
 struct MapImageWriter::Buffers {
