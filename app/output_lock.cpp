@@ -60,8 +60,11 @@ OutputLock::OutputLock(const std::string& dir, const std::string& flag) : path_(
   char when[32] = {};
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S", std::localtime(&t));
   const std::string text = fmt::format("pid {}, started {}: {}\n", ::getpid(), when, command_line());
-  // The note is for messages only: the lock holds without it.
-  if (::ftruncate(fd_, 0) == 0) (void)!::pwrite(fd_, text.data(), text.size(), 0);
+  // The note is for messages only: the lock holds without it. Written, then cut to its length (a
+  // stale lock file may hold a longer one): a cut to zero makes ext4 write the file's block out
+  // when it is closed (its auto_da_alloc), which the removal at the end then waits for, and frees.
+  if (::pwrite(fd_, text.data(), text.size(), 0) == static_cast<ssize_t>(text.size()))
+    (void)!::ftruncate(fd_, static_cast<off_t>(text.size()));
   cleanup_slot_ = register_cleanup(path_, false);
 }
 
