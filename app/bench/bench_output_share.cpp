@@ -22,9 +22,11 @@ double median(std::vector<double> v) {
 
 // kRuns whole-process runs of `simulate` with `extra` flags: medians of each figure, and every
 // run's wall share. The first run may find the binary's pages and the folder cold; the median
-// leaves it out without choosing runs.
+// leaves it out without choosing runs. Eleven runs: with five, single runs' shares of 0.04 to 0.18
+// (the process's wall time moves by half on this machine) moved the median by up to 0.07 from bench
+// to bench.
 json measure(const std::vector<std::string>& extra, const std::string& out_dir) {
-  constexpr int kRuns = 5;
+  constexpr int kRuns = 11;
   std::vector<std::string> args = {"simulate",      "ls-conventional", "--scene", scene_path("plane.toml"),
                                    "--kernel-only", "--json",          "--force", "--out",
                                    out_dir};
