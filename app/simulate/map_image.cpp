@@ -251,13 +251,45 @@ std::size_t append_abs_differences(const double* a, const double* b, std::size_t
   return finite;
 }
 
+// How many values of v lie below t and how many equal it; those above it are appended to `above`.
+struct Split {
+  std::size_t below = 0, equal = 0;
+};
+Split split_at(const std::vector<float>& v, float t, std::vector<float>& above) {
+  Split s;
+  const std::size_t n = v.size();
+  std::size_t i = 0;
+#if defined(__SSE2__)
+  const __m128 t4 = _mm_set1_ps(t);
+  __m128i lt = _mm_setzero_si128(), eq = _mm_setzero_si128();  // minus the counts, per lane
+  for (; i + 4 <= n; i += 4) {
+    const __m128 x = _mm_loadu_ps(v.data() + i);
+    lt = _mm_add_epi32(lt, _mm_castps_si128(_mm_cmplt_ps(x, t4)));
+    eq = _mm_add_epi32(eq, _mm_castps_si128(_mm_cmpeq_ps(x, t4)));
+    for (int gt = _mm_movemask_ps(_mm_cmpgt_ps(x, t4)); gt != 0; gt &= gt - 1)
+      above.push_back(v[i + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(gt)))]);
+  }
+  alignas(16) std::int32_t a[4], e[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(a), lt);
+  _mm_store_si128(reinterpret_cast<__m128i*>(e), eq);
+  s.below = static_cast<std::size_t>(-(static_cast<std::int64_t>(a[0]) + a[1] + a[2] + a[3]));
+  s.equal = static_cast<std::size_t>(-(static_cast<std::int64_t>(e[0]) + e[1] + e[2] + e[3]));
+#endif
+  for (; i < n; ++i) {
+    s.below += v[i] < t;
+    s.equal += v[i] == t;
+    if (v[i] > t) above.push_back(v[i]);
+  }
+  return s;
+}
+
 // The k-th smallest (from 0) of v, v reordered. A strided sample gives a value t with, where k is
 // the 99th percentile of a map's errors, a few percent of v above it (the sample's element 4
-// standard deviations of its rank below the quantile asked for). One pass counts the values below
-// t and equal to it and keeps those above: the element is t, or the (k - below - equal)-th of those
-// above, unless k is below t (the sample misled), when all of v is ordered. Errors of a quantised
-// centre tie: on a full plane map 20% of them equal the threshold. Exact either way (test:
-// MapImage.DifferenceQuantileOfAFullMapIsTheKthSmallest).
+// standard deviations of its rank below the quantile asked for). One pass (split_at) counts the
+// values below t and equal to it and keeps those above: the element is t, or the
+// (k - below - equal)-th of those above, unless k is below t (the sample misled), when all of v is
+// ordered. Errors of a quantised centre tie: on a full plane map 20% of them equal the threshold.
+// Exact either way (test: MapImage.DifferenceQuantileOfAFullMapIsTheKthSmallest).
 float kth_smallest(std::vector<float>& v, std::size_t k) {
   constexpr std::size_t kStride = 32, kSmall = 64 * kStride;
   const std::size_t n = v.size();
@@ -273,31 +305,10 @@ float kth_smallest(std::vector<float>& v, std::size_t k) {
       const float t = sample[r];
       std::vector<float> above;
       above.reserve(n / 16);
-      std::size_t below = 0, equal = 0, i = 0;
-#if defined(__SSE2__)
-      const __m128 t4 = _mm_set1_ps(t);
-      __m128i lt = _mm_setzero_si128(), eq = _mm_setzero_si128();  // minus the counts, per lane
-      for (; i + 4 <= n; i += 4) {
-        const __m128 x = _mm_loadu_ps(v.data() + i);
-        lt = _mm_add_epi32(lt, _mm_castps_si128(_mm_cmplt_ps(x, t4)));
-        eq = _mm_add_epi32(eq, _mm_castps_si128(_mm_cmpeq_ps(x, t4)));
-        for (int gt = _mm_movemask_ps(_mm_cmpgt_ps(x, t4)); gt != 0; gt &= gt - 1)
-          above.push_back(v[i + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(gt)))]);
-      }
-      alignas(16) std::int32_t a[4], e[4];
-      _mm_store_si128(reinterpret_cast<__m128i*>(a), lt);
-      _mm_store_si128(reinterpret_cast<__m128i*>(e), eq);
-      below = static_cast<std::size_t>(-(static_cast<std::int64_t>(a[0]) + a[1] + a[2] + a[3]));
-      equal = static_cast<std::size_t>(-(static_cast<std::int64_t>(e[0]) + e[1] + e[2] + e[3]));
-#endif
-      for (; i < n; ++i) {
-        below += v[i] < t;
-        equal += v[i] == t;
-        if (v[i] > t) above.push_back(v[i]);
-      }
-      if (k >= below && k < below + equal) return t;
-      if (k >= below + equal) {
-        const std::size_t j = k - below - equal;
+      const Split s = split_at(v, t, above);
+      if (k >= s.below && k < s.below + s.equal) return t;
+      if (k >= s.below + s.equal) {
+        const std::size_t j = k - s.below - s.equal;
         std::nth_element(above.begin(), above.begin() + static_cast<std::ptrdiff_t>(j), above.end());
         return above[j];
       }
