@@ -452,13 +452,14 @@ class StagedFiles {
     auto [d, n] = split_path(path);
     if (n.empty()) throw UserError("cosim: " + flag + " '" + path + "' names a directory; give a file");
     auto& dir = dirs_[d];
-    if (!dir) dir = std::make_unique<OutputDir>(d, flag);
+    if (!dir) dir = std::make_unique<OutputDir>(d, flag, OutputFolder{"", false, true, true});
     const std::string staged = dir->staged(n);
     of_staged_[staged] = dir.get();
     return staged;
   }
   // Files the run wrote beside staged file `staged` (a trace's save file and filters:
-  // <stem>.gtkw, <stem>.*.txt) are committed with it.
+  // <stem>.gtkw, <stem>.*.txt) are committed with it. They name each other, so they are staged
+  // under their own names (OutputFolder::same_names).
   void adopt_companions(const std::string& staged) {
     if (staged.empty()) return;
     const std::filesystem::path p(staged);

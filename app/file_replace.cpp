@@ -20,7 +20,7 @@ void replace_file(const std::string& from, const std::string& to) {
   if (::lstat(to.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
     if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
       std::error_code ec;
-      fs::remove(from, ec);  // the old file; left to the staging folder's removal if this fails
+      fs::remove(from, ec);  // the old file; if this fails, a later run removes it as a dead run's staged file
       return;
     }
     if (errno != EINVAL && errno != ENOSYS && errno != ENOENT)

@@ -32,8 +32,8 @@ void remove_stale_staging(const std::string& dir) {
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
-    if (name.rfind(".staging-", 0) != 0 || name == ".staging-sweep") continue;
-    const std::string digits = name.substr(9);
+    if (name.rfind(".staging-", 0) != 0) continue;  // .staging-sweep (a sweep's journal) has no pid
+    const std::string digits = name.substr(9, name.find('.', 9) - 9);
     if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
     const long pid = std::stol(digits);
     if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) fs::remove_all(e.path(), ec);
@@ -73,10 +73,17 @@ OutputDir::OutputDir(const std::string& dir, const std::string& flag, const Outp
           "{} {}: holds an earlier rangesim run without a record of its files (summary.json, no {}); add --force "
           "to write into it anyway (files of the same names are replaced, the others stay), or choose another {}",
           flag, dir_, kManifestName, flag));
+    // Staged files beside their final names, not in a folder of their own: the folder's removal
+    // at the commit waited 0.2 ms for the disk's discard of its block on an ext4 without a journal
+    // mounted with `discard` (a `simulate` commit: 0.33 against 0.55 ms, medians of 40, measured).
     staging_ = (fs::path(dir_) / fmt::format(".staging-{}", ::getpid())).string();
-    fs::create_directory(staging_, ec);
-    if (ec) throw UserError(fmt::format("{} {}: output directory is not writable ({})", flag, dir_, ec.message()));
-    staging_slot_ = register_cleanup(staging_, true);
+    if (folder_.same_names) {
+      make_staging();
+      prefix_ = staging_ + "/";
+    } else {
+      prefix_ = staging_ + ".";
+      prefix_slot_ = register_prefix_cleanup(prefix_);
+    }
   } catch (...) {
     lock_.reset();
     unregister_cleanup(dir_slot_);
@@ -87,19 +94,45 @@ OutputDir::OutputDir(const std::string& dir, const std::string& flag, const Outp
 
 OutputDir::~OutputDir() {
   std::error_code ec;
-  if (!committed_) fs::remove_all(staging_, ec);
+  if (!committed_) {
+    if (!folder_.same_names) remove_staged();
+    if (made_staging_) fs::remove_all(staging_, ec);
+  }
   unregister_cleanup(staging_slot_);
+  unregister_cleanup(prefix_slot_);
   lock_.reset();  // its file goes first, so that a folder this run created can go too
   unregister_cleanup(dir_slot_);
   if (!committed_ && created_dir_ && fs::is_empty(dir_, ec)) fs::remove(dir_, ec);
 }
 
-std::string OutputDir::staged(const std::string& name) {
-  names_.push_back(name);
-  return (fs::path(staging_) / name).string();
+void OutputDir::remove_staged() const {
+  std::error_code ec;
+  const std::string own = fs::path(prefix_).filename().string();
+  for (const auto& e : fs::directory_iterator(dir_, ec)) {
+    const std::string name = e.path().filename().string();
+    std::error_code remove_ec;
+    if (name.rfind(own, 0) == 0) fs::remove_all(e.path(), remove_ec);
+  }
 }
 
-std::string OutputDir::scratch(const std::string& name) const { return (fs::path(staging_) / name).string(); }
+std::string OutputDir::staged(const std::string& name) {
+  names_.push_back(name);
+  return prefix_ + name;
+}
+
+void OutputDir::make_staging() {
+  if (made_staging_) return;
+  std::error_code ec;
+  fs::create_directory(staging_, ec);
+  if (ec) throw UserError(fmt::format("{}: cannot make the staging folder ({})", staging_, ec.message()));
+  made_staging_ = true;
+  staging_slot_ = register_cleanup(staging_, true);
+}
+
+std::string OutputDir::scratch(const std::string& name) {
+  make_staging();
+  return (fs::path(staging_) / name).string();
+}
 
 void OutputDir::write(const std::string& name, const std::string& text) {
   const std::string path = staged(name);
@@ -113,7 +146,7 @@ std::vector<std::string> OutputDir::commit() {
   const CommitSection section;  // a signal now waits until the folder is complete
   std::vector<std::string> names;
   for (const auto& name : names_)
-    if (fs::exists(fs::path(staging_) / name) && std::find(names.begin(), names.end(), name) == names.end())
+    if (fs::exists(prefix_ + name) && std::find(names.begin(), names.end(), name) == names.end())
       names.push_back(name);  // optional outputs (plots without gnuplot) may be missing
   // A directory where a file goes would stop the moves half-way (a rename cannot replace it):
   // refused before anything moves, so the folder keeps the previous run's files.
@@ -138,20 +171,19 @@ std::vector<std::string> OutputDir::commit() {
   if (manifest) {
     std::vector<std::string> both = names;
     both.insert(both.end(), stale.begin(), stale.end());
-    write_manifest(dir_, {folder_.kind, both}, staging_);
+    write_manifest(dir_, {folder_.kind, both}, prefix_);
   }
   std::vector<std::string> written;
   for (const auto& name : names) {
     const fs::path to = fs::path(dir_) / name;
-    replace_file((fs::path(staging_) / name).string(), to.string());
+    replace_file(prefix_ + name, to.string());
     written.push_back(to.string());
   }
   std::error_code ec;
   for (const auto& f : stale)
     if (fs::is_regular_file(fs::symlink_status(fs::path(dir_) / f, ec))) fs::remove(fs::path(dir_) / f, ec);
-  if (manifest) write_manifest(dir_, {folder_.kind, names}, staging_);
-  // Empty unless the run left scratch files: one rmdir, not a walk of the folder.
-  if (!fs::remove(staging_, ec)) fs::remove_all(staging_, ec);
+  if (manifest) write_manifest(dir_, {folder_.kind, names}, prefix_);
+  if (made_staging_) fs::remove_all(staging_, ec);
   committed_ = true;
   return written;
 }

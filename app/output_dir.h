@@ -1,6 +1,8 @@
 #pragma once
-// Writes a command's output files so that nothing is half-written: files go to a staging
-// folder inside DIR and are renamed into DIR only when the whole job has succeeded. An
+// Writes a command's output files so that nothing is half-written: each file is staged in DIR
+// under a hidden name (.staging-<pid>.NAME; OutputFolder::same_names: .staging-<pid>/NAME) and
+// moved over NAME only when the whole job has succeeded. Scratch files (plot scripts and data,
+// never moved) go to the staging folder (.staging-<pid>), made when the first is asked for. An
 // unwritable DIR is reported before any work is done.
 //
 // A run's own output folder (--out of evaluate, simulate, table, sweep, merge, bench) is also
@@ -24,7 +26,8 @@ class OutputLock;
 // rename at the end would otherwise fail on or, as root, replace. Throws UserError naming `flag`.
 void check_output_file(const std::string& path, const std::string& flag);
 
-// Staging folders (.staging-<pid>) of `dir` left by runs whose process is gone.
+// Staged files and staging folders (.staging-<pid>.NAME, .staging-<pid>) of `dir` left by runs
+// whose process is gone.
 void remove_stale_staging(const std::string& dir);
 
 // What a run's output folder is.
@@ -33,23 +36,28 @@ struct OutputFolder {
                        // user-named file (--junit, --trace): no lock, no manifest
   bool force = false;  // --force: replace the results of another kind of run
   bool lock = true;    // false: an MPI rank other than 0 (rank 0 holds the lock and commits)
+  // Stage each file under its own name in the staging folder, not beside it under a hidden one:
+  // for files that name each other (a trace and its GTKWave save file, app/cmd_cosim.cpp).
+  bool same_names = false;
 };
 
 class OutputDir {
  public:
-  // Creates DIR if needed, takes its lock, checks its manifest and makes a staging folder in it;
-  // throws UserError naming `flag` and DIR.
+  // Creates DIR if needed, takes its lock and checks its manifest; throws UserError naming `flag`
+  // and DIR.
   OutputDir(const std::string& dir, const std::string& flag, const OutputFolder& folder = {});
-  // Removes the staging folder (and DIR, if this object created it and it is still empty)
-  // unless commit() ran.
+  // Removes the staged files and the staging folder (and DIR, if this object created it and it is
+  // still empty) unless commit() ran.
   ~OutputDir();
   OutputDir(const OutputDir&) = delete;
   OutputDir& operator=(const OutputDir&) = delete;
 
-  // Path of `name` inside the staging folder; the caller writes it there.
+  // The staged path of `name` (DIR/.staging-<pid>.NAME, or DIR/.staging-<pid>/NAME); the caller
+  // writes it there.
   std::string staged(const std::string& name);
-  // Path of a scratch file in the staging folder: never moved into DIR (plot scripts, data).
-  std::string scratch(const std::string& name) const;
+  // Path of a scratch file in the staging folder, which this makes: never moved into DIR (plot
+  // scripts, data). Throws UserError when the folder cannot be made.
+  std::string scratch(const std::string& name);
   // Writes `text` to the staged file `name`.
   void write(const std::string& name, const std::string& text);
   // Moves every staged file into DIR (app/file_replace.h, same file system), removes the previous run's files
@@ -59,13 +67,20 @@ class OutputDir {
   const std::string& dir() const { return dir_; }
 
  private:
+  // Makes the staging folder (once); throws UserError naming it.
+  void make_staging();
+  // Every staged file and anything else named .staging-<pid>.* in DIR (a tool's companion files).
+  void remove_staged() const;
+
   std::string dir_;
-  std::string staging_;
+  std::string prefix_;   // staged files are prefix_ + NAME: DIR/.staging-<pid>. (or <pid>/)
+  std::string staging_;  // DIR/.staging-<pid> : the scratch folder, once scratch() made it
   std::vector<std::string> names_;
   OutputFolder folder_;
   std::optional<OutputManifest> previous_;  // the manifest found in DIR
   std::unique_ptr<OutputLock> lock_;
-  int dir_slot_ = -1, staging_slot_ = -1;  // app/run_control.h cleanup slots
+  int dir_slot_ = -1, prefix_slot_ = -1, staging_slot_ = -1;  // app/run_control.h cleanup slots
+  bool made_staging_ = false;
   bool created_dir_ = false;
   bool committed_ = false;
 };

@@ -38,11 +38,11 @@ std::optional<OutputManifest> read_manifest(const std::string& dir) {
   return m;
 }
 
-void write_manifest(const std::string& dir, const OutputManifest& m, const std::string& scratch_dir) {
+void write_manifest(const std::string& dir, const OutputManifest& m, const std::string& staged_prefix) {
   std::ostringstream text;
   text << kMagic << "\nkind " << m.kind << "\n";
   for (const auto& f : m.files) text << "file " << f << "\n";
-  const fs::path tmp = fs::path(scratch_dir) / kManifestName;
+  const fs::path tmp = staged_prefix + kManifestName;
   {
     std::ofstream out(tmp, std::ios::binary);
     out << text.str();

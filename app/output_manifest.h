@@ -22,8 +22,8 @@ inline constexpr const char* kManifestName = ".rangesim-manifest";
 // a hidden file) are dropped, so a hand-edited manifest cannot point a run at other files.
 std::optional<OutputManifest> read_manifest(const std::string& dir);
 
-// Writes the manifest through a temporary file in `scratch_dir` (on the same file system, e.g. the
-// staging folder) and a rename: at any instant the folder has a complete manifest.
-void write_manifest(const std::string& dir, const OutputManifest& m, const std::string& scratch_dir);
+// Writes the manifest through a temporary file named `staged_prefix` + its name (on the same file
+// system: DIR/.staging-<pid>.) and a rename: at any instant the folder has a complete manifest.
+void write_manifest(const std::string& dir, const OutputManifest& m, const std::string& staged_prefix);
 
 }  // namespace rangesim::app

@@ -26,9 +26,10 @@ const Clock::time_point g_start = Clock::now();
 // its path may be read (2) or is being written (1).
 constexpr int kSlots = 16;
 constexpr std::size_t kPathMax = 4096;
+enum class Removal { Path, Tree, Prefixed };  // register_cleanup, tree; register_prefix_cleanup
 struct Slot {
   std::atomic<int> state{0};  // 0 free, 1 being changed, 2 ready
-  bool tree = false;
+  Removal removal = Removal::Path;
   char path[kPathMax] = {};
 };
 Slot g_slots[kSlots];
@@ -56,13 +57,14 @@ void write_all(const char* text) {
 }
 
 // Removes `path` and what it holds, with async-signal-safe calls only; folders nest at most a few
-// levels in a staging folder.
-void remove_tree(const char* path, int depth) {
+// levels in a staging folder. With `only` (at depth 0), only the entries of folder `path` whose
+// names start with it go, and the folder stays.
+void remove_tree(const char* path, int depth, const char* only = nullptr) {
   static char names[8][kPathMax];
   alignas(8) static char buffers[8][8192];
   const int fd = ::open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) {
-    ::unlink(path);
+    if (!only) ::unlink(path);
     return;
   }
   for (;;) {
@@ -72,6 +74,7 @@ void remove_tree(const char* path, int depth) {
       const auto* e = reinterpret_cast<const struct dirent64*>(buffers[depth] + at);
       at += e->d_reclen;
       if (std::strcmp(e->d_name, ".") == 0 || std::strcmp(e->d_name, "..") == 0) continue;
+      if (only && std::strncmp(e->d_name, only, std::strlen(only)) != 0) continue;
       if (::unlinkat(fd, e->d_name, 0) == 0 || depth + 1 >= 8) continue;
       const std::size_t a = std::strlen(path), b = std::strlen(e->d_name);
       if (a + b + 2 > kPathMax) continue;
@@ -82,7 +85,16 @@ void remove_tree(const char* path, int depth) {
     }
   }
   ::close(fd);
-  ::rmdir(path);
+  if (!only) ::rmdir(path);
+}
+
+// The entries of folder D named P... for a slot's "D/P" (register_prefix_cleanup).
+void remove_prefixed(char* folder_and_prefix) {
+  char* slash = std::strrchr(folder_and_prefix, '/');
+  if (!slash) return;
+  *slash = '\0';
+  remove_tree(folder_and_prefix[0] ? folder_and_prefix : "/", 0, slash + 1);
+  *slash = '/';
 }
 
 // Ends the run now: cleanup in reverse order of registration, the message, the exit code.
@@ -91,8 +103,10 @@ void remove_tree(const char* path, int depth) {
     for (;;) ::pause();  // another thread is ending the run
   for (int i = kSlots - 1; i >= 0; --i) {
     if (g_slots[i].state.load() != 2) continue;
-    if (g_slots[i].tree)
+    if (g_slots[i].removal == Removal::Tree)
       remove_tree(g_slots[i].path, 0);
+    else if (g_slots[i].removal == Removal::Prefixed)
+      remove_prefixed(g_slots[i].path);
     else if (::unlink(g_slots[i].path) != 0)
       ::rmdir(g_slots[i].path);
   }
@@ -183,17 +197,29 @@ void install_stop_handlers() {
   }
 }
 
-int register_cleanup(const std::string& path, bool tree) {
+namespace {
+
+int register_removal(const std::string& path, Removal removal) {
   if (path.size() + 1 > kPathMax) return -1;
   for (int i = 0; i < kSlots; ++i) {
     int expected = 0;
     if (!g_slots[i].state.compare_exchange_strong(expected, 1)) continue;
-    g_slots[i].tree = tree;
+    g_slots[i].removal = removal;
     std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
     g_slots[i].state.store(2);
     return i;
   }
   return -1;
+}
+
+}  // namespace
+
+int register_cleanup(const std::string& path, bool tree) {
+  return register_removal(path, tree ? Removal::Tree : Removal::Path);
+}
+
+int register_prefix_cleanup(const std::string& folder_and_prefix) {
+  return register_removal(folder_and_prefix, Removal::Prefixed);
 }
 
 void unregister_cleanup(int slot) {

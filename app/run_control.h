@@ -26,6 +26,9 @@ void install_stop_handlers();
 // Paths removed when a run is ended at once; `tree` removes a folder with its contents, otherwise
 // a file or an empty folder is removed. Returns a slot for unregister_cleanup (-1: table full).
 int register_cleanup(const std::string& path, bool tree);
+// The same for every entry of folder D whose name starts with P (files and folders with their
+// contents), given as "D/P": a run's staged files (app/output_dir.h).
+int register_prefix_cleanup(const std::string& folder_and_prefix);
 void unregister_cleanup(int slot);
 
 // While one lives, a stop waits until it ends (then ends the run, whose outputs are complete).
