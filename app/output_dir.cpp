@@ -75,7 +75,8 @@ OutputDir::OutputDir(const std::string& dir, const std::string& flag, const Outp
           flag, dir_, kManifestName, flag));
     // Staged files beside their final names, not in a folder of their own: the folder's removal
     // at the commit waited 0.2 ms for the disk's discard of its block on an ext4 without a journal
-    // mounted with `discard` (a `simulate` commit: 0.33 against 0.55 ms, medians of 40, measured).
+    // mounted with `discard` (a model of the commit of a `simulate` run's files: 0.33 against 0.52 to
+    // 0.56 ms, medians of 40 alternating runs, measured).
     staging_ = (fs::path(dir_) / fmt::format(".staging-{}", ::getpid())).string();
     if (folder_.same_names) {
       make_staging();
