@@ -5,9 +5,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <exception>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -22,6 +20,7 @@
 #include "app/resource_estimate.h"
 #include "app/simulate/npy_writer.h"
 #include "app/simulate/png_writer.h"
+#include "app/simulate/run_jobs.h"
 #include "app/simulate/simulate_output.h"
 #include "app/simulate/simulate_report.h"
 #include "app/simulate/trace_output.h"
@@ -101,29 +100,6 @@ double cpu_with_children_s() {
 
 // A table of `values` numbers goes out as .npy (true) or CSV.
 bool as_npy(const SimulateOptions& opt, std::size_t values) { return opt.npy || (!opt.csv && values > kNpyMinValues); }
-
-// Runs every job once on up to `threads` threads (the caller's among them), taking them in order
-// as threads come free; when all have ended, rethrows the failure of the first job that failed.
-void run_jobs(const std::vector<std::function<void()>>& jobs, int threads) {
-  std::atomic<std::size_t> next{0};
-  std::vector<std::exception_ptr> failures(jobs.size());
-  auto work = [&] {
-    for (std::size_t i; (i = next++) < jobs.size();) {
-      try {
-        jobs[i]();
-      } catch (...) {
-        failures[i] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> helpers;
-  const std::size_t helper_count = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), jobs.size());
-  for (std::size_t t = 1; t < helper_count; ++t) helpers.emplace_back(work);
-  work();
-  for (std::thread& h : helpers) h.join();
-  for (const std::exception_ptr& f : failures)
-    if (f) std::rethrow_exception(f);
-}
 
 // A matrix file staged now as NAME.npy or NAME.csv (as_npy), written by the job.
 std::function<void()> matrix_job(const SimulateOptions& opt, OutputDir& out, const std::string& name,
