@@ -66,7 +66,7 @@ std::string series_colour(std::size_t i) { return kLineColours[i % (sizeof(kLine
 // dependent compares: 0.18 to 0.26 ms of a full map's 137,000 cells inside `simulate`); a value
 // that is not finite counts as +inf for the minimum and -inf for the maximum. A minimum or maximum
 // of 0 found as both +0 and -0 may come out with either sign.
-std::pair<double, double> finite_range(const std::vector<std::vector<double>>& rows) {
+std::pair<double, double> finite_range(MatrixRows rows) {
   double lo = INFINITY, hi = -INFINITY;
   for (const auto& r : rows) {
     const double* v = r.data();

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "app/matrix_rows.h"
+
 namespace rangesim::app {
 
 // `set encoding utf8`, `set micro` (µ in prefixes) and the shared defaults (outward tics, dotted grid); after `set
@@ -27,6 +29,6 @@ std::string series_style(std::size_t i);
 // Only the colour of the i-th series, "#rrggbb" (points and their model curve share it).
 std::string series_colour(std::size_t i);
 // Minimum and maximum of the finite values (NaN, NaN when none).
-std::pair<double, double> finite_range(const std::vector<std::vector<double>>& rows);
+std::pair<double, double> finite_range(MatrixRows rows);
 
 }  // namespace rangesim::app

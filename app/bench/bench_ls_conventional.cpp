@@ -156,8 +156,9 @@ const std::vector<FigureSpec>& ls_conventional_figures() {
        "simulated time / the ls-conventional map's run time on both cores (half its frame accesses on each: "
        "the slower thread's CPU time; chip 1.0)"},
       {"output_share", "<= 0.1",
-       "output writing (files, images) / wall time of `simulate ls-conventional --kernel-only` on the map "
-       "(whole process, median of 5 runs; the CPU share in bench.json)"},
+       "output writing (files, images, commit) from the run's end / wall time of `simulate ls-conventional "
+       "--kernel-only` on the map (whole process, median of 11 runs; the CPU share in bench.json, with what the map's "
+       "files took while the run scored it)"},
   };
   return f;
 }

@@ -31,7 +31,7 @@ json measure(const std::vector<std::string>& extra, const std::string& out_dir) 
                                    "--kernel-only", "--json",          "--force", "--out",
                                    out_dir};
   args.insert(args.end(), extra.begin(), extra.end());
-  std::vector<double> process_wall, process_cpu, output_wall, output_cpu, wall_share, cpu_share;
+  std::vector<double> process_wall, process_cpu, output_wall, output_cpu, during_run, wall_share, cpu_share;
   for (int i = 0; i < kRuns; ++i) {
     const SelfRun r = run_self_timed(args);
     if (r.exit_code != 0)
@@ -40,6 +40,7 @@ json measure(const std::vector<std::string>& extra, const std::string& out_dir) 
     const double ow = sj.at("output_wall_time_s").get<double>(), oc = sj.at("output_cpu_s").get<double>();
     process_wall.push_back(r.wall_s), process_cpu.push_back(r.cpu_s);
     output_wall.push_back(ow), output_cpu.push_back(oc);
+    during_run.push_back(sj.value("output_cpu_during_run_s", 0.0));
     wall_share.push_back(ow / r.wall_s), cpu_share.push_back(oc / r.cpu_s);
   }
   return json{{"flags", extra},
@@ -48,6 +49,7 @@ json measure(const std::vector<std::string>& extra, const std::string& out_dir) 
               {"process_cpu_s", median(process_cpu)},
               {"output_wall_s", median(output_wall)},
               {"output_cpu_s", median(output_cpu)},
+              {"output_cpu_during_run_s", median(during_run)},
               {"wall_share", median(wall_share)},
               {"cpu_share", median(cpu_share)},
               {"wall_shares", wall_share}};

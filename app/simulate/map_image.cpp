@@ -278,8 +278,7 @@ void split_row(const double* a, const double* b, std::size_t n, float t, Split& 
 // percent of the values above it: from every kStride-th finite one, the element 4 standard
 // deviations of its rank below q. False when the map is small or the rank falls below 0.
 constexpr std::size_t kStride = 32;
-bool sample_threshold(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b, double q,
-                      float& t) {
+bool sample_threshold(MatrixRows a, MatrixRows b, double q, float& t) {
   std::vector<float> sample;
   for (std::size_t r = 0, at = 0; r < a.size() && r < b.size(); ++r) {
     const std::size_t n = std::min(a[r].size(), b[r].size());
@@ -304,8 +303,7 @@ bool sample_threshold(const std::vector<std::vector<double>>& a, const std::vect
 // (test: MapImage.DifferenceQuantileOfAFullMapIsTheKthSmallest). A full map, fastest of 300
 // (pinned): 0.23 ms, against 0.28 ms storing every value first and splitting those; what is left is
 // reading the two maps (2.2 MB).
-double abs_difference_quantile(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
-                               double q) {
+double abs_difference_quantile(MatrixRows a, MatrixRows b, double q) {
   const auto split_maps = [&](float t, std::vector<float>& above) {
     Split s;
     for (std::size_t r = 0; r < a.size() && r < b.size(); ++r)

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "app/matrix_rows.h"
+
 namespace rangesim::app {
 
 enum class MapPalette { Viridis, Diverging };
@@ -32,8 +34,7 @@ void map_row_colours(const double* values, int n, double lo, double span, std::u
 // The q-quantile (0 <= q <= 1; the element of rank floor(q (n - 1)) from the smallest) of |a - b|
 // over the cells where both maps have a value and the difference is finite, in single precision:
 // a colour scale's end, not a figure. -1 where there is no such cell.
-double abs_difference_quantile(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
-                               double q);
+double abs_difference_quantile(MatrixRows a, MatrixRows b, double q);
 
 // Draws maps into one image buffer, reused from map to map (a map's first-touched pages cost more
 // than drawing it).

@@ -39,7 +39,7 @@ std::string header(const std::string& descr, const std::string& shape) {
   return h + dict;
 }
 
-std::string matrix_header(const std::vector<std::vector<double>>& rows, std::size_t columns) {
+std::string matrix_header(MatrixRows rows, std::size_t columns) {
   for (const auto& r : rows)
     if (r.size() != columns) throw std::logic_error("npy_matrix: ragged rows");
   return header("'<f8'", "(" + std::to_string(rows.size()) + ", " + std::to_string(columns) + ")");
@@ -184,7 +184,7 @@ class File {
 
 }  // namespace
 
-void write_npy_matrix(const std::string& path, const std::vector<std::vector<double>>& rows, std::size_t columns) {
+void write_npy_matrix(const std::string& path, MatrixRows rows, std::size_t columns) {
   const std::string h = matrix_header(rows, columns);
   File f(path, h.size() + rows.size() * columns * 8);
   f.put(h.data(), h.size());

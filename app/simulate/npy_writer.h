@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/matrix_rows.h"
 #include "systemc/common/table.h"
 
 namespace rangesim::app {
@@ -13,7 +14,7 @@ namespace rangesim::app {
 // are 12 MB); std::runtime_error if the write fails.
 // `rows` as a C-order float64 array of shape (rows, columns); every row must have `columns`
 // values. NaN stays NaN.
-void write_npy_matrix(const std::string& path, const std::vector<std::vector<double>>& rows, std::size_t columns);
+void write_npy_matrix(const std::string& path, MatrixRows rows, std::size_t columns);
 // `t` as a record array of shape (rows,): integer columns '<i8', the others '<f8' (NaN = empty).
 void write_npy_table(const std::string& path, const systemc::Table& t);
 

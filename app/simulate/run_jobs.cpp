@@ -2,10 +2,15 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <time.h>
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
+#include <deque>
 #include <exception>
+#include <mutex>
+#include <utility>
 
 namespace rangesim::app {
 
@@ -58,7 +63,103 @@ bool start(Helper& h, int cpu, pthread_t& thread) {
   return ok;
 }
 
+double cpu_clock_s(clockid_t clock) {
+  timespec t{};
+  if (::clock_gettime(clock, &t) != 0) return -1;
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
+
+struct BackgroundJobs::State {
+  std::mutex m;
+  std::condition_variable more;
+  std::deque<std::function<void()>> queue;  // under m
+  bool closed = false;                      // under m: no job comes after those queued
+  std::exception_ptr failure;
+  std::function<void()> work;
+  Helper helper{};
+  pthread_t thread{};
+  bool running = false;                // a helper was started and not yet joined
+  std::atomic<bool> ended{false};      // the helper has set total_cpu_s
+  std::atomic<double> total_cpu_s{0};  // the jobs' CPU, once they have run
+
+  // Queued jobs until the queue is closed and empty (false: return once it is empty).
+  void run_queued(bool until_closed) {
+    for (;;) {
+      std::function<void()> job;
+      {
+        std::unique_lock<std::mutex> lock(m);
+        if (until_closed) more.wait(lock, [&] { return closed || !queue.empty(); });
+        if (queue.empty()) return;
+        job = std::move(queue.front());
+        queue.pop_front();
+      }
+      try {
+        job();
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(m);
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  }
+  // The helper's life.
+  void run_all() {
+    const double start = cpu_clock_s(CLOCK_THREAD_CPUTIME_ID);
+    run_queued(true);
+    total_cpu_s = cpu_clock_s(CLOCK_THREAD_CPUTIME_ID) - start;
+    ended = true;
+  }
+  void close() {
+    {
+      std::lock_guard<std::mutex> lock(m);
+      closed = true;
+    }
+    more.notify_one();
+  }
+};
+
+BackgroundJobs::BackgroundJobs(std::vector<std::function<void()>> jobs) : s_(std::make_unique<State>()) {
+  State& s = *s_;
+  for (auto& job : jobs) s.queue.push_back(std::move(job));
+  s.work = [&s] { s.run_all(); };
+  cpu_set_t all;
+  const std::vector<int> cpus = other_cpus(all);
+  s.helper = Helper{&s.work, all, false};
+  s.running = start(s.helper, cpus.empty() ? -1 : cpus.front(), s.thread);
+}
+
+BackgroundJobs::~BackgroundJobs() {
+  try {
+    wait();
+  } catch (...) {  // the caller is already failing, or never asked
+  }
+}
+
+void BackgroundJobs::add(std::function<void()> job) {
+  {
+    std::lock_guard<std::mutex> lock(s_->m);
+    s_->queue.push_back(std::move(job));
+  }
+  s_->more.notify_one();
+}
+
+void BackgroundJobs::wait() {
+  s_->close();
+  s_->run_queued(false);  // beside the helper, or alone where none could be made
+  if (s_->running) ::pthread_join(s_->thread, nullptr);
+  s_->running = false;
+  if (s_->failure) std::rethrow_exception(std::exchange(s_->failure, nullptr));
+}
+
+double BackgroundJobs::cpu_s() const {
+  if (!s_->ended && s_->running) {
+    clockid_t clock;
+    if (::pthread_getcpuclockid(s_->thread, &clock) == 0)
+      if (const double now = cpu_clock_s(clock); now >= 0 && !s_->ended) return now;
+  }
+  return s_->ended ? s_->total_cpu_s.load() : 0.0;
+}
 
 void run_jobs(const std::vector<std::function<void()>>& jobs, int threads) {
   std::atomic<std::size_t> next{0};

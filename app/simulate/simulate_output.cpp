@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "app/matrix_rows.h"
 #include "app/plot_style.h"
 #include "app/simulate/map_image.h"
 
@@ -21,9 +22,6 @@ MapImageSpec labelled(const systemc::RangeMap& m, const std::string& what, const
   return spec;
 }
 
-int rows_of(const systemc::RangeMap& m) { return static_cast<int>(m.range_m.size()); }
-int columns_of(const systemc::RangeMap& m) { return m.range_m.empty() ? 0 : static_cast<int>(m.range_m[0].size()); }
-
 // Whether some pixel has both a range and a truth (the error image has something to show).
 bool has_error(const systemc::RangeMap& m) {
   for (std::size_t r = 0; r < m.range_m.size() && r < m.truth_m.size(); ++r)
@@ -32,18 +30,20 @@ bool has_error(const systemc::RangeMap& m) {
   return false;
 }
 
-void draw_range(const std::string& path, const systemc::RangeMap& m) {
-  MapImageSpec spec = labelled(m, "valid ranges (blank: invalid)", "range [m]");
-  const auto [lo, hi] = finite_range(m.range_m);
+int columns_of(MatrixRows m) { return m.empty() ? 0 : static_cast<int>(m[0].size()); }
+
+// The map's valid ranges on viridis from their smallest to their largest.
+void draw_range(const std::string& path, MatrixRows range, MapImageSpec spec) {
+  const auto [lo, hi] = finite_range(range);
   if (std::isfinite(lo)) {
     // A flat map still gets a colour range: +-1e-9 of its value.
     const double pad = hi > lo ? 0.0 : 1e-9 * std::max(1.0, std::fabs(hi));
     spec.lo = lo - pad, spec.hi = hi + pad;
   }
   MapImageWriter().write(
-      path, rows_of(m), columns_of(m),
-      [&m](int r, double* v) {
-        const std::vector<double>& row = m.range_m[static_cast<std::size_t>(r)];
+      path, static_cast<int>(range.size()), columns_of(range),
+      [range](int r, double* v) {
+        const std::vector<double>& row = range[static_cast<std::size_t>(r)];
         std::copy(row.begin(), row.end(), v);
       },
       spec);
@@ -51,31 +51,35 @@ void draw_range(const std::string& path, const systemc::RangeMap& m) {
 
 // The error where both the range and the truth exist, symmetric about 0 to the 99th percentile of
 // |error|: a few edge pixels must not wash the rest out; beyond it the end colours show.
-void draw_error(const std::string& path, const systemc::RangeMap& m) {
-  MapImageSpec spec = labelled(m, "range error (colours clipped at the 99th percentile)", "range - truth [m]");
-  const double span = std::max(abs_difference_quantile(m.range_m, m.truth_m, 0.99), 1e-9);
+void draw_error(const std::string& path, MatrixRows range, MatrixRows truth, MapImageSpec spec) {
+  const double span = std::max(abs_difference_quantile(range, truth, 0.99), 1e-9);
   spec.lo = -span, spec.hi = span;
   spec.palette = MapPalette::Diverging;
   MapImageWriter().write(
-      path, rows_of(m), columns_of(m),
-      [&m](int r, double* v) {
+      path, static_cast<int>(range.size()), columns_of(range),
+      [range, truth](int r, double* v) {
         const auto i = static_cast<std::size_t>(r);
-        const std::vector<double>& range = m.range_m[i];
-        const std::size_t n = i < m.truth_m.size() ? std::min(range.size(), m.truth_m[i].size()) : 0;
-        for (std::size_t j = 0; j < n; ++j) v[j] = range[j] - m.truth_m[i][j];
-        std::fill(v + n, v + range.size(), NAN);
+        const std::vector<double>& row = range[i];
+        const std::size_t n = i < truth.size() ? std::min(row.size(), truth[i].size()) : 0;
+        for (std::size_t j = 0; j < n; ++j) v[j] = row[j] - truth[i][j];
+        std::fill(v + n, v + row.size(), NAN);
       },
       spec);
 }
 
 }  // namespace
 
-std::vector<std::function<void()>> range_map_image_jobs(OutputDir& out, const systemc::RangeMap& m) {
-  const std::string range_path = out.staged("range_map.png");
-  std::vector<std::function<void()>> jobs;
-  if (has_error(m)) jobs.emplace_back([path = out.staged("range_error.png"), &m] { draw_error(path, m); });
-  jobs.emplace_back([range_path, &m] { draw_range(range_path, m); });
-  return jobs;
+std::function<void()> range_image_job(OutputDir& out, const systemc::RangeMap& m) {
+  return [path = out.staged("range_map.png"), range = MatrixRows(m.range_m),
+          spec = labelled(m, "valid ranges (blank: invalid)", "range [m]")] { draw_range(path, range, spec); };
+}
+
+std::function<void()> error_image_job(OutputDir& out, const systemc::RangeMap& m) {
+  if (!has_error(m)) return {};
+  return [path = out.staged("range_error.png"), range = MatrixRows(m.range_m), truth = MatrixRows(m.truth_m),
+          spec = labelled(m, "range error (colours clipped at the 99th percentile)", "range - truth [m]")] {
+    draw_error(path, range, truth, spec);
+  };
 }
 
 }  // namespace rangesim::app

@@ -9,12 +9,19 @@
 
 namespace rangesim::app {
 
-// One job per image, the costlier first, its file staged now: range_map.png (valid ranges on
-// viridis, invalid pixels blank, one pixel a square) and, where a range and its truth both exist
-// somewhere, range_error.png (range - truth on a diverging map symmetric about 0, to the 99th
-// percentile of |range - truth|), staged in that order and run first. Each draws in-process
-// (app/simulate/map_image.h) with buffers of its own, so the jobs may run on threads of their own
-// while `map` lives; a write error throws std::runtime_error naming the file.
-std::vector<std::function<void()>> range_map_image_jobs(OutputDir& out, const systemc::RangeMap& map);
+// Each image is drawn by a job in-process (app/simulate/map_image.h), with buffers of its own, so
+// jobs may run on threads of their own; its file is staged when the job is made, and a write error
+// throws std::runtime_error naming it.
+//
+// The jobs read the map's matrices through their rows only (app/matrix_rows.h), having taken its
+// labels when made: they may run while the map is moved on (systemc::SimulationHost::map_ready),
+// as long as its rows live and stay as they were.
+//
+// range_map.png: valid ranges on viridis, invalid pixels blank, one pixel a square.
+std::function<void()> range_image_job(OutputDir& out, const systemc::RangeMap& map);
+// range_error.png, where a range and its truth both exist somewhere (an empty function where
+// not): range - truth on a diverging map symmetric about 0, to the 99th percentile of
+// |range - truth|.
+std::function<void()> error_image_job(OutputDir& out, const systemc::RangeMap& map);
 
 }  // namespace rangesim::app

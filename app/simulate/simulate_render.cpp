@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/cli_common.h"
+#include "app/matrix_rows.h"
 #include "app/output_dir.h"
 #include "app/resource_estimate.h"
 #include "app/simulate/npy_writer.h"
@@ -48,6 +49,51 @@ systemc::SimulationRequest simulation_request(const SimulateOptions& opt) {
 
 namespace {
 
+// A table of `values` numbers goes out as .npy (true) or CSV.
+bool as_npy(const SimulateOptions& opt, std::size_t values) { return opt.npy || (!opt.csv && values > kNpyMinValues); }
+
+// A matrix file staged now as NAME.npy or NAME.csv (as_npy), written by the job. The .npy job reads
+// the rows only (it may run while the map moves on); the CSV job whatever `csv` reads.
+std::function<void()> matrix_job(const SimulateOptions& opt, OutputDir& out, const std::string& name, MatrixRows rows,
+                                 std::size_t columns, std::function<std::string()> csv) {
+  const bool npy = as_npy(opt, rows.size() * columns);
+  return [npy, path = out.staged(name + (npy ? ".npy" : ".csv")), rows, columns, csv = std::move(csv)] {
+    if (npy)
+      write_npy_matrix(path, rows, columns);
+    else
+      write_file(path, csv());
+  };
+}
+
+// The map's own files: range_map.{npy,csv}, confidence_map.{npy,csv} (where the sensor's validity
+// rule measures one) and range_map.png, staged now in that order; a job each, the image's first
+// (the costliest).
+std::vector<std::function<void()>> map_jobs(const SimulateOptions& opt, OutputDir& out, const systemc::RangeMap& m) {
+  const std::size_t columns = m.column_names.size();
+  std::vector<std::function<void()>> jobs;
+  jobs.push_back(matrix_job(opt, out, "range_map", m.range_m, columns, [&m] { return systemc::range_map_csv(m); }));
+  if (!m.confidence.empty())
+    jobs.push_back(
+        matrix_job(opt, out, "confidence_map", m.confidence, columns, [&m] { return systemc::confidence_map_csv(m); }));
+  if (!opt.no_plots) jobs.insert(jobs.begin(), range_image_job(out, m));
+  return jobs;
+}
+
+// The map's files written on another thread while the scene run goes on (map_ready, truth_ready).
+// `host_slot` points to it while it lives: the host adds the truth's jobs through it.
+class MapFiles : public systemc::MapWork {
+ public:
+  MapFiles(std::vector<std::function<void()>> jobs, MapFiles*& host_slot) : jobs(std::move(jobs)), slot_(host_slot) {
+    slot_ = this;
+  }
+  ~MapFiles() override { slot_ = nullptr; }  // then `jobs` waits
+  BackgroundJobs jobs;
+  bool error_image = false;  // range_error.png is among them
+
+ private:
+  MapFiles*& slot_;
+};
+
 // The command as the scene run's host: it owns the trace and the output folder the run claims
 // (the trace is declared first, so the folder is cleaned up before it, as before).
 class CommandHost : public systemc::SimulationHost {
@@ -69,6 +115,21 @@ class CommandHost : public systemc::SimulationHost {
   void check_memory(double bytes, const std::string& what, const std::string& reduce) override {
     check_resources("simulate", {kBaseMemoryBytes + bytes, 0, what, reduce}, "");
   }
+  // A map large enough for .npy (a full ls-conventional map's files and image take about 2 ms of
+  // CPU) begins going out at once, on the CPU the run leaves idle while it scores the map against
+  // its truth; a small one, or CSV, waits for write_files.
+  std::unique_ptr<systemc::MapWork> map_ready(const systemc::RangeMap& m) override {
+    if (!out_ || simulation_request(opt_).threads < 2 || !as_npy(opt_, m.range_m.size() * m.column_names.size()))
+      return nullptr;
+    return std::make_unique<MapFiles>(map_jobs(opt_, *out_, m), map_files_);
+  }
+  void truth_ready(const systemc::RangeMap& m) override {
+    if (!map_files_ || opt_.no_plots) return;
+    if (auto job = error_image_job(*out_, m)) {
+      map_files_->jobs.add(std::move(job));
+      map_files_->error_image = true;
+    }
+  }
 
   OutputDir& out() {
     if (!out_) throw std::logic_error("simulate: the scene run returned without claiming the output folder");
@@ -84,6 +145,7 @@ class CommandHost : public systemc::SimulationHost {
   Progress::Clock::time_point start_;  // start of the run (progress lines count from here)
   std::optional<TraceOutput> trace_;   // --trace, once the run has checked its flags
   std::optional<OutputDir> out_;       // --out, once the scene is known
+  MapFiles* map_files_ = nullptr;      // what map_ready began, while it lives
 };
 
 // CPU time of this process and of its waited-for children (gnuplot), s.
@@ -98,37 +160,25 @@ double cpu_with_children_s() {
   return s;
 }
 
-// A table of `values` numbers goes out as .npy (true) or CSV.
-bool as_npy(const SimulateOptions& opt, std::size_t values) { return opt.npy || (!opt.csv && values > kNpyMinValues); }
-
-// A matrix file staged now as NAME.npy or NAME.csv (as_npy), written by the job.
-std::function<void()> matrix_job(const SimulateOptions& opt, OutputDir& out, const std::string& name,
-                                 const std::vector<std::vector<double>>& rows, std::size_t columns,
-                                 std::function<std::string()> csv) {
-  const bool npy = as_npy(opt, rows.size() * columns);
-  return [npy, path = out.staged(name + (npy ? ".npy" : ".csv")), &rows, columns, csv = std::move(csv)] {
-    if (npy)
-      write_npy_matrix(path, rows, columns);
-    else
-      write_file(path, csv());
-  };
-}
+// What the scene run had handed on to be written already (map_ready), or null.
+MapFiles* map_files(const systemc::SimulationResult& r) { return dynamic_cast<MapFiles*>(r.map_work.get()); }
 
 // range_map.{csv,npy}, confidence_map.{csv,npy} (where the sensor's validity rule measures one),
-// points.{csv,npy} (with --points, where the sensor has points), frames.csv, range_map.png,
-// range_error.png and summary.json: staged in that order (the order the run lists them), each
-// written by a job. With more than one thread (--threads) the jobs run side by side, the costliest
-// first: the points (9.6 MB for a full ls-conventional map), the images (drawing and deflate,
-// about 1 ms each), then the maps (1.1 MB each). summary.json is complete but for the output's own
-// times, which include its writing.
+// range_map.png and range_error.png, unless the run began them (map_ready, truth_ready);
+// points.{csv,npy} (with --points, where the sensor has points), frames.csv and summary.json: staged
+// in that order (the order the run lists them), each written by a job. With more than one thread
+// (--threads) the jobs run side by side, the costliest first: the points (9.6 MB for a full
+// ls-conventional map), the images (drawing and deflate, about 1 ms each), then the maps (1.1 MB
+// each); where the run began the map's files, on its helper and the caller. summary.json is
+// complete but for the output's own times, which include its writing. Returns when every job has
+// ended, rethrowing the first failure.
 void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r, int threads) {
   const systemc::RangeMap& m = r.range_map;
-  const std::size_t columns = m.column_names.size();
-  std::vector<std::function<void()>> jobs, files;  // the costliest first; the others
-  files.push_back(matrix_job(opt, out, "range_map", m.range_m, columns, [&m] { return systemc::range_map_csv(m); }));
-  if (!m.confidence.empty())
-    files.push_back(
-        matrix_job(opt, out, "confidence_map", m.confidence, columns, [&m] { return systemc::confidence_map_csv(m); }));
+  const MapFiles* begun = map_files(r);
+  std::vector<std::function<void()>> maps = begun ? std::vector<std::function<void()>>{} : map_jobs(opt, out, m);
+  std::function<void()> error;
+  if (!opt.no_plots && !(begun && begun->error_image)) error = error_image_job(out, m);
+  std::vector<std::function<void()>> jobs;  // the costliest first
   if (opt.points && !r.points.empty()) {
     const bool npy = as_npy(opt, r.points.values());
     jobs.emplace_back([npy, path = out.staged(npy ? "points.npy" : "points.csv"), &r] {
@@ -138,12 +188,16 @@ void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::Simu
         write_file(path, systemc::table_csv(r.points));
     });
   }
-  files.emplace_back([path = out.staged("frames.csv"), &r] { write_file(path, r.frames_csv); });
-  if (!opt.no_plots)
-    for (auto& image : range_map_image_jobs(out, m)) jobs.push_back(std::move(image));
-  files.emplace_back([path = out.staged("summary.json"), &r] { write_file(path, r.summary.dump(2) + "\n"); });
-  for (auto& file : files) jobs.push_back(std::move(file));
-  run_jobs(jobs, threads);
+  if (error) jobs.push_back(std::move(error));
+  for (auto& map : maps) jobs.push_back(std::move(map));
+  jobs.emplace_back([path = out.staged("frames.csv"), &r] { write_file(path, r.frames_csv); });
+  jobs.emplace_back([path = out.staged("summary.json"), &r] { write_file(path, r.summary.dump(2) + "\n"); });
+  if (MapFiles* files_begun = map_files(r)) {  // its helper takes them too: no thread to start
+    for (auto& job : jobs) files_begun->jobs.add(std::move(job));
+    files_begun->jobs.wait();
+  } else {
+    run_jobs(jobs, threads);
+  }
 }
 
 // The files (write_files), the trace, then the commit; returns the paths written.
@@ -177,11 +231,15 @@ int run_and_render(const SimulateOptions& opt, const ParamSet& params, const Sim
   systemc::SimulationResult r = entry.run(simulation_request(opt), params, host);
   const auto t0 = Progress::Clock::now();
   const double c0 = cpu_with_children_s();
+  // The CPU the map's files took while the run went on (map_ready), counted with the output's.
+  const double before = map_files(r) ? map_files(r)->jobs.cpu_s() : 0.0;
   const std::vector<std::string> written = write_and_commit(opt, host.out(), host.trace(), r);
   // What writing the files, drawing the images and committing the folder cost (every thread's
   // CPU), for `bench`'s output_share: in --json only, as summary.json is written before they end.
+  // The wall time counts from the run's end: what the map's files took before it ran beside the run.
   r.summary["output_wall_time_s"] = std::chrono::duration<double>(Progress::Clock::now() - t0).count();
-  r.summary["output_cpu_s"] = cpu_with_children_s() - c0;
+  r.summary["output_cpu_s"] = cpu_with_children_s() - c0 + before;
+  r.summary["output_cpu_during_run_s"] = before;
   return report(opt, r, written);
 }
 

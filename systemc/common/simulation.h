@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +47,15 @@ void check_trace_pixels(const std::vector<TracePixel>& pixels, int first_row, in
 // What the run asks of the command around it, at the points where the sensor's checks allow:
 // the trace and the output folder are claimed before the model runs, so a bad --trace or --out
 // fails before the work and in the same order as the sensor's own checks.
+struct RangeMap;
+
+// Work the host began on a finished range map while the run went on (SimulationHost::map_ready):
+// it ends, waiting for that work, when this object goes.
+class MapWork {
+ public:
+  virtual ~MapWork() = default;
+};
+
 class SimulationHost {
  public:
   virtual ~SimulationHost() = default;
@@ -58,6 +68,14 @@ class SimulationHost {
   // The run's estimate of its peak memory, made before the model runs: a run that cannot fit is
   // refused here (UserError naming `what` and the flags in `reduce`) instead of being ended late.
   virtual void check_memory(double bytes, const std::string& what, const std::string& reduce) = 0;
+  // The map's range_m, confidence, column_names, labels and title are final while the run goes on
+  // (its truth, the counts): the host may begin writing them on another thread. It reads them
+  // through their rows' storage, which stays in place when the map is moved; the run keeps the
+  // returned object (null: nothing begun) until it hands the map back, declared after the map so
+  // that it ends first (SimulationResult::map_work).
+  virtual std::unique_ptr<MapWork> map_ready(const RangeMap& /*map*/) { return nullptr; }
+  // Then its truth_m too (after map_ready, while that object lives): the same for what needs it.
+  virtual void truth_ready(const RangeMap& /*map*/) {}
 };
 
 // Range error of detected points against the ground truth (m; px where the sensor has one).
@@ -159,6 +177,7 @@ struct SimulationResult {
   std::string frames_csv;   // frames.csv
   nlohmann::json summary;   // summary.json (the renderer adds warnings and the trace)
   SimulationReport report;  // the terminal summary
+  std::unique_ptr<MapWork> map_work;  // what the host began on range_map (declared after it)
 };
 
 // Number for CSV (printf "%.9g", "" for NaN/inf) and for JSON (null for NaN/inf).

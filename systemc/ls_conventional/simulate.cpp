@@ -83,11 +83,13 @@ SensorRunResult run_model(const SimulationRequest& req, const LsConventionalConf
 // The range map, points.csv and frames.csv, and the counts against the ground truth.
 struct Reconstruction {
   RangeMap map;
+  std::vector<std::uint8_t> valid;  // per frame access and row (frame by frame): its centre is valid
   Table points;
   std::string frames_csv;
   long long visible = 0, detected = 0, missed = 0, false_detections = 0;
   RangeErrorStats err;
   bool timing_matches = true;
+  std::unique_ptr<MapWork> map_work;  // after `map`: ends (waits) before the map's storage goes
 };
 
 // One row of one frame access: its truth, its centre and what follows: the range counts when enough
@@ -110,35 +112,45 @@ RowErrors row_errors(bool visible, bool valid, double centre_px, double truth_ce
   return {centre_px - truth_centre_px, range_m - truth_range_m};
 }
 
+// A map cell of one row of one frame access: the share of the samplings that found the spot, and
+// its range where enough of them found it and its centre lies inside the edge margin (cfg.validity).
+struct Cell {
+  double fraction = 0, range = NAN;
+  bool valid = false;
+};
+Cell cell_of(const scene::SceneOptics& optics, const CentreProcessorPins& p, int b, const LsConventionalConfig& cfg) {
+  Cell c;
+  c.fraction = detecting_fraction(p, cfg.multisampling.samplings);
+  c.valid = centre_valid(p.count, cfg.multisampling.samplings, p.centre_px(), cfg.pixel.columns,
+                         cfg.validity.min_detecting_fraction, cfg.validity.edge_margin_px);
+  if (c.valid) c.range = optics.range_from_centre_m(b, p.centre_px());
+  return c;
+}
+
+// A cell with its truth and its errors against it.
 struct Point {
   scene::RowTruth t;
   CentreProcessorPins p;
-  double fraction = 0, range = NAN, err_px = NAN, err_m = NAN;
+  double range = NAN, err_px = NAN, err_m = NAN;
   bool valid = false;
   bool listed() const { return systemc::listed(t.visible, p.valid); }
 };
 
-Point point_of(const scene::SceneOptics& optics, const FrameResult& fr, int b, int r, const LsConventionalConfig& cfg) {
+Point point_of(const scene::RowTruth& t, const CentreProcessorPins& p, bool valid, double range) {
   Point x;
-  x.t = optics.truth(b, r);
-  x.p = fr.rows[static_cast<std::size_t>(r)];
-  x.fraction = detecting_fraction(x.p, cfg.multisampling.samplings);
-  x.valid = centre_valid(x.p.count, cfg.multisampling.samplings, x.p.centre_px(), cfg.pixel.columns,
-                         cfg.validity.min_detecting_fraction, cfg.validity.edge_margin_px);
-  if (x.valid) x.range = optics.range_from_centre_m(b, x.p.centre_px());
+  x.t = t;
+  x.p = p;
+  x.valid = valid;
+  x.range = range;
   const RowErrors e = row_errors(x.t.visible, x.valid, x.p.centre_px(), x.t.centre_px, x.range, x.t.range_m);
   x.err_px = e.px, x.err_m = e.m;
   return x;
 }
 
-// The map's cells and the counts of one point.
-void add_point(Reconstruction& out, const Point& x, int r, std::size_t f) {
-  const std::size_t row = static_cast<std::size_t>(r);
-  out.map.confidence[row][f] = x.fraction;
-  if (x.valid) out.map.range_m[row][f] = x.range;
+// The counts of one point.
+void add_point(Reconstruction& out, const Point& x) {
   if (x.t.visible) {
     ++out.visible;
-    out.map.truth_m[row][f] = x.t.range_m;
     if (x.valid) {
       ++out.detected;
       out.err.add(x.err_m, x.err_px);
@@ -200,49 +212,99 @@ void produce_points(const SensorRunResult& res, const PointCells& cells, const s
   if (!block.empty()) sink(block.data(), block.size() / kColumns);
 }
 
-// With `with_points` false the points table has its columns and no rows (nothing kept for it).
-Reconstruction reconstruct(const std::shared_ptr<const SensorRunResult>& run,
-                           const std::shared_ptr<const scene::SceneOptics>& optics_ptr, const LsConventionalConfig& cfg,
-                           const golden::FrameTiming& gt, bool with_points) {
-  const SensorRunResult& res = *run;
-  const scene::SceneOptics& optics = *optics_ptr;
+// The map's cells (range_m, confidence) and what labels it; truth_m all NaN until map_truth() fills it.
+Reconstruction map_cells(const SensorRunResult& res, const scene::SceneOptics& optics,
+                         const LsConventionalConfig& cfg) {
   Reconstruction out;
-  const int rows = cfg.pixel.rows, samplings = cfg.multisampling.samplings;
+  const int rows = cfg.pixel.rows;
   out.map.range_m.assign(static_cast<std::size_t>(rows), std::vector<double>(res.frames.size(), NAN));
   out.map.truth_m = out.map.range_m;
   out.map.confidence = out.map.range_m;
+  out.valid.assign(res.frames.size() * static_cast<std::size_t>(rows), 0);
   out.map.confidence_label = "fraction of the samplings that found the spot";
   out.map.validity_rule = fmt::format(
       "valid where a row's centre was found by >= validity.min_detecting_fraction = {:g} of its {} samplings (at "
       "least one) and lies >= validity.edge_margin_px = {:g} px inside the first and last column",
-      cfg.validity.min_detecting_fraction, samplings, cfg.validity.edge_margin_px);
+      cfg.validity.min_detecting_fraction, cfg.multisampling.samplings, cfg.validity.edge_margin_px);
+  for (std::size_t f = 0, i = 0; f < res.frames.size(); ++f) {
+    const FrameResult& fr = res.frames[f];
+    const int b = optics.beam_position(fr.frame);
+    out.map.column_names.push_back(fmt::format("b{}", b));
+    for (std::size_t r = 0; r < static_cast<std::size_t>(rows); ++r, ++i) {
+      const Cell c = cell_of(optics, fr.rows[r], b, cfg);
+      out.map.confidence[r][f] = c.fraction;
+      out.map.range_m[r][f] = c.range;
+      out.valid[i] = c.valid;
+    }
+  }
+  return out;
+}
+
+// Each cell's truth, frame by frame, as the counts and the points table read it.
+struct CellTruths {
+  std::vector<double> centre_px, range_m;  // NaN where the beam misses the target
+  std::vector<std::uint8_t> visible;
+  scene::RowTruth operator[](std::size_t i) const {
+    scene::RowTruth t;
+    t.hit = !std::isnan(range_m[i]);
+    t.visible = visible[i] != 0;
+    t.centre_px = centre_px[i], t.range_m = range_m[i];
+    return t;
+  }
+};
+
+// The map's truth_m (the range where the stripe is visible) and every cell's truth.
+CellTruths map_truth(Reconstruction& out, const SensorRunResult& res, const scene::SceneOptics& optics, int rows) {
+  const std::size_t n = res.frames.size() * static_cast<std::size_t>(rows);
+  CellTruths truths{std::vector<double>(n), std::vector<double>(n), std::vector<std::uint8_t>(n)};
+  for (std::size_t f = 0, i = 0; f < res.frames.size(); ++f) {
+    const int b = optics.beam_position(res.frames[f].frame);
+    for (int r = 0; r < rows; ++r, ++i) {
+      const scene::RowTruth t = optics.truth(b, r);
+      truths.centre_px[i] = t.hit ? t.centre_px : NAN;
+      truths.range_m[i] = t.hit ? t.range_m : NAN;
+      truths.visible[i] = t.visible;
+      if (t.visible) out.map.truth_m[static_cast<std::size_t>(r)][f] = t.range_m;
+    }
+  }
+  return truths;
+}
+
+// The counts and errors against the truth, frames.csv and the points table (with `with_points`
+// false it has its columns and no rows: nothing kept for it). Frame by frame, the order the
+// counts were always summed in.
+void score(Reconstruction& out, const CellTruths& truths, const std::shared_ptr<const SensorRunResult>& run,
+           const std::shared_ptr<const scene::SceneOptics>& optics_ptr, const LsConventionalConfig& cfg,
+           const golden::FrameTiming& gt, bool with_points) {
+  const SensorRunResult& res = *run;
+  const scene::SceneOptics& optics = *optics_ptr;
+  const int rows = cfg.pixel.rows;
   out.frames_csv = "frame,beam_position,cycles,end_cycle,reset,latch,search,address_stream,output,rows_detected\n";
   std::size_t listed = 0;
   auto cells = std::make_shared<PointCells>(with_points ? res.frames.size() * static_cast<std::size_t>(rows) : 0);
-  for (std::size_t f = 0; f < res.frames.size(); ++f) {
+  for (std::size_t f = 0, i = 0; f < res.frames.size(); ++f) {
     const FrameResult& fr = res.frames[f];
     const int b = optics.beam_position(fr.frame);
     out.frames_csv += fmt::format("{},{},{},{}", fr.frame, b, fr.cycles, fr.end_cycle);
-    for (std::size_t i = 0; i < fr.phase_cycles.size(); ++i) {
-      out.frames_csv += fmt::format(",{}", fr.phase_cycles[i]);
-      out.timing_matches = out.timing_matches && fr.phase_cycles[i] == gt.phases[i].cycles;
+    for (std::size_t k = 0; k < fr.phase_cycles.size(); ++k) {
+      out.frames_csv += fmt::format(",{}", fr.phase_cycles[k]);
+      out.timing_matches = out.timing_matches && fr.phase_cycles[k] == gt.phases[k].cycles;
     }
     out.frames_csv += fmt::format(",{}\n", fr.rows_detected());
-    for (int r = 0; r < rows; ++r) {
-      const Point x = point_of(optics, fr, b, r, cfg);
-      add_point(out, x, r, f);
-      if (with_points) cells->keep(f * static_cast<std::size_t>(rows) + static_cast<std::size_t>(r), x);
+    for (int r = 0; r < rows; ++r, ++i) {
+      const auto row = static_cast<std::size_t>(r);
+      const Point x = point_of(truths[i], fr.rows[row], out.valid[i] != 0, out.map.range_m[row][f]);
+      add_point(out, x);
+      if (with_points) cells->keep(i, x);
       listed += x.listed() ? 1 : 0;
     }
   }
-  for (const auto& fr : res.frames) out.map.column_names.push_back(fmt::format("b{}", optics.beam_position(fr.frame)));
   out.points = points_table();
-  if (!with_points) return out;
+  if (!with_points) return;
   out.points.produced_rows = listed;
   out.points.produce = [run, cells, optics_ptr, cfg](const Table::BlockSink& sink) {
     produce_points(*run, *cells, *optics_ptr, cfg, sink);
   };
-  return out;
 }
 
 // Everything the summary and the report are made of.
@@ -342,7 +404,14 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
 
   const golden::FrameTiming gt = golden::frame_timing(c.cfg.timing, c.cfg.multisampling.samplings);
   SimulationResult out;
-  Reconstruction rec = reconstruct(res_ptr, optics_ptr, c.cfg, gt, req.points);
+  Reconstruction rec = map_cells(res, optics, c.cfg);
+  rec.map.title = fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size());
+  rec.map.x_label = "beam position (frame access)";
+  // The map's files go out while its truth and the counts are worked out.
+  rec.map_work = host.map_ready(rec.map);
+  const CellTruths truths = map_truth(rec, res, optics, c.cfg.pixel.rows);
+  host.truth_ready(rec.map);
+  score(rec, truths, res_ptr, optics_ptr, c.cfg, gt, req.points);
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
   out.report = report(run);
   out.summary = summary(run, out.report);
@@ -350,8 +419,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   out.points = std::move(rec.points);
   out.frames_csv = std::move(rec.frames_csv);
   out.range_map = std::move(rec.map);
-  out.range_map.title = fmt::format("{} — {} ({} frame accesses)", sc.name, params.sensor_id(), res.frames.size());
-  out.range_map.x_label = "beam position (frame access)";
+  out.map_work = std::move(rec.map_work);
   return out;
 }
 

@@ -13,7 +13,7 @@ from rangesim_test_util import SCENES, cli_json, g6, g9, grid, read_csv, run_cli
 
 # Summary keys that time the run itself (wall clock), different in every run of anything.
 WALL_CLOCK_KEYS = {"wall_time_s", "simulation_wall_time_s", "simulated_cycles_per_s", "photons_per_s",
-                   "output_wall_time_s", "output_cpu_s"}
+                   "output_wall_time_s", "output_cpu_s", "output_cpu_during_run_s"}
 
 
 class CommandCase(unittest.TestCase):

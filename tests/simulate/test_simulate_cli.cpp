@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "run_command.h"
 
@@ -156,6 +157,44 @@ TEST(SimulateCommand, TickingEqualsEventSkippingEndToEnd) {
   EXPECT_EQ(slurp(dir + "/a/points.csv"), slurp(dir + "/b/points.csv"));
   EXPECT_EQ(slurp(dir + "/a/frames.csv"), slurp(dir + "/b/frames.csv"));
   EXPECT_EQ(slurp(dir + "/a/points.csv"), slurp(dir + "/d/points.csv"));
+  fs::remove_all(dir);
+}
+
+TEST(SimulateCommand, MapFilesBegunDuringTheRunEqualThoseWrittenAfterIt) {
+  // On two threads a map that goes out as .npy has its files and images begun while the run scores
+  // it against its truth (SimulationHost::map_ready, truth_ready); on one thread all are written
+  // after the run. The same bytes either way, listed in the same order.
+  const std::string dir = make_temp_dir();
+  const std::string base = "--scene " + kScenes + "/tilted.toml --frames 60 --seed 3 --kernel-only --npy --points";
+  const CommandResult two = simulate(base + " --threads 2 --out " + dir + "/two");
+  const CommandResult one = simulate(base + " --threads 1 --out " + dir + "/one");
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const auto listed = [](const std::string& out, const std::string& folder) {
+    std::vector<std::string> files;
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);)
+      if (const auto at = line.find("wrote " + folder + "/"); at != std::string::npos)
+        files.push_back(line.substr(at + 7 + folder.size()));
+    return files;
+  };
+  const std::vector<std::string> files = listed(two.out, dir + "/two");
+  EXPECT_EQ(files, listed(one.out, dir + "/one"));
+  EXPECT_EQ(files, (std::vector<std::string>{"range_map.npy", "confidence_map.npy", "range_map.png", "range_error.png",
+                                             "points.npy", "frames.csv", "summary.json"}));
+  for (const std::string& f : files) {
+    if (f == "summary.json") continue;  // its run times differ
+    EXPECT_EQ(slurp(dir + "/two/" + f), slurp(dir + "/one/" + f)) << f;
+  }
+  // What the map's files took during the run is counted with the output's CPU, and only where it ran.
+  const CommandResult two_json = simulate(base + " --threads 2 --json --force --out " + dir + "/two");
+  const CommandResult one_json = simulate(base + " --threads 1 --json --force --out " + dir + "/one");
+  ASSERT_EQ(two_json.exit_code, 0) << two_json.err;
+  ASSERT_EQ(one_json.exit_code, 0) << one_json.err;
+  const auto j2 = nlohmann::json::parse(two_json.out), j1 = nlohmann::json::parse(one_json.out);
+  EXPECT_GT(j2["output_cpu_during_run_s"].get<double>(), 0);
+  EXPECT_GE(j2["output_cpu_s"].get<double>(), j2["output_cpu_during_run_s"].get<double>());
+  EXPECT_EQ(j1["output_cpu_during_run_s"].get<double>(), 0);
   fs::remove_all(dir);
 }
 
