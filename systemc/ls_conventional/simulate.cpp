@@ -240,30 +240,34 @@ Reconstruction map_cells(const SensorRunResult& res, const scene::SceneOptics& o
   return out;
 }
 
-// Each cell's truth, frame by frame, as the counts and the points table read it.
+// Each cell's truth, frame by frame, beside the map's truth_m (its range where the stripe is
+// visible), as the counts and the points table read it.
 struct CellTruths {
-  std::vector<double> centre_px, range_m;  // NaN where the beam misses the target
+  std::vector<double> centre_px;     // NaN where the beam misses the target
   std::vector<std::uint8_t> visible;
-  scene::RowTruth operator[](std::size_t i) const {
+  std::vector<double> hit_range_m;   // with the points table only: the range wherever the beam meets the target
+  scene::RowTruth at(std::size_t i, const RangeMap& map, std::size_t r, std::size_t f) const {
     scene::RowTruth t;
-    t.hit = !std::isnan(range_m[i]);
+    t.centre_px = centre_px[i];
+    t.hit = !std::isnan(t.centre_px);
     t.visible = visible[i] != 0;
-    t.centre_px = centre_px[i], t.range_m = range_m[i];
+    t.range_m = t.visible ? map.truth_m[r][f] : hit_range_m.empty() ? NAN : hit_range_m[i];
     return t;
   }
 };
 
-// The map's truth_m (the range where the stripe is visible) and every cell's truth.
-CellTruths map_truth(Reconstruction& out, const SensorRunResult& res, const scene::SceneOptics& optics, int rows) {
+// The map's truth_m and every cell's truth (CellTruths; the hit range with `with_points` only).
+CellTruths map_truth(Reconstruction& out, const SensorRunResult& res, const scene::SceneOptics& optics, int rows,
+                     bool with_points) {
   const std::size_t n = res.frames.size() * static_cast<std::size_t>(rows);
-  CellTruths truths{std::vector<double>(n), std::vector<double>(n), std::vector<std::uint8_t>(n)};
+  CellTruths truths{std::vector<double>(n), std::vector<std::uint8_t>(n), std::vector<double>(with_points ? n : 0)};
   for (std::size_t f = 0, i = 0; f < res.frames.size(); ++f) {
     const int b = optics.beam_position(res.frames[f].frame);
     for (int r = 0; r < rows; ++r, ++i) {
       const scene::RowTruth t = optics.truth(b, r);
       truths.centre_px[i] = t.hit ? t.centre_px : NAN;
-      truths.range_m[i] = t.hit ? t.range_m : NAN;
       truths.visible[i] = t.visible;
+      if (with_points) truths.hit_range_m[i] = t.hit ? t.range_m : NAN;
       if (t.visible) out.map.truth_m[static_cast<std::size_t>(r)][f] = t.range_m;
     }
   }
@@ -293,7 +297,7 @@ void score(Reconstruction& out, const CellTruths& truths, const std::shared_ptr<
     out.frames_csv += fmt::format(",{}\n", fr.rows_detected());
     for (int r = 0; r < rows; ++r, ++i) {
       const auto row = static_cast<std::size_t>(r);
-      const Point x = point_of(truths[i], fr.rows[row], out.valid[i] != 0, out.map.range_m[row][f]);
+      const Point x = point_of(truths.at(i, out.map, row, f), fr.rows[row], out.valid[i] != 0, out.map.range_m[row][f]);
       add_point(out, x);
       if (with_points) cells->keep(i, x);
       listed += x.listed() ? 1 : 0;
@@ -409,7 +413,7 @@ SimulationResult simulate_ls_conventional(const SimulationRequest& req, const Pa
   rec.map.x_label = "beam position (frame access)";
   // The map's files go out while its truth and the counts are worked out.
   rec.map_work = host.map_ready(rec.map);
-  const CellTruths truths = map_truth(rec, res, optics, c.cfg.pixel.rows);
+  const CellTruths truths = map_truth(rec, res, optics, c.cfg.pixel.rows, req.points);
   host.truth_ready(rec.map);
   score(rec, truths, res_ptr, optics_ptr, c.cfg, gt, req.points);
   const Run run{req, params, c.cfg, sc, res, gt, rec, std::chrono::duration<double>(Clock::now() - t_start).count()};
