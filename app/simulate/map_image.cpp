@@ -335,26 +335,62 @@ struct MapImageWriter::Buffers {
   std::string png;
 };
 
+namespace {
+
+// Where everything goes in the image of a rows x cols map: one cell an s x s square, the map
+// W x H px at (left, top), the colour bar at bar_x, the whole width x height.
+struct Layout {
+  int s = 1, W = 1, H = 1, decimals = 0, left = 0, bar_x = 0, width = 1, top = 0, bottom = 0;
+  std::size_t clabel = 1;          // the longest colour-bar value, characters
+  std::vector<double> cticks, yt;  // colour-bar and row ticks
+  std::vector<std::string> title;  // its lines
+  int height() const { return top + H + bottom; }
+};
+
+Layout layout(int rows, int cols, const MapImageSpec& spec) {
+  Layout L;
+  L.s = std::clamp(400 / std::max({cols, rows, 1}), 1, 8);
+  L.W = std::max(cols, 1) * L.s, L.H = std::max(rows, 1) * L.s;
+  const double span = std::max(spec.hi - spec.lo, 1e-300);
+  L.decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(span / 5))), 0, 9);
+  L.cticks = ticks(spec.lo, spec.hi, 5);
+  for (double v : L.cticks) L.clabel = std::max(L.clabel, fmt::format("{:.{}f}", v, L.decimals).size());
+  L.yt = ticks(spec.first_row, spec.first_row + std::max(rows - 1, 0), 8);
+  L.left = 12 + kLine + 10 + static_cast<int>(std::to_string(spec.first_row + rows).size() + 1) * kAdvance;
+  L.bar_x = L.left + L.W + 20;
+  const int right = 20 + 20 + 8 + static_cast<int>(L.clabel) * kAdvance + 10 + kLine + 12;
+  L.width = L.left + L.W + right;
+  L.title = wrap(ascii(spec.title), static_cast<std::size_t>((L.width - 24) / kAdvance));
+  L.top = 12 + static_cast<int>(L.title.size()) * (kLine + 4) + 8, L.bottom = 8 + kLine + 10 + kLine + 10;
+  return L;
+}
+
+}  // namespace
+
 MapImageWriter::MapImageWriter() : b_(std::make_unique<Buffers>()) {}
 MapImageWriter::~MapImageWriter() = default;
 
+void MapImageWriter::reserve(int rows, int cols, const MapImageSpec& spec) {
+  const Layout L = layout(rows, cols, spec);
+  // Colour-bar values up to 12 characters longer than those of spec's range, and three title lines.
+  const std::size_t width = static_cast<std::size_t>(L.width + 12 * kAdvance) + 1;
+  const std::size_t pixels = width * static_cast<std::size_t>(L.height() + 3 * (kLine + 4));
+  b_->image.scanlines.reserve(pixels);
+  b_->values.reserve(static_cast<std::size_t>(std::max(cols, 1)));
+  b_->png.reserve(pixels + pixels / 8 + 4096);  // encode_png's worst case: 9 bits a byte, the chunks
+}
+
 void MapImageWriter::write(const std::string& path, int rows, int cols,
                            const std::function<void(int, double*)>& row_values, const MapImageSpec& spec) {
-  const int s = std::clamp(400 / std::max({cols, rows, 1}), 1, 8);
-  const int W = std::max(cols, 1) * s, H = std::max(rows, 1) * s;
+  const Layout L = layout(rows, cols, spec);
+  const int s = L.s, W = L.W, H = L.H, decimals = L.decimals, left = L.left, bar_x = L.bar_x, top = L.top;
   const double span = std::max(spec.hi - spec.lo, 1e-300);
-  const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(span / 5))), 0, 9);
-  const std::vector<double> cticks = ticks(spec.lo, spec.hi, 5);
-  std::size_t clabel = 1;
-  for (double v : cticks) clabel = std::max(clabel, fmt::format("{:.{}f}", v, decimals).size());
-  const std::vector<double> yt = ticks(spec.first_row, spec.first_row + std::max(rows - 1, 0), 8);
-  const int left = 12 + kLine + 10 + static_cast<int>(std::to_string(spec.first_row + rows).size() + 1) * kAdvance;
-  const int bar_x = left + W + 20, right = 20 + 20 + 8 + static_cast<int>(clabel) * kAdvance + 10 + kLine + 12;
-  const int width = left + W + right;
-  const std::vector<std::string> title = wrap(ascii(spec.title), static_cast<std::size_t>((width - 24) / kAdvance));
-  const int top = 12 + static_cast<int>(title.size()) * (kLine + 4) + 8, bottom = 8 + kLine + 10 + kLine + 10;
+  const std::size_t clabel = L.clabel;
+  const std::vector<double>& cticks = L.cticks;
+  const std::vector<double>& yt = L.yt;
+  const std::vector<std::string>& title = L.title;
   IndexedImage& im = b_->image;
-  im.reset(width, top + H + bottom);
+  im.reset(L.width, L.height());
   im.palette[kWhite] = {255, 255, 255};
   im.palette[kBlack] = {0, 0, 0};
   if (spec.palette == MapPalette::Viridis)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "app/matrix_rows.h"
@@ -33,14 +34,14 @@ bool has_error(const systemc::RangeMap& m) {
 int columns_of(MatrixRows m) { return m.empty() ? 0 : static_cast<int>(m[0].size()); }
 
 // The map's valid ranges on viridis from their smallest to their largest.
-void draw_range(const std::string& path, MatrixRows range, MapImageSpec spec) {
+void draw_range(MapImageWriter& writer, const std::string& path, MatrixRows range, MapImageSpec spec) {
   const auto [lo, hi] = finite_range(range);
   if (std::isfinite(lo)) {
     // A flat map still gets a colour range: +-1e-9 of its value.
     const double pad = hi > lo ? 0.0 : 1e-9 * std::max(1.0, std::fabs(hi));
     spec.lo = lo - pad, spec.hi = hi + pad;
   }
-  MapImageWriter().write(
+  writer.write(
       path, static_cast<int>(range.size()), columns_of(range),
       [range](int r, double* v) {
         const std::vector<double>& row = range[static_cast<std::size_t>(r)];
@@ -51,11 +52,12 @@ void draw_range(const std::string& path, MatrixRows range, MapImageSpec spec) {
 
 // The error where both the range and the truth exist, symmetric about 0 to the 99th percentile of
 // |error|: a few edge pixels must not wash the rest out; beyond it the end colours show.
-void draw_error(const std::string& path, MatrixRows range, MatrixRows truth, MapImageSpec spec) {
+void draw_error(MapImageWriter& writer, const std::string& path, MatrixRows range, MatrixRows truth,
+                MapImageSpec spec) {
   const double span = std::max(abs_difference_quantile(range, truth, 0.99), 1e-9);
   spec.lo = -span, spec.hi = span;
   spec.palette = MapPalette::Diverging;
-  MapImageWriter().write(
+  writer.write(
       path, static_cast<int>(range.size()), columns_of(range),
       [range, truth](int r, double* v) {
         const auto i = static_cast<std::size_t>(r);
@@ -67,19 +69,27 @@ void draw_error(const std::string& path, MatrixRows range, MatrixRows truth, Map
       spec);
 }
 
+// A writer whose memory is taken on the calling thread (MapImageWriter::reserve).
+std::shared_ptr<MapImageWriter> writer_for(const systemc::RangeMap& m, const MapImageSpec& spec) {
+  auto writer = std::make_shared<MapImageWriter>();
+  writer->reserve(static_cast<int>(m.range_m.size()), columns_of(m.range_m), spec);
+  return writer;
+}
+
 }  // namespace
 
 std::function<void()> range_image_job(OutputDir& out, const systemc::RangeMap& m) {
-  return [path = out.staged("range_map.png"), range = MatrixRows(m.range_m),
-          spec = labelled(m, "valid ranges (blank: invalid)", "range [m]")] { draw_range(path, range, spec); };
+  const MapImageSpec spec = labelled(m, "valid ranges (blank: invalid)", "range [m]");
+  return [path = out.staged("range_map.png"), range = MatrixRows(m.range_m), spec, writer = writer_for(m, spec)] {
+    draw_range(*writer, path, range, spec);
+  };
 }
 
 std::function<void()> error_image_job(OutputDir& out, const systemc::RangeMap& m) {
   if (!has_error(m)) return {};
-  return [path = out.staged("range_error.png"), range = MatrixRows(m.range_m), truth = MatrixRows(m.truth_m),
-          spec = labelled(m, "range error (colours clipped at the 99th percentile)", "range - truth [m]")] {
-    draw_error(path, range, truth, spec);
-  };
+  const MapImageSpec spec = labelled(m, "range error (colours clipped at the 99th percentile)", "range - truth [m]");
+  return [path = out.staged("range_error.png"), range = MatrixRows(m.range_m), truth = MatrixRows(m.truth_m), spec,
+          writer = writer_for(m, spec)] { draw_error(*writer, path, range, truth, spec); };
 }
 
 }  // namespace rangesim::app
