@@ -29,6 +29,15 @@
 
 namespace rangesim::app {
 
+namespace {
+
+// --threads, or every core.
+int run_threads(const SimulateOptions& opt) {
+  return opt.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+}
+
+}  // namespace
+
 systemc::SimulationRequest simulation_request(const SimulateOptions& opt) {
   systemc::SimulationRequest r;
   r.scene = opt.scene;
@@ -40,7 +49,7 @@ systemc::SimulationRequest simulation_request(const SimulateOptions& opt) {
   r.dense = opt.dense;
   r.no_aggregate = opt.no_aggregate;
   r.time_step_s = opt.time_step_s;
-  r.threads = opt.threads.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+  r.threads = run_threads(opt);
   r.trace_rows = opt.trace_rows;
   r.trace_pixels = opt.trace_pixels;
   r.points = opt.points;
@@ -119,8 +128,7 @@ class CommandHost : public systemc::SimulationHost {
   // CPU) begins going out at once, on the CPU the run leaves idle while it scores the map against
   // its truth; a small one, or CSV, waits for write_files.
   std::unique_ptr<systemc::MapWork> map_ready(const systemc::RangeMap& m) override {
-    if (!out_ || simulation_request(opt_).threads < 2 || !as_npy(opt_, m.range_m.size() * m.column_names.size()))
-      return nullptr;
+    if (!out_ || run_threads(opt_) < 2 || !as_npy(opt_, m.range_m.size() * m.column_names.size())) return nullptr;
     return std::make_unique<MapFiles>(map_jobs(opt_, *out_, m), map_files_);
   }
   void truth_ready(const systemc::RangeMap& m) override {
@@ -174,7 +182,7 @@ MapFiles* map_files(const systemc::SimulationResult& r) { return dynamic_cast<Ma
 // ended, rethrowing the first failure.
 void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::SimulationResult& r, int threads) {
   const systemc::RangeMap& m = r.range_map;
-  const MapFiles* begun = map_files(r);
+  MapFiles* const begun = map_files(r);
   std::vector<std::function<void()>> maps = begun ? std::vector<std::function<void()>>{} : map_jobs(opt, out, m);
   std::function<void()> error;
   if (!opt.no_plots && !(begun && begun->error_image)) error = error_image_job(out, m);
@@ -192,9 +200,9 @@ void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::Simu
   for (auto& map : maps) jobs.push_back(std::move(map));
   jobs.emplace_back([path = out.staged("frames.csv"), &r] { write_file(path, r.frames_csv); });
   jobs.emplace_back([path = out.staged("summary.json"), &r] { write_file(path, r.summary.dump(2) + "\n"); });
-  if (MapFiles* files_begun = map_files(r)) {  // its helper takes them too: no thread to start
-    for (auto& job : jobs) files_begun->jobs.add(std::move(job));
-    files_begun->jobs.wait();
+  if (begun) {  // its helper takes them too: no thread to start
+    for (auto& job : jobs) begun->jobs.add(std::move(job));
+    begun->jobs.wait();
   } else {
     run_jobs(jobs, threads);
   }
@@ -204,7 +212,7 @@ void write_files(const SimulateOptions& opt, OutputDir& out, const systemc::Simu
 std::vector<std::string> write_and_commit(const SimulateOptions& opt, OutputDir& out, TraceOutput& trace,
                                           systemc::SimulationResult& r) {
   if (trace.enabled()) r.summary["trace"] = opt.trace;
-  write_files(opt, out, r, simulation_request(opt).threads);
+  write_files(opt, out, r, run_threads(opt));
   trace.finish();  // may throw: the output folder is still staged
   std::vector<std::string> written = out.commit();
   const std::string trace_file = trace.commit();
