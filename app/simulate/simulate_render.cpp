@@ -247,7 +247,8 @@ int run_and_render(const SimulateOptions& opt, const ParamSet& params, const Sim
   // The wall time counts from the run's end: what the map's files took before it ran beside the run.
   r.summary["output_wall_time_s"] = std::chrono::duration<double>(Progress::Clock::now() - t0).count();
   r.summary["output_cpu_s"] = cpu_with_children_s() - c0 + before;
-  r.summary["output_cpu_during_run_s"] = before;
+  r.summary["output_cpu_during_run_s"] = before;  // 0 where the helper had not run yet
+  r.summary["output_begun_during_run"] = map_files(r) != nullptr;
   return report(opt, r, written);
 }
 
