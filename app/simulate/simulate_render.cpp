@@ -124,9 +124,9 @@ class CommandHost : public systemc::SimulationHost {
   void check_memory(double bytes, const std::string& what, const std::string& reduce) override {
     check_resources("simulate", {kBaseMemoryBytes + bytes, 0, what, reduce}, "");
   }
-  // A map large enough for .npy (a full ls-conventional map's files and image take about 2 ms of
+  // A map large enough for .npy (a full ls-conventional map's files and images took 3.4 to 4.2 ms of
   // CPU) begins going out at once, on the CPU the run leaves idle while it scores the map against
-  // its truth; a small one, or CSV, waits for write_files.
+  // its truth (the helper's CPU, six runs); a small one, CSV, or one thread waits for write_files.
   std::unique_ptr<systemc::MapWork> map_ready(const systemc::RangeMap& m) override {
     if (!out_ || run_threads(opt_) < 2 || !as_npy(opt_, m.range_m.size() * m.column_names.size())) return nullptr;
     return std::make_unique<MapFiles>(map_jobs(opt_, *out_, m), map_files_);
